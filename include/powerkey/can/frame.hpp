@@ -1,0 +1,107 @@
+// powerkey: a classic CAN data frame. An 11-bit (standard) and a 29-bit (extended) identifier
+// are distinct types, so 615h and 18EF2100h can never be confused, and a frame compares equal
+// only to a frame with the same kind of identifier, the same dlc and the same data bytes.
+#ifndef POWERKEY_CAN_FRAME_HPP
+#define POWERKEY_CAN_FRAME_HPP
+
+#include <powerkey/bounded.hpp>
+#include <powerkey/result.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace powerkey::can {
+
+struct standard_id_tag;
+struct extended_id_tag;
+struct dlc_tag;
+
+// 11-bit identifier, 000h..7FFh.
+using standard_id = bounded<standard_id_tag, std::uint16_t, 0, 0x7FF>;
+// 29-bit identifier, 0..1FFFFFFFh.
+using extended_id = bounded<extended_id_tag, std::uint32_t, 0, 0x1FFF'FFFF>;
+// Data length code of a classic CAN frame: 0..8 bytes.
+using dlc = bounded<dlc_tag, std::uint8_t, 0, 8>;
+
+using payload = std::array<std::uint8_t, 8>;
+
+class frame {
+public:
+    // An empty frame with standard id 000h; exists so that frames fit in arrays and results.
+    constexpr frame() noexcept = default;
+
+    constexpr frame(standard_id id, dlc length, const payload& data) noexcept
+        : id_(id.value()), extended_(false), dlc_(length.value()), data_(masked(data, length)) {}
+    constexpr frame(extended_id id, dlc length, const payload& data) noexcept
+        : id_(id.value()), extended_(true), dlc_(length.value()), data_(masked(data, length)) {}
+
+    // Exactly N data bytes, N checked at compile time.
+    template <std::size_t N>
+    requires(N <= 8) constexpr frame(standard_id id,
+                                     const std::array<std::uint8_t, N>& data) noexcept
+        : frame(id, dlc::make(N).value(), widen(data)) {}
+    template <std::size_t N>
+    requires(N <= 8) constexpr frame(extended_id id,
+                                     const std::array<std::uint8_t, N>& data) noexcept
+        : frame(id, dlc::make(N).value(), widen(data)) {}
+
+    // From bytes of run-time length: more than 8 is errc::wrong_length.
+    template <class Id>
+    [[nodiscard]] static constexpr result<frame> make(Id id,
+                                                      std::span<const std::uint8_t> data) noexcept {
+        const auto length = dlc::make(data.size());
+        if (!length) return errc::wrong_length;
+        payload p{};
+        for (std::size_t i = 0; i < data.size(); ++i) p[i] = data[i];
+        return frame(id, *length, p);
+    }
+
+    [[nodiscard]] constexpr bool is_extended() const noexcept { return extended_; }
+    // The identifier as a plain number (11 or 29 bits; see is_extended()).
+    [[nodiscard]] constexpr std::uint32_t raw_id() const noexcept { return id_; }
+    [[nodiscard]] constexpr std::optional<standard_id> std_id() const noexcept {
+        if (extended_) return std::nullopt;
+        return standard_id::make(id_).value();
+    }
+    [[nodiscard]] constexpr std::optional<extended_id> ext_id() const noexcept {
+        if (!extended_) return std::nullopt;
+        return extended_id::make(id_).value();
+    }
+
+    [[nodiscard]] constexpr std::uint8_t size() const noexcept { return dlc_; }
+    // The dlc data bytes. Bytes past the dlc are always zero in the storage behind it.
+    [[nodiscard]] constexpr std::span<const std::uint8_t> data() const noexcept {
+        return {data_.data(), dlc_};
+    }
+    // All eight storage bytes; those at and past size() are zero.
+    [[nodiscard]] constexpr const payload& bytes() const noexcept { return data_; }
+    // Byte i; i must be < size().
+    constexpr std::uint8_t operator[](std::size_t i) const noexcept { return data_[i]; }
+
+    friend constexpr bool operator==(const frame&, const frame&) noexcept = default;
+
+private:
+    static constexpr payload masked(const payload& data, dlc length) noexcept {
+        payload p{};
+        for (std::size_t i = 0; i < length.value(); ++i) p[i] = data[i];
+        return p;
+    }
+    template <std::size_t N>
+    static constexpr payload widen(const std::array<std::uint8_t, N>& data) noexcept {
+        payload p{};
+        for (std::size_t i = 0; i < N; ++i) p[i] = data[i];
+        return p;
+    }
+
+    std::uint32_t id_ = 0;
+    bool extended_ = false;
+    std::uint8_t dlc_ = 0;
+    payload data_{};
+};
+
+}  // namespace powerkey::can
+
+#endif  // POWERKEY_CAN_FRAME_HPP

@@ -1,0 +1,104 @@
+// powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it.
+//   NMT 000h, SYNC 080h, TPDO1 180h+n, RPDO1..4 200h/300h/400h/500h+n,
+//   SDO server->client 580h+n, SDO client->server 600h+n, NMT error control 700h+n.
+#ifndef POWERKEY_CANOPEN_COB_ID_HPP
+#define POWERKEY_CANOPEN_COB_ID_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/node_id.hpp>
+
+#include <cstdint>
+#include <string_view>
+
+namespace powerkey::canopen {
+
+enum class function : std::uint8_t {
+    nmt,        // 000h
+    sync,       // 080h
+    tpdo1,      // 180h + node: keypad -> host (key state)
+    rpdo1,      // 200h + node: host -> keypad (LED on)
+    rpdo2,      // 300h + node: host -> keypad (LED blink)
+    rpdo3,      // 400h + node: host -> keypad (LED brightness)
+    rpdo4,      // 500h + node: host -> keypad (backlight)
+    sdo_tx,     // 580h + node: SDO server (keypad) -> client
+    sdo_rx,     // 600h + node: SDO client -> server (keypad)
+    heartbeat,  // 700h + node: boot-up and heartbeat (NMT error control)
+    other,      // any other identifier (EMCY, TIME, TPDO2.., LSS, ...)
+};
+
+// Stable lower-case names, as the command-line tool prints them.
+[[nodiscard]] constexpr std::string_view to_string(function f) noexcept {
+    switch (f) {
+        case function::nmt: return "nmt";
+        case function::sync: return "sync";
+        case function::tpdo1: return "tpdo1";
+        case function::rpdo1: return "rpdo1";
+        case function::rpdo2: return "rpdo2";
+        case function::rpdo3: return "rpdo3";
+        case function::rpdo4: return "rpdo4";
+        case function::sdo_tx: return "sdo_tx";
+        case function::sdo_rx: return "sdo_rx";
+        case function::heartbeat: return "heartbeat";
+        case function::other: return "other";
+    }
+    return "other";
+}
+
+namespace detail {
+// Function code base (bits 10..7 of the COB-ID) of each per-node function; 0 for the others.
+constexpr std::uint16_t per_node_base(function f) noexcept {
+    switch (f) {
+        case function::tpdo1: return 0x180;
+        case function::rpdo1: return 0x200;
+        case function::rpdo2: return 0x300;
+        case function::rpdo3: return 0x400;
+        case function::rpdo4: return 0x500;
+        case function::sdo_tx: return 0x580;
+        case function::sdo_rx: return 0x600;
+        case function::heartbeat: return 0x700;
+        default: return 0;
+    }
+}
+}  // namespace detail
+
+inline constexpr can::standard_id nmt_cob_id = 0x000;
+inline constexpr can::standard_id sync_cob_id = 0x080;
+
+// COB-ID of a per-node function (tpdo1 .. heartbeat) for one node. For nmt and sync, which have
+// no node, use nmt_cob_id and sync_cob_id; for them and for `other` this returns 000h.
+[[nodiscard]] constexpr can::standard_id cob_id(function f, node_id node) noexcept {
+    const auto base = detail::per_node_base(f);
+    if (base == 0) return nmt_cob_id;
+    return can::standard_id::make(base + node.value()).value();
+}
+
+// Which function and (for per-node functions) which node an identifier belongs to.
+struct cob_info {
+    function fn = function::other;
+    std::uint8_t node = 0;  // 1..127 for per-node functions, 0 for nmt, sync and other
+    friend constexpr bool operator==(const cob_info&, const cob_info&) noexcept = default;
+};
+
+[[nodiscard]] constexpr cob_info classify(can::standard_id id) noexcept {
+    const std::uint16_t v = id.value();
+    if (v == 0x000) return {function::nmt, 0};
+    if (v == 0x080) return {function::sync, 0};
+    const auto node = static_cast<std::uint8_t>(v & 0x7F);
+    if (node == 0) return {function::other, 0};
+    const auto base = static_cast<std::uint16_t>(v - node);
+    // 580h is not a multiple of 100h, so compare each base rather than masking.
+    for (function f : {function::tpdo1, function::rpdo1, function::rpdo2, function::rpdo3,
+                       function::rpdo4, function::sdo_tx, function::sdo_rx, function::heartbeat})
+        if (detail::per_node_base(f) == base) return {f, node};
+    return {function::other, 0};
+}
+
+// The same for any frame: a 29-bit identifier is never CANopen, so it is `other`.
+[[nodiscard]] constexpr cob_info classify(const can::frame& f) noexcept {
+    if (const auto id = f.std_id()) return classify(*id);
+    return {function::other, 0};
+}
+
+}  // namespace powerkey::canopen
+
+#endif  // POWERKEY_CANOPEN_COB_ID_HPP

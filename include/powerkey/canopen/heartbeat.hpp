@@ -1,0 +1,68 @@
+// powerkey: boot-up and heartbeat (CiA 301 7.2.8.3.2), COB-ID 700h + node, one data byte: the
+// producer's NMT state. PK1000 manual sections 8, 9 and 29; PKP manual sections 8, 9 and 17.
+#ifndef POWERKEY_CANOPEN_HEARTBEAT_HPP
+#define POWERKEY_CANOPEN_HEARTBEAT_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/checks.hpp>
+
+#include <cstdint>
+#include <string_view>
+
+namespace powerkey::canopen {
+
+enum class nmt_state : std::uint8_t {
+    boot_up = 0x00,  // the boot-up message: the node has just entered pre-operational
+    stopped = 0x04,
+    operational = 0x05,
+    pre_operational = 0x7F,
+};
+
+[[nodiscard]] constexpr std::string_view to_string(nmt_state s) noexcept {
+    switch (s) {
+        case nmt_state::boot_up: return "boot_up";
+        case nmt_state::stopped: return "stopped";
+        case nmt_state::operational: return "operational";
+        case nmt_state::pre_operational: return "pre_operational";
+    }
+    return "unknown";
+}
+
+struct heartbeat_message {
+    static constexpr std::string_view kind = "heartbeat";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("state", self.state);
+    }
+    nmt_state state = nmt_state::boot_up;
+    friend constexpr bool operator==(const heartbeat_message&,
+                                     const heartbeat_message&) noexcept = default;
+};
+
+[[nodiscard]] constexpr can::frame encode(node_id node, const heartbeat_message& m) noexcept {
+    return can::frame(cob_id(function::heartbeat, node),
+                      std::array<std::uint8_t, 1>{static_cast<std::uint8_t>(m.state)});
+}
+
+// Errors: wrong_id_format, wrong_id (not 700h + node), wrong_length (not 1 byte),
+// value_out_of_range (a state other than 00h, 04h, 05h, 7Fh; this includes the node-guarding
+// toggle bit 80h, which the keypads do not use).
+[[nodiscard]] constexpr result<heartbeat_message> decode_heartbeat(const can::frame& f,
+                                                                   node_id node) noexcept {
+    if (const auto e = powerkey::detail::check_frame(f, cob_id(function::heartbeat, node), 1);
+        e != errc{})
+        return e;
+    switch (f[0]) {
+        case 0x00:
+        case 0x04:
+        case 0x05:
+        case 0x7F: return heartbeat_message{static_cast<nmt_state>(f[0])};
+        default: return errc::value_out_of_range;
+    }
+}
+
+}  // namespace powerkey::canopen
+
+#endif  // POWERKEY_CANOPEN_HEARTBEAT_HPP

@@ -1,0 +1,79 @@
+// powerkey: NMT node control (CiA 301 7.2.8.3.1), COB-ID 000h, two data bytes:
+//   byte 0  command specifier   byte 1  target node (00h = all nodes)
+// PK1000 manual sections 4-7, PKP manual sections 4-7.
+#ifndef POWERKEY_CANOPEN_NMT_HPP
+#define POWERKEY_CANOPEN_NMT_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/checks.hpp>
+
+#include <cstdint>
+#include <string_view>
+
+namespace powerkey::canopen {
+
+enum class nmt_command : std::uint8_t {
+    legacy_stop = 0x00,  // "Stop CANopen node (old sw compatibility)", both manuals section 7
+    start = 0x01,
+    stop = 0x02,
+    enter_pre_operational = 0x80,
+    reset_node = 0x81,
+    reset_communication = 0x82,
+};
+
+// Stable names as the command-line tool prints them; legacy_stop prints as "stop" too,
+// since that is what it does (use the enum to tell the two apart).
+[[nodiscard]] constexpr std::string_view to_string(nmt_command c) noexcept {
+    switch (c) {
+        case nmt_command::legacy_stop:
+        case nmt_command::stop: return "stop";
+        case nmt_command::start: return "start";
+        case nmt_command::enter_pre_operational: return "pre_operational";
+        case nmt_command::reset_node: return "reset_node";
+        case nmt_command::reset_communication: return "reset_communication";
+    }
+    return "unknown";
+}
+
+struct nmt_message {
+    static constexpr std::string_view kind = "nmt";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("command", self.command);
+        f("target", self.target);
+    }
+    nmt_command command = nmt_command::start;
+    nmt_target target = all_nodes;
+    friend constexpr bool operator==(const nmt_message&, const nmt_message&) noexcept = default;
+};
+
+[[nodiscard]] constexpr can::frame encode(const nmt_message& m) noexcept {
+    return can::frame(nmt_cob_id, std::array<std::uint8_t, 2>{static_cast<std::uint8_t>(m.command),
+                                                              m.target.value()});
+}
+
+// Errors: wrong_id_format, wrong_id (not 000h), wrong_length (not 2 bytes), unknown_command,
+// value_out_of_range (target above 7Fh).
+[[nodiscard]] constexpr result<nmt_message> decode_nmt(const can::frame& f) noexcept {
+    if (const auto e = powerkey::detail::check_frame(f, nmt_cob_id, 2); e != errc{}) return e;
+    nmt_message m;
+    switch (f[0]) {
+        case 0x00:
+        case 0x01:
+        case 0x02:
+        case 0x80:
+        case 0x81:
+        case 0x82: m.command = static_cast<nmt_command>(f[0]); break;
+        default: return errc::unknown_command;
+    }
+    const auto target = nmt_target::make(f[1]);
+    if (!target) return target.error();
+    m.target = *target;
+    return m;
+}
+
+}  // namespace powerkey::canopen
+
+#endif  // POWERKEY_CANOPEN_NMT_HPP

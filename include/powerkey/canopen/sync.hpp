@@ -1,0 +1,34 @@
+// powerkey: SYNC (CiA 301 7.2.5), COB-ID 080h, no data (PK1000 manual section 10). The keypads
+// use SYNC to latch PDOs when a PDO's transmission type asks for it (objects 1400h, 1800h).
+#ifndef POWERKEY_CANOPEN_SYNC_HPP
+#define POWERKEY_CANOPEN_SYNC_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/detail/checks.hpp>
+
+#include <string_view>
+
+namespace powerkey::canopen {
+
+struct sync_message {
+    static constexpr std::string_view kind = "sync";
+    template <class Self, class F>
+    static constexpr void fields(Self&, F&&) {}
+    friend constexpr bool operator==(const sync_message&, const sync_message&) noexcept = default;
+};
+
+[[nodiscard]] constexpr can::frame encode(const sync_message&) noexcept {
+    return can::frame(sync_cob_id, std::array<std::uint8_t, 0>{});
+}
+
+// Errors: wrong_id_format, wrong_id (not 080h), wrong_length (any data: the manual's SYNC has
+// none, and the CiA 301 counter byte is not used by the keypads).
+[[nodiscard]] constexpr result<sync_message> decode_sync(const can::frame& f) noexcept {
+    if (const auto e = powerkey::detail::check_frame(f, sync_cob_id, 0); e != errc{}) return e;
+    return sync_message{};
+}
+
+}  // namespace powerkey::canopen
+
+#endif  // POWERKEY_CANOPEN_SYNC_HPP

@@ -1,0 +1,60 @@
+// powerkey: index_set<N>, a set of the numbers 1..N (keys, LEDs) stored as N bits. Numbering from
+// 1 follows the manuals ("key #1", "red LED #17"); bit storage is the caller's business.
+#ifndef POWERKEY_INDEX_SET_HPP
+#define POWERKEY_INDEX_SET_HPP
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+
+namespace powerkey {
+
+template <std::size_t N>
+class index_set {
+    static_assert(N > 0 && N <= 64);
+
+public:
+    static constexpr std::size_t max = N;
+
+    constexpr index_set() noexcept = default;
+    // Numbers outside 1..N are ignored; use contains() to check what was kept.
+    constexpr index_set(std::initializer_list<unsigned> numbers) noexcept {
+        for (unsigned n : numbers) insert(n);
+    }
+
+    [[nodiscard]] constexpr bool contains(unsigned n) const noexcept {
+        return n >= 1 && n <= N && ((bits_ >> (n - 1)) & 1u) != 0;
+    }
+    // Adds n; returns false (and changes nothing) when n is outside 1..N.
+    constexpr bool insert(unsigned n) noexcept {
+        if (n < 1 || n > N) return false;
+        bits_ |= std::uint64_t{1} << (n - 1);
+        return true;
+    }
+    constexpr void erase(unsigned n) noexcept {
+        if (n >= 1 && n <= N) bits_ &= ~(std::uint64_t{1} << (n - 1));
+    }
+    [[nodiscard]] constexpr bool empty() const noexcept { return bits_ == 0; }
+    [[nodiscard]] constexpr std::size_t count() const noexcept {
+        std::size_t c = 0;
+        for (std::uint64_t b = bits_; b != 0; b &= b - 1) ++c;
+        return c;
+    }
+    // Bit n-1 set for each member n.
+    [[nodiscard]] constexpr std::uint64_t mask() const noexcept { return bits_; }
+    [[nodiscard]] static constexpr index_set from_mask(std::uint64_t m) noexcept {
+        index_set s;
+        s.bits_ = N == 64 ? m : (m & ((std::uint64_t{1} << N) - 1));
+        return s;
+    }
+
+    friend constexpr bool operator==(const index_set&, const index_set&) noexcept = default;
+
+private:
+    std::uint64_t bits_ = 0;
+};
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_INDEX_SET_HPP

@@ -1,0 +1,59 @@
+// powerkey: the J1939 frame that switches a keypad back to CANopen (PK1000 manual section 49):
+//   18EF2100#041B8000FFFFFFFF
+//   priority 6, PGN EF00h (proprietary A, PDU1), destination 21h (the keypad's default J1939
+//   address), source 00h; data 04 1B 80 00 FF FF FF FF, a fixed signature.
+// The opposite switch, CANopen to J1939, is an SDO write to object 20FFh sub 1 (pk1000 profile).
+#ifndef POWERKEY_J1939_PROTOCOL_SWITCH_HPP
+#define POWERKEY_J1939_PROTOCOL_SWITCH_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/j1939/id.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+namespace powerkey::j1939 {
+
+inline constexpr std::uint8_t keypad_default_address = 0x21;
+inline constexpr pgn proprietary_a_pgn = 0xEF00;
+inline constexpr std::array<std::uint8_t, 8> switch_to_canopen_data = {0x04, 0x1B, 0x80, 0x00,
+                                                                       0xFF, 0xFF, 0xFF, 0xFF};
+
+struct switch_to_canopen {
+    static constexpr std::string_view kind = "j1939_switch_to_canopen";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("priority", self.priority);
+        f("destination", self.destination);
+        f("source", self.source);
+    }
+    j1939::priority priority = 6;
+    std::uint8_t destination = keypad_default_address;
+    std::uint8_t source = 0x00;
+    friend constexpr bool operator==(const switch_to_canopen&,
+                                     const switch_to_canopen&) noexcept = default;
+};
+
+[[nodiscard]] constexpr can::frame encode(const switch_to_canopen& m) noexcept {
+    // A PDU1 PGN with a zero low byte always makes a valid identifier.
+    const auto id = make_id({m.priority, proprietary_a_pgn, m.destination, m.source});
+    return can::frame(id.value(), switch_to_canopen_data);
+}
+
+// Errors: wrong_id_format (an 11-bit frame), wrong_id (a PGN other than EF00h), wrong_length (not
+// 8 bytes), unknown_command (other data: another proprietary message on the same PGN).
+[[nodiscard]] constexpr result<switch_to_canopen> decode_switch_to_canopen(
+    const can::frame& f) noexcept {
+    const auto id = parse_id(f);
+    if (!id) return errc::wrong_id_format;
+    if (id->pgn != proprietary_a_pgn) return errc::wrong_id;
+    if (f.size() != 8) return errc::wrong_length;
+    for (std::size_t i = 0; i < 8; ++i)
+        if (f[i] != switch_to_canopen_data[i]) return errc::unknown_command;
+    return switch_to_canopen{id->priority, id->destination, id->source};
+}
+
+}  // namespace powerkey::j1939
+
+#endif  // POWERKEY_J1939_PROTOCOL_SWITCH_HPP

@@ -1,0 +1,25 @@
+// powerkey: the umbrella header. Includes every public header and nothing else.
+#ifndef POWERKEY_POWERKEY_HPP
+#define POWERKEY_POWERKEY_HPP
+
+#include <powerkey/bounded.hpp>
+#include <powerkey/error.hpp>
+#include <powerkey/index_set.hpp>
+#include <powerkey/result.hpp>
+#include <powerkey/version.hpp>
+
+#include <powerkey/can/candump.hpp>
+#include <powerkey/can/frame.hpp>
+
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sdo_upload.hpp>
+#include <powerkey/canopen/sync.hpp>
+
+#include <powerkey/j1939/id.hpp>
+#include <powerkey/j1939/protocol_switch.hpp>
+
+#endif  // POWERKEY_POWERKEY_HPP

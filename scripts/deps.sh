@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs what building and testing powerkey needs on Debian 12, if it is missing.
+set -euo pipefail
+packages=(g++ clang cmake make doctest-dev libbenchmark-dev clang-format-14 valgrind
+          gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib llvm python3)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,92 @@
+// The frame vocabulary and the candump text form.
+#include <doctest/doctest.h>
+
+#include <powerkey/can/candump.hpp>
+
+#include <array>
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+using can::candump;
+
+// Text that round-trips exactly, as logs print it.
+constexpr std::string_view round_trip_rows[] = {
+    "615#4000200100000000",       // PK1000 16, read key states
+    "18EF2100#041B8000FFFFFFFF",  // PK1000 49, switch back to CANopen
+    "080#",                       // PK1000 10, SYNC
+    "715#00",                     // PK1000 8, boot-up
+    "000#0115",                   // PK1000 4, start node 15h
+};
+
+constexpr bool round_trips() {
+    for (auto text : round_trip_rows)
+        if (can::format_candump(can::parse_candump(text).value()).view() != text) return false;
+    return true;
+}
+static_assert(round_trips());
+
+static_assert(!candump("615#00").is_extended());
+static_assert(candump("18EF2100#00").is_extended());
+static_assert(candump("615#4000200100000000").size() == 8);
+static_assert(candump("080#").size() == 0);
+// Standard 615h and extended 00000615h are different frames.
+static_assert(candump("615#01") != candump("00000615#01"));
+static_assert(candump("615#01") != candump("615#0100"));
+static_assert(candump("615#0a") == candump("615#0A"));
+
+struct bad_text {
+    std::string_view text;
+    errc error;
+};
+constexpr bad_text bad_rows[] = {
+    {"", errc::syntax_error},
+    {"615", errc::syntax_error},
+    {"61#00", errc::syntax_error},
+    {"6150#00", errc::syntax_error},
+    {"615#0", errc::syntax_error},
+    {"615#0G", errc::syntax_error},
+    {"G15#00", errc::syntax_error},
+    {"615#R", errc::syntax_error},
+    {"800#00", errc::value_out_of_range},
+    {"20000000#00", errc::value_out_of_range},
+    {"615#000000000000000000", errc::wrong_length},
+};
+
+constexpr bool bad_rows_fail() {
+    for (auto row : bad_rows)
+        if (can::parse_candump(row.text) != row.error) return false;
+    return true;
+}
+static_assert(bad_rows_fail());
+}  // namespace
+
+TEST_CASE("candump text round-trips the manual frames") {
+    CHECK(round_trips());
+    for (auto text : round_trip_rows) {
+        const auto f = can::parse_candump(text);
+        REQUIRE(f.has_value());
+        CHECK(can::format_candump(*f).view() == text);
+    }
+}
+
+TEST_CASE("malformed candump text is a clear error") {
+    CHECK(bad_rows_fail());
+    for (auto row : bad_rows) {
+        CAPTURE(row.text);
+        CHECK(can::parse_candump(row.text).error() == row.error);
+    }
+}
+
+TEST_CASE("frames built from bytes") {
+    const std::array<std::uint8_t, 9> nine{};
+    CHECK(can::frame::make(can::standard_id{0x615}, nine).error() == errc::wrong_length);
+    const std::array<std::uint8_t, 2> two{0x01, 0x15};
+    const auto f = can::frame::make(can::standard_id{0x000}, two);
+    REQUIRE(f.has_value());
+    CHECK(*f == candump("000#0115"));
+    CHECK(f->std_id().has_value());
+    CHECK_FALSE(f->ext_id().has_value());
+    CHECK(can::standard_id::make(0x800).error() == errc::value_out_of_range);
+    CHECK(can::extended_id::make(0x2000'0000u).error() == errc::value_out_of_range);
+}
