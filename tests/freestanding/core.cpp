@@ -1,24 +1,14 @@
-// Built with -fno-exceptions -fno-rtti, and with an operator new that traps: every decoder and
-// encoder of the library runs here on the manual frames without exceptions, RTTI or the heap.
+// Freestanding checks of the core: CiA 301, J1939, candump text, the segmented reader.
 #include <powerkey/powerkey.hpp>
 
-#include <cstdlib>
-#include <new>
-
-void* operator new(std::size_t) { std::abort(); }
-void* operator new[](std::size_t) { std::abort(); }
-void operator delete(void*) noexcept { std::abort(); }
-void operator delete[](void*) noexcept { std::abort(); }
-void operator delete(void*, std::size_t) noexcept { std::abort(); }
-void operator delete[](void*, std::size_t) noexcept { std::abort(); }
+#include "check.hpp"
 
 namespace {
 using namespace powerkey;
 
-int failures = 0;
-void expect(bool ok) { failures += ok ? 0 : 1; }
-
-void core() {
+bool core() {
+    bool ok = true;
+    auto expect = [&ok](bool b) { ok = ok && b; };
     constexpr canopen::node_id node = 0x15;
     expect(canopen::decode_nmt(can::candump("000#0115")).has_value());
     expect(canopen::decode_sync(can::candump("080#")).has_value());
@@ -36,10 +26,7 @@ void core() {
     expect(r.step(can::candump("595#00426C696E6B4D61")).has_value());
     expect(r.step(can::candump("595#1772696E65000000")).has_value());
     expect(r.text() == "BlinkMarine");
+    return ok;
 }
+const freestanding::registration reg("core", core);
 }  // namespace
-
-int main() {
-    core();
-    return failures == 0 ? 0 : 1;
-}
