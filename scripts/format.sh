@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Formats every C++ file of ours with the root .clang-format.
+# Formats C++ files with the root .clang-format: the files given, or every file of ours.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-find include tests examples bench fuzz \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
-  xargs -0 clang-format-14 -i
+if [ $# -gt 0 ]; then
+  clang-format-14 -i "$@"
+else
+  find include tests examples bench fuzz \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
+    xargs -0 clang-format-14 -i
+fi

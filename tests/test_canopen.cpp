@@ -1,0 +1,334 @@
+// The CiA 301 layer: COB-IDs, NMT, SYNC, boot-up and heartbeat, expedited SDO; every frame from
+// the manuals' sections for these services, both ways, and the decoders' errors.
+#include <doctest/doctest.h>
+
+#include <powerkey/can/candump.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sync.hpp>
+
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+using namespace powerkey::canopen;
+
+constexpr node_id keypad = 0x15;
+
+// --- COB-IDs ---------------------------------------------------------------------------------
+static_assert(cob_id(function::tpdo1, keypad).value() == 0x195);
+static_assert(cob_id(function::rpdo1, keypad).value() == 0x215);
+static_assert(cob_id(function::rpdo2, keypad).value() == 0x315);
+static_assert(cob_id(function::rpdo3, keypad).value() == 0x415);
+static_assert(cob_id(function::rpdo4, keypad).value() == 0x515);
+static_assert(cob_id(function::sdo_tx, keypad).value() == 0x595);
+static_assert(cob_id(function::sdo_rx, keypad).value() == 0x615);
+static_assert(cob_id(function::heartbeat, keypad).value() == 0x715);
+static_assert(cob_id(function::sdo_rx, 0x7F).value() == 0x67F);
+static_assert(cob_id(function::tpdo1, 1).value() == 0x181);
+
+struct cob_row {
+    std::uint16_t id;
+    cob_info info;
+};
+constexpr cob_row cob_rows[] = {
+    {0x000, {function::nmt, 0}},       {0x080, {function::sync, 0}},
+    {0x195, {function::tpdo1, 0x15}},  {0x215, {function::rpdo1, 0x15}},
+    {0x315, {function::rpdo2, 0x15}},  {0x415, {function::rpdo3, 0x15}},
+    {0x515, {function::rpdo4, 0x15}},  {0x595, {function::sdo_tx, 0x15}},
+    {0x615, {function::sdo_rx, 0x15}}, {0x715, {function::heartbeat, 0x15}},
+    {0x181, {function::tpdo1, 1}},     {0x77F, {function::heartbeat, 0x7F}},
+    {0x095, {function::other, 0}},  // EMCY 080h + node: not used by the keypads
+    {0x100, {function::other, 0}},     {0x280, {function::other, 0}},
+    {0x295, {function::other, 0}},  // TPDO2 is not used by the keypads
+    {0x5FF, {function::sdo_tx, 0x7F}}, {0x600, {function::other, 0}},
+    {0x7E5, {function::other, 0}},  // LSS: past 77Fh, the last heartbeat COB-ID
+};
+constexpr bool cob_rows_hold() {
+    for (auto r : cob_rows)
+        if (classify(can::standard_id::make(r.id).value()) != r.info) return false;
+    return true;
+}
+static_assert(cob_rows_hold());
+static_assert(classify(can::candump("18EF2100#041B8000FFFFFFFF")).fn == function::other);
+
+// --- NMT ---------------------------------------------------------------------------------------
+struct nmt_row {
+    std::string_view section;
+    std::string_view frame;
+    nmt_message expected;
+};
+constexpr nmt_row nmt_rows[] = {
+    {"PK1000 4, PKP 4: start node 15h", "000#0115", {nmt_command::start, 0x15}},
+    {"PK1000 5, PKP 5: enter pre-operational",
+     "000#8015",
+     {nmt_command::enter_pre_operational, 0x15}},
+    {"PK1000 6, PKP 6: reset node", "000#8115", {nmt_command::reset_node, 0x15}},
+    {"PK1000 7, PKP 7: stop node", "000#0215", {nmt_command::stop, 0x15}},
+    {"PK1000 7, PKP 7: stop, old sw compatibility", "000#0015", {nmt_command::legacy_stop, 0x15}},
+    {"PK1000 4: 00h starts all the keypads", "000#0100", {nmt_command::start, 0}},
+    {"PK1000 29: start keypad 15h (heartbeat example)", "000#0115", {nmt_command::start, 0x15}},
+    {"CiA 301: reset communication", "000#8200", {nmt_command::reset_communication, 0}},
+};
+constexpr bool nmt_encodes() {
+    for (auto r : nmt_rows)
+        if (encode(r.expected) != can::parse_candump(r.frame).value()) return false;
+    return true;
+}
+static_assert(nmt_encodes());
+
+// --- SYNC, boot-up, heartbeat -------------------------------------------------------------------
+static_assert(encode(sync_message{}) == can::candump("080#"));  // PK1000 10
+
+struct heartbeat_row {
+    std::string_view section;
+    std::string_view frame;
+    heartbeat_message expected;
+};
+constexpr heartbeat_row heartbeat_rows[] = {
+    {"PK1000 8, PKP 8: boot-up", "715#00", {nmt_state::boot_up}},
+    {"PK1000 29, PKP 9: boot up", "715#00", {nmt_state::boot_up}},
+    {"PK1000 29, PKP 9: pre-operational", "715#7F", {nmt_state::pre_operational}},
+    {"PK1000 29, PKP 9: operational", "715#05", {nmt_state::operational}},
+    {"PK1000 29 table: stop", "715#04", {nmt_state::stopped}},
+};
+constexpr bool heartbeats_encode() {
+    for (auto r : heartbeat_rows)
+        if (encode(keypad, r.expected) != can::parse_candump(r.frame).value()) return false;
+    return true;
+}
+static_assert(heartbeats_encode());
+
+// --- expedited SDO (PK1000 29 and PKP 17: object 1017h; PK1000 36: 1011h "load") ---------------
+struct sdo_request_row {
+    std::string_view section;
+    std::string_view frame;
+    sdo_request expected;
+};
+constexpr sdo_request_row sdo_request_rows[] = {
+    {"PK1000 29: read heartbeat time", "615#4017100000000000", sdo_upload_request{{0x1017, 0}}},
+    {"PK1000 29: switch off the heartbeat", "615#2B17100000000000",
+     sdo_download_request{{0x1017, 0}, expedited_data::u16(0)}},
+    {"PK1000 29: heartbeat 50 ms", "615#2B17100032000000",
+     sdo_download_request{{0x1017, 0}, expedited_data::u16(50)}},
+    {"PK1000 29: heartbeat 500 ms", "615#2B171000F4010000",
+     sdo_download_request{{0x1017, 0}, expedited_data::u16(500)}},
+    {"PK1000 36: restore defaults, 'load'", "615#231110016C6F6164",
+     sdo_download_request{{0x1011, 1}, expedited_data::u32(0x64616F6C)}},
+    {"PK1000 49: switch to J1939 (8 bytes; see E-PK)", "615#2BFF200101000000",
+     sdo_download_request{{0x20FF, 1}, expedited_data::u16(1)}},
+    {"PKP 30: key-LED brightness 25%", "615#2F01620110000000",
+     sdo_download_request{{0x6201, 1}, expedited_data::u8(0x10)}},
+    {"PK1000 32: segment request, toggle 0", "615#6000000000000000", sdo_segment_request{false}},
+    {"PK1000 32: segment request, toggle 1", "615#7000000000000000", sdo_segment_request{true}},
+    {"CiA 301: 3-byte download", "615#2700200101020300",
+     sdo_download_request{{0x2000, 1}, {3, {1, 2, 3, 0}}}},
+    {"CiA 301: abort from the client", "615#8000200100000405",
+     sdo_abort{{0x2000, 1}, sdo_abort_code::timed_out}},
+};
+
+struct sdo_response_row {
+    std::string_view section;
+    std::string_view frame;
+    sdo_response expected;
+};
+constexpr sdo_response_row sdo_response_rows[] = {
+    {"PK1000 29: heartbeat time = 100 ms", "595#4B17100064000000",
+     sdo_upload_response{{0x1017, 0}, expedited_data::u16(100)}},
+    {"PK1000 29: write acknowledged", "595#6017100000000000", sdo_download_response{{0x1017, 0}}},
+    {"PK1000 30: device type",
+     "595#430010009101"
+     "0B00",
+     sdo_upload_response{{0x1000, 0}, expedited_data::u32(0x000B0191)}},
+    {"PK1000 36: highest sub-index 1", "595#4F11100001000000",
+     sdo_upload_response{{0x1011, 0}, expedited_data::u8(1)}},
+    {"PK1000 37: vendor id", "595#43181001E2030000",
+     sdo_upload_response{{0x1018, 1}, expedited_data::u32(0x3E2)}},
+    {"PK1000 32: segmented upload of 11 bytes", "595#410810000B000000",
+     sdo_upload_initiate_response{{0x1008, 0}, true, 11}},
+    {"PKP 29: segmented upload, size not indicated (E-CORE-3)", "595#4000610208000000",
+     sdo_upload_initiate_response{{0x6100, 2}, false, 8}},
+    {"PK1000 32: first segment", "595#00426C696E6B4D61",
+     sdo_segment_response{false, 0, false, {0x42, 0x6C, 0x69, 0x6E, 0x6B, 0x4D, 0x61}}},
+    {"PK1000 32: last segment, 3 unused", "595#1772696E65000000",
+     sdo_segment_response{true, 3, true, {0x72, 0x69, 0x6E, 0x65, 0, 0, 0}}},
+    {"CiA 301: abort, object does not exist", "595#8001200000000206",
+     sdo_abort{{0x2001, 0}, sdo_abort_code::object_does_not_exist}},
+    {"CiA 301: abort with a code CiA 301 does not name", "595#8001200078563412",
+     sdo_abort{{0x2001, 0}, static_cast<sdo_abort_code>(0x12345678)}},
+};
+
+constexpr bool sdo_rows_encode() {
+    for (const auto& r : sdo_request_rows)
+        if (encode_request(keypad, r.expected) != can::parse_candump(r.frame).value()) return false;
+    for (const auto& r : sdo_response_rows)
+        if (encode_response(keypad, r.expected) != can::parse_candump(r.frame).value())
+            return false;
+    return true;
+}
+static_assert(sdo_rows_encode());
+static_assert(expedited_data::u16(500).value() == 500);
+static_assert(expedited_data::u32(0x000B0191).value() == 0x000B0191);
+static_assert(expedited_data{3, {1, 2, 3, 0xFF}}.value() == 0x030201);
+
+// --- what the decoders refuse -------------------------------------------------------------------
+struct bad_row {
+    std::string_view why;
+    std::string_view frame;
+    errc error;
+};
+constexpr bad_row bad_nmt[] = {
+    {"extended id", "00000000#0115", errc::wrong_id_format},
+    {"not 000h", "001#0115", errc::wrong_id},
+    {"one byte", "000#01", errc::wrong_length},
+    {"8 bytes (the manual's table lists bytes 2-7; see E-CORE-6)", "000#0115000000000000",
+     errc::wrong_length},
+    {"unknown command 03h", "000#0315", errc::unknown_command},
+    {"target 80h", "000#0180", errc::value_out_of_range},
+};
+constexpr bad_row bad_sync[] = {
+    {"extended id", "00000080#", errc::wrong_id_format},
+    {"not 080h", "081#", errc::wrong_id},
+    {"a counter byte", "080#01", errc::wrong_length},
+};
+constexpr bad_row bad_heartbeat[] = {
+    {"extended id", "00000715#05", errc::wrong_id_format},
+    {"another node", "716#05", errc::wrong_id},
+    {"no data", "715#", errc::wrong_length},
+    {"two bytes", "715#0500", errc::wrong_length},
+    {"unknown state 01h", "715#01", errc::value_out_of_range},
+    {"node-guarding toggle bit", "715#85", errc::value_out_of_range},
+};
+constexpr bad_row bad_sdo_request[] = {
+    {"extended id", "00000615#4017100000000000", errc::wrong_id_format},
+    {"another node", "616#4017100000000000", errc::wrong_id},
+    {"the reply direction", "595#4017100000000000", errc::wrong_id},
+    {"5 bytes, as PK1000 49 prints it", "615#2BFF200101", errc::wrong_length},
+    {"segmented download 21h", "615#2117100002000000", errc::unknown_command},
+    {"expedited without size 22h", "615#2217100002000000", errc::unknown_command},
+    {"download with reserved bit 4", "615#3B17100000000000", errc::unknown_command},
+    {"41h for 40h, as PKP 31 prints it (E-CORE-4)", "615#4100630000000000",
+     errc::reserved_not_zero},
+    {"upload request with data", "615#4017100001000000", errc::reserved_not_zero},
+    {"segment request with data", "615#6000000000000001", errc::reserved_not_zero},
+    {"segment request with low bits", "615#6100000000000000", errc::reserved_not_zero},
+    {"abort with low bits", "615#8100200100000405", errc::reserved_not_zero},
+    {"block upload A0h", "615#A000200100000000", errc::unknown_command},
+    {"ccs 7", "615#E000000000000000", errc::unknown_command},
+};
+constexpr bad_row bad_sdo_response[] = {
+    {"extended id", "00000595#4B17100064000000", errc::wrong_id_format},
+    {"another node", "596#4B17100064000000", errc::wrong_id},
+    {"7 bytes", "595#4B171000640000", errc::wrong_length},
+    {"expedited without size 42h", "595#4217100064000000", errc::unknown_command},
+    {"initiate with reserved bit 4", "595#5117100064000000", errc::reserved_not_zero},
+    {"segmented upload with n bits", "595#4517100064000000", errc::reserved_not_zero},
+    {"download response with data", "595#6017100001000000", errc::reserved_not_zero},
+    {"download response with low bits", "595#6117100000000000", errc::reserved_not_zero},
+    {"download segment response 20h", "595#2000000000000000", errc::unknown_command},
+    {"abort with low bits", "595#8101200000000206", errc::reserved_not_zero},
+    {"block download response A0h", "595#A000000000000000", errc::unknown_command},
+};
+
+template <class Decode, std::size_t N>
+constexpr bool all_refused(const bad_row (&rows)[N], Decode decode) {
+    for (const auto& r : rows)
+        if (decode(can::parse_candump(r.frame).value()) != r.error) return false;
+    return true;
+}
+constexpr auto nmt_decoder = [](const can::frame& f) { return decode_nmt(f); };
+constexpr auto sync_decoder = [](const can::frame& f) { return decode_sync(f); };
+constexpr auto heartbeat_decoder = [](const can::frame& f) { return decode_heartbeat(f, keypad); };
+constexpr auto request_decoder = [](const can::frame& f) { return decode_sdo_request(f, keypad); };
+constexpr auto response_decoder = [](const can::frame& f) {
+    return decode_sdo_response(f, keypad);
+};
+static_assert(all_refused(bad_nmt, nmt_decoder));
+static_assert(all_refused(bad_sync, sync_decoder));
+static_assert(all_refused(bad_heartbeat, heartbeat_decoder));
+static_assert(all_refused(bad_sdo_request, request_decoder));
+static_assert(all_refused(bad_sdo_response, response_decoder));
+
+template <class Decode, std::size_t N>
+void check_refused(const bad_row (&rows)[N], Decode decode) {
+    for (const auto& r : rows) {
+        CAPTURE(r.why);
+        CAPTURE(r.frame);
+        const auto f = can::parse_candump(r.frame);
+        REQUIRE(f.has_value());
+        CHECK(decode(*f).error() == r.error);
+    }
+}
+}  // namespace
+
+TEST_CASE("COB-IDs both ways") {
+    CHECK(cob_rows_hold());
+    for (auto r : cob_rows) {
+        CAPTURE(r.id);
+        const auto info = classify(can::standard_id::make(r.id).value());
+        CHECK(info == r.info);
+        if (const auto node = node_id::make(info.node); node && info.fn != function::other)
+            CHECK(cob_id(info.fn, *node).value() == r.id);
+    }
+}
+
+TEST_CASE("NMT rows both ways") {
+    for (const auto& r : nmt_rows) {
+        CAPTURE(r.section);
+        const auto f = can::parse_candump(r.frame);
+        REQUIRE(f.has_value());
+        CHECK(encode(r.expected) == *f);
+        const auto m = decode_nmt(*f);
+        REQUIRE(m.has_value());
+        CHECK(*m == r.expected);
+    }
+    CHECK(to_string(nmt_command::legacy_stop) == "stop");
+    CHECK(to_string(nmt_command::enter_pre_operational) == "pre_operational");
+}
+
+TEST_CASE("SYNC, boot-up and heartbeat rows both ways") {
+    CHECK(decode_sync(can::candump("080#")).has_value());
+    for (const auto& r : heartbeat_rows) {
+        CAPTURE(r.section);
+        const auto f = can::parse_candump(r.frame);
+        REQUIRE(f.has_value());
+        CHECK(encode(keypad, r.expected) == *f);
+        const auto m = decode_heartbeat(*f, keypad);
+        REQUIRE(m.has_value());
+        CHECK(*m == r.expected);
+    }
+    CHECK(to_string(nmt_state::pre_operational) == "pre_operational");
+}
+
+TEST_CASE("SDO rows both ways") {
+    for (const auto& r : sdo_request_rows) {
+        CAPTURE(r.section);
+        const auto f = can::parse_candump(r.frame);
+        REQUIRE(f.has_value());
+        CHECK(encode_request(keypad, r.expected) == *f);
+        const auto m = decode_sdo_request(*f, keypad);
+        REQUIRE(m.has_value());
+        CHECK(*m == r.expected);
+    }
+    for (const auto& r : sdo_response_rows) {
+        CAPTURE(r.section);
+        const auto f = can::parse_candump(r.frame);
+        REQUIRE(f.has_value());
+        CHECK(encode_response(keypad, r.expected) == *f);
+        const auto m = decode_sdo_response(*f, keypad);
+        REQUIRE(m.has_value());
+        CHECK(*m == r.expected);
+    }
+    CHECK(to_string(sdo_abort_code::object_does_not_exist) == "object_does_not_exist");
+    CHECK(to_string(static_cast<sdo_abort_code>(0x12345678)).empty());
+}
+
+TEST_CASE("decoders refuse malformed frames with the documented error") {
+    check_refused(bad_nmt, nmt_decoder);
+    check_refused(bad_sync, sync_decoder);
+    check_refused(bad_heartbeat, heartbeat_decoder);
+    check_refused(bad_sdo_request, request_decoder);
+    check_refused(bad_sdo_response, response_decoder);
+}
