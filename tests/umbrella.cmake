@@ -1,0 +1,17 @@
+# Fails when a public header is missing from the umbrella powerkey/powerkey.hpp, so that the
+# freestanding TU (which includes the umbrella) really covers every header.
+file(READ ${INCLUDE_DIR}/powerkey/powerkey.hpp umbrella)
+file(GLOB_RECURSE headers RELATIVE ${INCLUDE_DIR} ${INCLUDE_DIR}/powerkey/*.hpp)
+set(missing "")
+foreach(h IN LISTS headers)
+  if(h MATCHES "/detail/" OR h STREQUAL "powerkey/powerkey.hpp")
+    continue()
+  endif()
+  string(FIND "${umbrella}" "#include <${h}>" at)
+  if(at EQUAL -1)
+    list(APPEND missing ${h})
+  endif()
+endforeach()
+if(missing)
+  message(FATAL_ERROR "not in powerkey/powerkey.hpp: ${missing}")
+endif()
