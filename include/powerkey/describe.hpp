@@ -1,0 +1,154 @@
+// powerkey: a one-line, human-readable description of any message, written into a buffer the
+// caller provides, without allocation and usable at compile time:
+//
+//   node 15h  LED on  red: 1 7  green: -  blue: -
+//
+// The text is generated from the message's kind and fields: the kind without its profile prefix
+// and with spaces for underscores (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field
+// as `name: value`. Values: key and LED sets as their numbers (or -), raw bytes in hex, an SDO
+// index as 4 hex digits and h, enumerators by name, other numbers in decimal.
+#ifndef POWERKEY_DESCRIBE_HPP
+#define POWERKEY_DESCRIBE_HPP
+
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/hex.hpp>
+#include <powerkey/fields.hpp>
+#include <powerkey/result.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <type_traits>
+
+namespace powerkey {
+
+// Appends text to a caller's buffer; remembers when something did not fit.
+class text_writer {
+public:
+    constexpr explicit text_writer(std::span<char> out) noexcept : out_(out) {}
+
+    constexpr void put(char c) noexcept {
+        if (size_ < out_.size()) {
+            out_[size_++] = c;
+        } else {
+            overflow_ = true;
+        }
+    }
+    constexpr void put(std::string_view s) noexcept {
+        for (char c : s) put(c);
+    }
+    constexpr void put_decimal(std::uint64_t v) noexcept {
+        char digits[20]{};
+        int n = 0;
+        do {
+            digits[n++] = static_cast<char>('0' + v % 10);
+            v /= 10;
+        } while (v != 0);
+        while (n > 0) put(digits[--n]);
+    }
+    // `digits` upper-case hex digits, most significant first.
+    constexpr void put_hex(std::uint64_t v, int digits) noexcept {
+        for (int i = digits - 1; i >= 0; --i)
+            put(detail::hex_digit(static_cast<unsigned>(v >> (4 * i))));
+    }
+
+    [[nodiscard]] constexpr bool overflow() const noexcept { return overflow_; }
+    [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
+
+private:
+    std::span<char> out_;
+    std::size_t size_ = 0;
+    bool overflow_ = false;
+};
+
+namespace detail {
+
+// Words printed in capitals in a message title.
+constexpr std::string_view upper_words[] = {"led", "sdo",  "nmt",  "pdo", "rgb",  "j1939",
+                                            "id",  "rpdo", "tpdo", "cob", "rs485"};
+
+constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
+    for (std::string_view prefix : {std::string_view{"pk1000_"}, std::string_view{"pkp_"}})
+        if (kind.substr(0, prefix.size()) == prefix) kind.remove_prefix(prefix.size());
+    bool first = true;
+    while (!kind.empty()) {
+        const auto end = kind.find('_');
+        const auto word = kind.substr(0, end);
+        if (!first) w.put(' ');
+        first = false;
+        bool upper = false;
+        for (auto u : upper_words) upper = upper || u == word;
+        for (char c : word)
+            w.put(upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c);
+        if (end == std::string_view::npos) break;
+        kind.remove_prefix(end + 1);
+    }
+}
+
+template <class T>
+constexpr void put_value(text_writer& w, std::string_view name, const T& v) noexcept {
+    if constexpr (std::is_same_v<T, bool>) {
+        w.put(v ? "yes" : "no");
+    } else if constexpr (std::is_enum_v<T>) {
+        const auto n = enum_name(v);
+        if (n.empty()) {
+            w.put_hex(static_cast<std::uint64_t>(v), 2 * static_cast<int>(sizeof(T)));
+            w.put('h');
+        } else {
+            w.put(n);
+        }
+    } else if constexpr (is_index_set<T>::value) {
+        if (v.empty()) w.put('-');
+        bool first = true;
+        for (unsigned i = 1; i <= T::max; ++i) {
+            if (!v.contains(i)) continue;
+            if (!first) w.put(' ');
+            first = false;
+            w.put_decimal(i);
+        }
+    } else if constexpr (is_byte_array<T>::value) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            if (i != 0) w.put(' ');
+            w.put_hex(v[i], 2);
+        }
+    } else if constexpr (is_bounded<T>::value) {
+        w.put_decimal(v.value());
+    } else if constexpr (std::is_integral_v<T>) {
+        if (name == "index") {
+            w.put_hex(v, 4);
+            w.put('h');
+        } else {
+            w.put_decimal(static_cast<std::uint64_t>(v));
+        }
+    } else {
+        static_assert(std::is_integral_v<T>, "a field type outside the kind/fields convention");
+    }
+}
+
+}  // namespace detail
+
+// Writes the description of m, sent to or by keypad `node`, into `out`. Returns the text (a view
+// of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
+// 160 characters hold every message of both profiles.
+template <class M>
+[[nodiscard]] constexpr result<std::string_view> describe(const M& m, canopen::node_id node,
+                                                          std::span<char> out) noexcept {
+    text_writer w(out);
+    w.put("node ");
+    w.put_hex(node.value(), 2);
+    w.put("h  ");
+    detail::put_title(w, kind_of(m));
+    for_each_field(m, [&w](std::string_view name, const auto& value) {
+        w.put("  ");
+        w.put(name);
+        w.put(": ");
+        detail::put_value(w, name, value);
+    });
+    if (w.overflow()) return errc::buffer_too_small;
+    return w.view();
+}
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_DESCRIBE_HPP

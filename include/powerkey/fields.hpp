@@ -1,0 +1,130 @@
+// powerkey: generic access to messages through the kind/fields convention. Every message struct
+// has `static constexpr std::string_view kind` and `fields(self, f)`, which calls f(name, member)
+// for every field the frame carries. A profile's message is a std::variant of such structs, maybe
+// nested; visit_message finds the struct inside. The description writer, the session follower
+// and the command-line tool (JSON both ways) are all written on top of this, so a new message
+// needs no code outside its own header.
+#ifndef POWERKEY_FIELDS_HPP
+#define POWERKEY_FIELDS_HPP
+
+#include <powerkey/bounded.hpp>
+#include <powerkey/index_set.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace powerkey {
+
+// A struct that follows the convention.
+template <class T>
+concept message_struct = requires {
+    { T::kind } -> std::convertible_to<std::string_view>;
+};
+
+namespace detail {
+template <class T>
+struct is_variant : std::false_type {};
+template <class... Ts>
+struct is_variant<std::variant<Ts...>> : std::true_type {};
+}  // namespace detail
+
+// Calls f(struct) with the message struct that m holds, through any depth of nested variants.
+template <class M, class F>
+constexpr decltype(auto) visit_message(const M& m, F&& f) {
+    if constexpr (detail::is_variant<M>::value)
+        return std::visit(
+            [&f](const auto& inner) -> decltype(auto) { return visit_message(inner, f); }, m);
+    else
+        return f(m);
+}
+
+// The kind of the struct that m holds.
+template <class M>
+[[nodiscard]] constexpr std::string_view kind_of(const M& m) noexcept {
+    return visit_message(m, [](const auto& s) { return std::string_view{s.kind}; });
+}
+
+// Calls f(name, value) for every field of the struct that m holds.
+template <class M, class F>
+constexpr void for_each_field(const M& m, F&& f) {
+    visit_message(m, [&f](const auto& s) { std::decay_t<decltype(s)>::fields(s, f); });
+}
+
+// Calls f(std::type_identity<S>{}) for every struct S a message type can hold (depth first, in
+// the variants' order); f returns true to stop. Returns true when f stopped.
+template <class M, class F>
+constexpr bool for_each_alternative(F&& f) {
+    if constexpr (detail::is_variant<M>::value) {
+        return [&f]<class... Ts>(std::type_identity<std::variant<Ts...>>) {
+            return (for_each_alternative<Ts>(f) || ...);
+        }(std::type_identity<M>{});
+    } else {
+        return f(std::type_identity<M>{});
+    }
+}
+
+// Puts the struct s into a message of type M (through nested variants), when M can hold it.
+template <class M, class S>
+[[nodiscard]] constexpr bool assign_message(M& m, const S& s) {
+    if constexpr (std::is_same_v<M, S>) {
+        m = s;
+        return true;
+    } else if constexpr (detail::is_variant<M>::value) {
+        return [&]<class... Ts>(std::type_identity<std::variant<Ts...>>) {
+            bool done = false;
+            (void)((done =
+                        [&] {
+                            if constexpr (std::is_same_v<Ts, S>) {
+                                m = s;
+                                return true;
+                            } else if constexpr (detail::is_variant<Ts>::value) {
+                                Ts inner{};
+                                if (!assign_message(inner, s)) return false;
+                                m = std::move(inner);
+                                return true;
+                            } else {
+                                return false;
+                            }
+                        }()) ||
+                   ...);
+            return done;
+        }(std::type_identity<M>{});
+    } else {
+        return false;
+    }
+}
+
+// --- field types ----------------------------------------------------------------------------
+
+template <class T>
+struct is_bounded : std::false_type {};
+template <class Tag, class Rep, Rep Min, Rep Max>
+struct is_bounded<bounded<Tag, Rep, Min, Max>> : std::true_type {};
+
+template <class T>
+struct is_index_set : std::false_type {};
+template <std::size_t N>
+struct is_index_set<index_set<N>> : std::true_type {};
+
+template <class T>
+struct is_byte_array : std::false_type {};
+template <std::size_t N>
+struct is_byte_array<std::array<std::uint8_t, N>> : std::true_type {};
+
+// The name of an enumerator through its ADL to_string, "" when the value has no name (to_string
+// returns "" or "unknown" for values outside the enum).
+template <class E>
+requires std::is_enum_v<E>
+[[nodiscard]] constexpr std::string_view enum_name(E e) noexcept {
+    const std::string_view n = to_string(e);
+    return n == "unknown" ? std::string_view{} : n;
+}
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_FIELDS_HPP

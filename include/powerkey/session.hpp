@@ -1,0 +1,230 @@
+// powerkey: a session follows a bus log, frame by frame and in order, without allocation:
+//   - it decodes each frame for the keypad's current node id (decode(f, node, model));
+//   - it pairs each SDO request with its reply (same index and sub-index) and flags replies
+//     that answer nothing;
+//   - it runs segmented uploads (device name 1008h, serial numbers ...) through the core reader
+//     canopen::segmented_upload, so the whole string is there when the last segment passes;
+//   - it follows a node-id change to the new COB-IDs: PK1000 object 2013h (the keypad answers
+//     from the new id, manual section 23) and PKP command 6500h/70h (the keypad answers from the
+//     old id, then boots up with the new one, PKP manual section 13 h);
+//   - it notices the switch to J1939 (PK1000 object 20FFh sub 1 = 1, section 49) and back (the
+//     18EF2100h frame).
+//
+//   session<> s(model::pk1000, canopen::default_node_id);
+//   for (const can::frame& f : log) {
+//       const auto e = s.step(f);
+//       if (e.upload_done) print(s.text());
+//       if (e.new_node) print(*e.new_node);
+//   }
+#ifndef POWERKEY_SESSION_HPP
+#define POWERKEY_SESSION_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sdo_upload.hpp>
+#include <powerkey/decoder.hpp>
+#include <powerkey/j1939/protocol_switch.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <variant>
+
+namespace powerkey {
+
+enum class bus_protocol : std::uint8_t { canopen, j1939 };
+
+[[nodiscard]] constexpr std::string_view to_string(bus_protocol p) noexcept {
+    switch (p) {
+        case bus_protocol::canopen: return "canopen";
+        case bus_protocol::j1939: return "j1939";
+    }
+    return "unknown";
+}
+
+// Where an SDO frame stands in its exchange.
+enum class sdo_pairing : std::uint8_t {
+    none,        // not an SDO frame of the keypad, or not decodable as one
+    request,     // a request (download, upload, segment); the session now waits for its reply
+    reply,       // the reply to the pending request: `request` says which object
+    unanswered,  // a reply when no request was pending, or for another object
+};
+
+[[nodiscard]] constexpr std::string_view to_string(sdo_pairing p) noexcept {
+    switch (p) {
+        case sdo_pairing::none: return "none";
+        case sdo_pairing::request: return "request";
+        case sdo_pairing::reply: return "reply";
+        case sdo_pairing::unanswered: return "unanswered";
+    }
+    return "unknown";
+}
+
+// What one frame meant, and what it changed.
+struct session_event {
+    frame_class cls;
+    canopen::node_id node = canopen::default_node_id;  // the node the frame was decoded for
+    result<message> decoded = errc::unexpected_frame;
+    sdo_pairing sdo = sdo_pairing::none;
+    canopen::sdo_address request{};  // the object of the request answered (sdo == reply)
+    bool upload_done = false;        // a segmented upload ended with this frame: see text()
+    errc upload_error{};             // a segmented upload failed with this frame (toggle, abort..)
+    std::optional<canopen::node_id> new_node;  // the keypad moved to this node id
+    std::optional<bus_protocol> new_protocol;  // the keypad switched protocol
+};
+
+template <std::size_t TextCapacity = 64>
+class session {
+public:
+    constexpr session(powerkey::model m, canopen::node_id node) noexcept
+        : model_(m), node_(node), upload_(node) {}
+
+    [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
+    [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
+    [[nodiscard]] constexpr bus_protocol protocol() const noexcept { return protocol_; }
+    // The last segmented upload: its text (NULs left out), its bytes, what went against the
+    // segment rules, and the object read.
+    [[nodiscard]] constexpr std::string_view text() const noexcept { return upload_.text(); }
+    [[nodiscard]] constexpr const canopen::segmented_upload<TextCapacity>& upload() const noexcept {
+        return upload_;
+    }
+
+    [[nodiscard]] constexpr session_event step(const can::frame& f) noexcept {
+        session_event e;
+        e.cls = classify(f);
+        // During a PK1000 node change the keypad may still answer (an abort) from the old id.
+        e.node = node_;
+        if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
+        e.decoded = decode(f, e.node, model_);
+        if (e.cls.function == bus_function::sdo_rx && e.cls.node == e.node.value())
+            on_request(f, e);
+        else if (e.cls.function == bus_function::sdo_tx && e.cls.node == e.node.value())
+            on_reply(f, e);
+        else if (e.cls.function == bus_function::j1939 &&
+                 j1939::decode_switch_to_canopen(f).has_value()) {
+            protocol_ = bus_protocol::canopen;
+            e.new_protocol = protocol_;
+        }
+        return e;
+    }
+
+private:
+    enum class pending_kind : std::uint8_t { none, download, upload, segmented };
+
+    constexpr void on_request(const can::frame& f, session_event& e) noexcept {
+        const auto r = canopen::decode_sdo_request(f, e.node);
+        if (!r) return;
+        e.sdo = sdo_pairing::request;
+        if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) {
+            pending_ = pending_kind::download;
+            pending_address_ = d->address;
+            on_download(*d, e);
+        } else if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
+            pending_ = pending_kind::upload;
+            pending_address_ = u->address;
+            upload_ = canopen::segmented_upload<TextCapacity>(e.node);
+            (void)upload_.start(u->address);
+        } else if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
+            pending_ = pending_kind::none;
+            pending_address_ = a->address;
+        }
+        // A segment request keeps the segmented upload pending.
+    }
+
+    // The writes that move the keypad to another node id or protocol.
+    constexpr void on_download(const canopen::sdo_download_request& d, session_event& e) noexcept {
+        change_ = std::nullopt;
+        const auto b = d.value.bytes;
+        if (model_ == powerkey::model::pk1000 && d.address == canopen::sdo_address{0x2013, 0}) {
+            // PK1000 section 23: the reply already comes from the new id.
+            if (const auto n = canopen::node_id::make(b[0]); n && *n != node_) {
+                previous_node_ = node_;
+                node_ = *n;
+                e.new_node = node_;
+            }
+        } else if (model_ != powerkey::model::pk1000 &&
+                   d.address == canopen::sdo_address{0x6500, 1} && b[0] == 0x70) {
+            // PKP section 13 h: the reply comes from the old id, the boot-up from the new one.
+            if (const auto n = canopen::node_id::make(b[1])) change_ = *n;
+        } else if (model_ == powerkey::model::pk1000 &&
+                   d.address == canopen::sdo_address{0x20FF, 1} && b[0] == 0x01) {
+            protocol_ = bus_protocol::j1939;  // section 49
+            e.new_protocol = protocol_;
+        }
+    }
+
+    constexpr void on_reply(const can::frame& f, session_event& e) noexcept {
+        const auto r = canopen::decode_sdo_response(f, e.node);
+        if (!r) return;
+        e.sdo = sdo_pairing::unanswered;
+        const pending_kind was = pending_;
+        const canopen::sdo_address asked = pending_address_;
+        auto answers = [&](canopen::sdo_address a) {
+            return was != pending_kind::none && a == asked;
+        };
+        if (const auto* d = std::get_if<canopen::sdo_download_response>(&*r)) {
+            if (was == pending_kind::download && answers(d->address)) pair(e);
+            if (change_ && e.sdo == sdo_pairing::reply) {
+                node_ = *change_;
+                e.new_node = node_;
+            }
+            change_ = std::nullopt;
+        } else if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
+            if (answers(a->address)) pair(e);
+            if (was == pending_kind::upload || was == pending_kind::segmented) step_upload(f, e);
+            if (previous_node_ && e.node == *previous_node_) {  // the node change was refused
+                node_ = *previous_node_;
+                e.new_node = node_;
+            }
+            change_ = std::nullopt;
+        } else if (std::holds_alternative<canopen::sdo_segment_response>(*r)) {
+            if (was == pending_kind::segmented) {
+                pair(e);
+                step_upload(f, e);
+            }
+        } else if (const auto* u = std::get_if<canopen::sdo_upload_response>(&*r)) {
+            if (was == pending_kind::upload && answers(u->address)) pair(e);
+        } else if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
+            if (was == pending_kind::upload && answers(i->address)) {
+                pair(e);
+                step_upload(f, e);
+            }
+        }
+        if (e.cls.node == node_.value() || (previous_node_ && e.node == *previous_node_))
+            previous_node_ = std::nullopt;  // the first reply settles a PK1000 node change
+    }
+
+    constexpr void pair(session_event& e) noexcept {
+        e.sdo = sdo_pairing::reply;
+        e.request = pending_address_;
+        pending_ = pending_kind::none;
+    }
+
+    constexpr void step_upload(const can::frame& f, session_event& e) noexcept {
+        if (upload_.state() != canopen::upload_state::running) return;
+        const auto s = upload_.step(f);
+        if (!s) {
+            e.upload_error = s.error();
+        } else if (upload_.state() == canopen::upload_state::done) {
+            e.upload_done = true;
+        } else {
+            pending_ = pending_kind::segmented;
+            pending_address_ = upload_.address();
+        }
+    }
+
+    powerkey::model model_;
+    canopen::node_id node_;
+    bus_protocol protocol_ = bus_protocol::canopen;
+    pending_kind pending_ = pending_kind::none;
+    canopen::sdo_address pending_address_{};
+    std::optional<canopen::node_id> previous_node_;  // PK1000 2013h: the id before the change
+    std::optional<canopen::node_id> change_;         // PKP 70h: the id after the reply
+    canopen::segmented_upload<TextCapacity> upload_;
+};
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_SESSION_HPP

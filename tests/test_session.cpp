@@ -1,0 +1,157 @@
+// The session follower: SDO pairing, segmented strings, node-id changes, protocol switches.
+#include <doctest/doctest.h>
+
+#include <powerkey/can/candump.hpp>
+#include <powerkey/session.hpp>
+
+#include <iterator>
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+
+struct step_row {
+    std::string_view frame;
+    sdo_pairing sdo;
+    std::uint8_t node;   // the node the frame was decoded for
+    bool decoded;        // the decoder accepted the frame
+    std::uint8_t moved;  // new node id announced by this frame, 0 for none
+};
+
+template <std::size_t N>
+constexpr bool follows(model m, const step_row (&rows)[N]) {
+    session<> s(m, canopen::default_node_id);
+    for (const auto& r : rows) {
+        const auto e = s.step(can::parse_candump(r.frame).value());
+        if (e.sdo != r.sdo || e.node.value() != r.node || e.decoded.has_value() != r.decoded)
+            return false;
+        if ((r.moved == 0) != !e.new_node.has_value()) return false;
+        if (r.moved != 0 && e.new_node->value() != r.moved) return false;
+    }
+    return true;
+}
+
+// PK1000 section 29 then 23: the node id moves to 3Ah and the reply already comes from 5BAh.
+constexpr step_row pk1000_node_change[] = {
+    {"615#4017100000000000", sdo_pairing::request, 0x15, true, 0},
+    {"595#4B17100064000000", sdo_pairing::reply, 0x15, true, 0},
+    {"615#2F1320003A000000", sdo_pairing::request, 0x15, true, 0x3A},
+    {"5BA#6013200000000000", sdo_pairing::reply, 0x3A, true, 0},
+    {"63A#4013200000000000", sdo_pairing::request, 0x3A, true, 0},
+    {"5BA#4F1320003A000000", sdo_pairing::reply, 0x3A, true, 0},
+    {"595#4F1320003A000000", sdo_pairing::none, 0x3A, false, 0},  // the old id is gone
+};
+static_assert(follows(model::pk1000, pk1000_node_change));
+
+// PKP section 13 h: the reply comes from the old id, then the boot-up from the new one.
+constexpr step_row pkp_node_change[] = {
+    {"615#2300650170180000", sdo_pairing::request, 0x15, true, 0},
+    {"595#6000650100000000", sdo_pairing::reply, 0x15, true, 0x18},
+    {"718#00", sdo_pairing::none, 0x18, true, 0},
+};
+static_assert(follows(model::pkp2400, pkp_node_change));
+// The same frames mean nothing special to a PK1000, which has no command module.
+constexpr step_row pkp_frames_on_pk1000[] = {
+    {"615#2300650170180000", sdo_pairing::request, 0x15, true, 0},
+    {"595#6000650100000000", sdo_pairing::reply, 0x15, true, 0},
+    {"718#00", sdo_pairing::none, 0x15, false, 0},
+};
+static_assert(follows(model::pk1000, pkp_frames_on_pk1000));
+
+// A refused node change: the keypad aborts from the old id and stays there.
+constexpr step_row pk1000_refused[] = {
+    {"615#2F13200080000000", sdo_pairing::request, 0x15, true, 0},  // 80h is no node id
+    {"595#8013200030000906", sdo_pairing::reply, 0x15, true, 0},
+    {"615#2F1320003A000000", sdo_pairing::request, 0x15, true, 0x3A},
+    {"595#8013200030000906", sdo_pairing::reply, 0x15, true, 0x15},
+    {"615#4013200000000000", sdo_pairing::request, 0x15, true, 0},
+};
+static_assert(follows(model::pk1000, pk1000_refused));
+
+// Replies that answer nothing: no request, or another object.
+constexpr step_row unanswered[] = {
+    {"595#6017100000000000", sdo_pairing::unanswered, 0x15, true, 0},
+    {"615#4017100000000000", sdo_pairing::request, 0x15, true, 0},
+    {"595#4B00200100000000", sdo_pairing::unanswered, 0x15, true, 0},
+    {"595#4B17100064000000", sdo_pairing::reply, 0x15, true, 0},
+    {"595#4B17100064000000", sdo_pairing::unanswered, 0x15, true, 0},
+};
+static_assert(follows(model::pk1000, unanswered));
+
+// PK1000 section 32: the device name, segment by segment.
+constexpr std::string_view device_name_log[] = {
+    "615#4008100000000000", "595#410810000B000000", "615#6000000000000000",
+    "595#00426C696E6B4D61", "615#7000000000000000", "595#1772696E65000000",
+};
+
+constexpr bool reads_device_name() {
+    session<> s(model::pk1000, canopen::default_node_id);
+    int done = 0;
+    for (auto text : device_name_log) {
+        const auto e = s.step(can::parse_candump(text).value());
+        if (e.upload_done) ++done;
+        if (e.upload_error != errc{}) return false;
+    }
+    return done == 1 && s.text() == "BlinkMarine" && !s.upload().notes().any();
+}
+static_assert(reads_device_name());
+
+// PKP section 31: the serial number. Erratum E-PKP (request printed 41h): the request does not
+// decode, so the session does not start a transfer and the replies answer nothing.
+constexpr std::string_view serial_log[] = {
+    "615#4100630000000000", "595#4100630006000000", "615#6000000000000000",
+    "595#0030303030303000", "615#7000000000000000", "595#1D00000000000000",
+};
+}  // namespace
+
+TEST_CASE("the session pairs SDO requests with their replies") {
+    CHECK(follows(model::pk1000, unanswered));
+}
+
+TEST_CASE("the session follows a node-id change") {
+    CHECK(follows(model::pk1000, pk1000_node_change));
+    CHECK(follows(model::pkp2400, pkp_node_change));
+    CHECK(follows(model::pkp2200, pkp_node_change));
+    CHECK(follows(model::pk1000, pkp_frames_on_pk1000));
+    CHECK(follows(model::pk1000, pk1000_refused));
+}
+
+TEST_CASE("the session reads a segmented string to the end") { CHECK(reads_device_name()); }
+
+TEST_CASE("the PKP serial-number transcript, with its 41h request, starts no transfer") {
+    session<> s(model::pkp2400, canopen::default_node_id);
+    const auto first = s.step(can::parse_candump(serial_log[0]).value());
+    CHECK(first.decoded == errc::reserved_not_zero);
+    CHECK(first.sdo == sdo_pairing::none);
+    for (std::size_t i = 1; i < std::size(serial_log); ++i) {
+        const auto e = s.step(can::parse_candump(serial_log[i]).value());
+        CHECK_FALSE(e.upload_done);
+        if (i % 2 == 1) CHECK(e.sdo == sdo_pairing::unanswered);
+    }
+}
+
+TEST_CASE("a segmented read with a toggle error fails cleanly") {
+    session<> s(model::pk1000, canopen::default_node_id);
+    (void)s.step(can::candump("615#4008100000000000"));
+    (void)s.step(can::candump("595#410810000B000000"));
+    (void)s.step(can::candump("615#6000000000000000"));
+    const auto e = s.step(can::candump("595#10426C696E6B4D61"));  // toggle 1, expected 0
+    CHECK(e.upload_error == errc::toggle_error);
+    CHECK_FALSE(e.upload_done);
+}
+
+TEST_CASE("the session notices the switch to J1939 and back") {
+    session<> s(model::pk1000, canopen::default_node_id);
+    CHECK(s.protocol() == bus_protocol::canopen);
+    // PK1000 section 49 prints 5 bytes; an SDO frame has 8 (E-PK: the full frame is used here).
+    const auto to_j1939 = s.step(can::candump("615#2BFF200101000000"));
+    REQUIRE(to_j1939.new_protocol.has_value());
+    CHECK(*to_j1939.new_protocol == bus_protocol::j1939);
+    CHECK(s.protocol() == bus_protocol::j1939);
+    const auto back = s.step(can::candump("18EF2100#041B8000FFFFFFFF"));
+    REQUIRE(back.new_protocol.has_value());
+    CHECK(*back.new_protocol == bus_protocol::canopen);
+    CHECK(s.protocol() == bus_protocol::canopen);
+    // RS485 (sub 2) is no protocol switch.
+    CHECK_FALSE(s.step(can::candump("615#2BFF200200000000")).new_protocol.has_value());
+}
