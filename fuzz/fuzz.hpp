@@ -1,0 +1,283 @@
+// Shared pieces of the fuzz targets: reading values out of the fuzzer's bytes, the binary form of
+// a frame in corpus files, a check that aborts with the offending frame, ASan poisoning of the
+// bytes past a frame's dlc, and a generic filler for the `fields` convention of message structs.
+// Not part of the library: this may use the heap and stdio.
+#ifndef POWERKEY_FUZZ_FUZZ_HPP
+#define POWERKEY_FUZZ_FUZZ_HPP
+
+#include <powerkey/powerkey.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define POWERKEY_FUZZ_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) && !defined(POWERKEY_FUZZ_ASAN)
+#define POWERKEY_FUZZ_ASAN 1
+#endif
+#ifdef POWERKEY_FUZZ_ASAN
+#include <sanitizer/asan_interface.h>
+#endif
+
+namespace powerkey_fuzz {
+
+using namespace powerkey;
+
+// --- failing loudly ---------------------------------------------------------------------------
+
+[[noreturn]] inline void fail(const char* what, const char* file, int line,
+                              const can::frame* f = nullptr) {
+    std::fprintf(stderr, "%s:%d: fuzz check failed: %s", file, line, what);
+    if (f != nullptr) {
+        const auto text = can::format_candump(*f);
+        std::fprintf(stderr, " (frame %.*s)", static_cast<int>(text.view().size()),
+                     text.view().data());
+    }
+    std::fprintf(stderr, "\n");
+    std::abort();
+}
+
+}  // namespace powerkey_fuzz
+
+// A property that must hold for every input; on failure prints the frame and aborts, which both
+// libFuzzer and the replay main report as a crash.
+#define POWERKEY_FUZZ_CHECK(cond) \
+    ((cond) ? (void)0 : ::powerkey_fuzz::fail(#cond, __FILE__, __LINE__))
+#define POWERKEY_FUZZ_CHECK_FRAME(cond, frame) \
+    ((cond) ? (void)0 : ::powerkey_fuzz::fail(#cond, __FILE__, __LINE__, &(frame)))
+
+namespace powerkey_fuzz {
+
+// --- reading the fuzzer's bytes -----------------------------------------------------------------
+
+// Reads little-endian values off the front of the input; past the end every read is zero, so a
+// short input is still a complete (if dull) test case.
+class input {
+public:
+    input(const std::uint8_t* data, std::size_t size) noexcept : bytes_(data, size) {}
+
+    [[nodiscard]] bool empty() const noexcept { return pos_ >= bytes_.size(); }
+    [[nodiscard]] std::size_t remaining() const noexcept {
+        return empty() ? 0 : bytes_.size() - pos_;
+    }
+    std::uint8_t u8() noexcept { return empty() ? 0 : bytes_[pos_++]; }
+
+    template <class T>
+    T integer() noexcept {
+        static_assert(std::is_unsigned_v<T>);
+        std::uint64_t v = 0;
+        for (std::size_t i = 0; i < sizeof(T); ++i) v |= std::uint64_t{u8()} << (8 * i);
+        return static_cast<T>(v);
+    }
+    // The rest of the input.
+    std::span<const std::uint8_t> rest() noexcept {
+        const auto r = empty() ? std::span<const std::uint8_t>{} : bytes_.subspan(pos_);
+        pos_ = bytes_.size();
+        return r;
+    }
+
+private:
+    std::span<const std::uint8_t> bytes_;
+    std::size_t pos_ = 0;
+};
+
+// A node id from one byte: every byte maps to one of 1..127.
+inline canopen::node_id take_node(input& in) noexcept {
+    return canopen::node_id::make(in.u8() % 127 + 1).value();
+}
+
+// The binary form of a frame in corpus files:
+//   byte 0    bit 7 extended identifier, bits 3..0 dlc (9..15 read as 8)
+//   then      the identifier, 2 bytes (standard, masked to 11 bits) or 4 bytes (extended,
+//             masked to 29 bits), little endian
+//   then      dlc data bytes
+// Every byte string reads as some frame, so the fuzzer never wastes an input on a parse error.
+inline can::frame take_frame(input& in) noexcept {
+    const std::uint8_t flags = in.u8();
+    const bool extended = (flags & 0x80) != 0;
+    const auto n = static_cast<std::uint8_t>(std::min(flags & 0x0F, 8));
+    const auto id = extended ? in.integer<std::uint32_t>() & 0x1FFF'FFFFu
+                             : std::uint32_t{in.integer<std::uint16_t>()} & 0x7FFu;
+    can::payload p{};
+    for (std::size_t i = 0; i < n; ++i) p[i] = in.u8();
+    const auto length = can::dlc::make(n).value();
+    if (extended) return can::frame(can::extended_id::make(id).value(), length, p);
+    return can::frame(can::standard_id::make(id).value(), length, p);
+}
+
+// The inverse of take_frame, for the seed writer.
+inline void put_frame(std::vector<std::uint8_t>& out, const can::frame& f) {
+    out.push_back(static_cast<std::uint8_t>((f.is_extended() ? 0x80 : 0) | f.size()));
+    const std::uint32_t id = f.raw_id();
+    const std::size_t id_bytes = f.is_extended() ? 4 : 2;
+    for (std::size_t i = 0; i < id_bytes; ++i)
+        out.push_back(static_cast<std::uint8_t>(id >> (8 * i)));
+    for (std::uint8_t b : f.data()) out.push_back(b);
+}
+
+// --- the bytes past the dlc ---------------------------------------------------------------------
+
+// While alive, makes every byte of a frame's storage at and past its dlc unreadable under
+// AddressSanitizer, so a decoder that looks at a byte the frame does not carry (through
+// operator[], bytes() or data()) is reported as a use-after-poison. Without ASan it does nothing.
+// The frame must be 8-byte aligned (ASan poisons the tail of an 8-byte granule, never the head).
+class poison_past_dlc {
+public:
+    explicit poison_past_dlc(const can::frame& f) noexcept : f_(f) {
+#ifdef POWERKEY_FUZZ_ASAN
+        if (reinterpret_cast<std::uintptr_t>(&f) % 8 != 0)
+            fail("frame to poison is not 8-byte aligned", __FILE__, __LINE__);
+        __asan_poison_memory_region(begin(), length());
+#endif
+    }
+    ~poison_past_dlc() {
+#ifdef POWERKEY_FUZZ_ASAN
+        __asan_unpoison_memory_region(begin(), length());
+#endif
+    }
+    poison_past_dlc(const poison_past_dlc&) = delete;
+    poison_past_dlc& operator=(const poison_past_dlc&) = delete;
+
+    // True when poisoning is in effect and covers exactly the bytes past the dlc (a self-test of
+    // the mechanism, so that a test relying on it cannot pass vacuously).
+    [[nodiscard]] bool effective() const noexcept {
+#ifdef POWERKEY_FUZZ_ASAN
+        const auto* data = f_.bytes().data();
+        for (std::size_t i = 0; i < 8; ++i) {
+            const bool poisoned = __asan_address_is_poisoned(data + i) != 0;
+            if (poisoned != (i >= f_.size())) return false;
+        }
+        return true;
+#else
+        return false;
+#endif
+    }
+
+private:
+    [[nodiscard]] const void* begin() const noexcept { return f_.bytes().data() + f_.size(); }
+    [[nodiscard]] std::size_t length() const noexcept {
+        // Up to the end of the object, padding included, so that the last granule is poisoned
+        // through its end as ASan requires.
+        const auto* object_end = reinterpret_cast<const unsigned char*>(&f_) + sizeof(can::frame);
+        return static_cast<std::size_t>(object_end - static_cast<const unsigned char*>(begin()));
+    }
+    const can::frame& f_;
+};
+
+// A frame stored at an 8-byte boundary, as poison_past_dlc needs.
+struct alignas(8) aligned_frame {
+    can::frame f;
+};
+
+// --- filling message fields from the input ------------------------------------------------------
+
+template <class T>
+struct is_std_array : std::false_type {};
+template <std::size_t N>
+struct is_std_array<std::array<std::uint8_t, N>> : std::true_type {};
+
+template <class T>
+struct is_index_set : std::false_type {};
+template <std::size_t N>
+struct is_index_set<index_set<N>> : std::true_type {};
+
+template <class T>
+concept bounded_like = requires {
+    typename T::rep;
+    T::min;
+    T::max;
+    T::make(typename T::rep{});
+};
+
+template <class E>
+bool is_named(E e) {
+    const std::string_view name = to_string(e);
+    return !name.empty() && name != "unknown";
+}
+
+// Every named value of an enum with a one- or two-byte underlying type, found once by asking
+// to_string about every value, as the command-line tool does.
+template <class E>
+const std::vector<E>& named_values() {
+    static const std::vector<E> values = [] {
+        using U = std::underlying_type_t<E>;
+        std::vector<E> v;
+        for (std::uint32_t raw = 0; raw <= std::numeric_limits<U>::max(); ++raw)
+            if (is_named(static_cast<E>(raw))) v.push_back(static_cast<E>(raw));
+        return v;
+    }();
+    return values;
+}
+
+// One field of the allowed kinds (see the message convention) from the input. Bounded values and
+// enums are drawn from their valid values only, so every message built is in range. Returns
+// false when the input names no valid value (a four-byte enum value without a name).
+template <class T>
+bool fill_field(input& in, T& v) {
+    if constexpr (std::is_same_v<T, bool>) {
+        v = (in.u8() & 1) != 0;
+    } else if constexpr (std::is_integral_v<T>) {
+        v = in.integer<T>();
+    } else if constexpr (std::is_enum_v<T>) {
+        using U = std::underlying_type_t<T>;
+        if constexpr (sizeof(U) <= 2) {
+            const auto& values = named_values<T>();
+            if (values.empty()) return false;
+            v = values[in.integer<std::uint16_t>() % values.size()];
+        } else {
+            const auto e = static_cast<T>(in.integer<U>());
+            if (!is_named(e)) return false;
+            v = e;
+        }
+    } else if constexpr (bounded_like<T>) {
+        using R = typename T::rep;
+        const std::uint64_t span = std::uint64_t{T::max} - T::min + 1;
+        const auto raw = static_cast<std::uint64_t>(in.integer<R>());
+        v = T::make(static_cast<std::uint64_t>(T::min) + raw % span).value();
+    } else if constexpr (is_std_array<T>::value) {
+        for (auto& b : v) b = in.u8();
+    } else if constexpr (is_index_set<T>::value) {
+        v = T::from_mask(in.integer<std::uint64_t>());
+    } else {
+        static_assert(!sizeof(T), "a field type outside the message convention");
+    }
+    return true;
+}
+
+// Every field of a message struct, through its `fields` list.
+template <class M>
+bool fill_message(input& in, M& m) {
+    bool ok = true;
+    M::fields(m, [&](std::string_view, auto& field) { ok = fill_field(in, field) && ok; });
+    return ok;
+}
+
+// A default-constructed alternative of a variant, chosen by index.
+template <class V, std::size_t I = 0>
+V variant_alternative_at(std::size_t index) {
+    if constexpr (I + 1 < std::variant_size_v<V>) {
+        if (index != I) return variant_alternative_at<V, I + 1>(index);
+    }
+    return V{std::in_place_index<I>};
+}
+
+// Is the error one of the listed codes?
+inline bool is_listed(errc e) {
+    return std::find(std::begin(all_errc), std::end(all_errc), e) != std::end(all_errc);
+}
+
+}  // namespace powerkey_fuzz
+
+#endif  // POWERKEY_FUZZ_FUZZ_HPP

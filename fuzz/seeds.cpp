@@ -1,0 +1,114 @@
+// Writes the seed corpus of every fuzz target into the directory given, one file per seed:
+//   <dir>/<target>/<n>
+// The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
+// binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic.
+#include "fuzz.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+using namespace powerkey;
+using namespace powerkey_fuzz;
+
+// Core frames printed in the manuals (PK1000 / PKP sections 4-10, 12-13 and 29; the SDO examples
+// of object 1008h and 1017h), plus the J1939 switch of PK1000 section 49.
+constexpr std::string_view core_frames[] = {
+    "000#0115",
+    "000#0215",
+    "000#8015",
+    "000#8115",
+    "000#8215",
+    "000#0015",
+    "000#0100",
+    "080#",
+    "715#00",
+    "715#05",
+    "715#04",
+    "715#7F",
+    "615#4008100000000000",
+    "595#410810000B000000",
+    "595#00426C696E6B4D61",
+    "595#1772696E65000000",
+    "615#6000000000000000",
+    "615#7000000000000000",
+    "615#2B17100064000000",
+    "595#6017100000000000",
+    "595#4B17100064000000",
+    "595#8000200100000206",
+    "615#8000200100000205",
+    "595#4F18100101000000",
+    "595#43181002000E0000",
+    "18EF2100#041B8000FFFFFFFF",
+};
+
+class writer {
+public:
+    explicit writer(std::filesystem::path root) : root_(std::move(root)) {}
+    void add(const std::string& target, const std::vector<std::uint8_t>& bytes) {
+        const auto dir = root_ / target;
+        std::filesystem::create_directories(dir);
+        const auto name = std::to_string(counts_[target]++);
+        std::ofstream out(dir / name, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+    }
+    void add_text(const std::string& target, std::string_view text) {
+        add(target, std::vector<std::uint8_t>(text.begin(), text.end()));
+    }
+
+private:
+    std::filesystem::path root_;
+    std::map<std::string, int> counts_;
+};
+
+std::vector<std::uint8_t> node_and_frame(std::uint8_t node_byte, const can::frame& f) {
+    std::vector<std::uint8_t> out{node_byte};
+    put_frame(out, f);
+    return out;
+}
+
+// take_node maps byte b to node b % 127 + 1.
+constexpr std::uint8_t node_byte(unsigned node) { return static_cast<std::uint8_t>(node - 1); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s <output directory>\n", argv[0]);
+        return 2;
+    }
+    writer w{std::filesystem::path(argv[1])};
+
+    for (auto text : core_frames) {
+        const auto f = can::parse_candump(text).value();
+        w.add_text("candump", text);
+        w.add("core_decode", node_and_frame(node_byte(0x15), f));
+    }
+    // Malformed text next to the good: the parser's error paths.
+    for (auto text : {"615#0", "6150#00", "800#00", "20000000#00", "615#000000000000000000", "#"})
+        w.add_text("candump", text);
+
+    // The device-name upload of PK1000 section 12 ("BlinkMarine" in two segments), expedited and
+    // aborted, with a small and a large buffer, report and strict.
+    for (std::uint8_t mode = 0; mode < 4; ++mode) {
+        std::vector<std::uint8_t> s{mode, node_byte(0x15)};
+        s.insert(s.end(), {1, 0, 0, 0, 0, 0, 0, 0, 0});  // the not-started probe
+        s.insert(s.end(), {0x08, 0x10, 0x00});           // address 1008h sub 0
+        for (auto text : {"595#410810000B000000", "595#00426C696E6B4D61", "595#1772696E65000000"}) {
+            s.push_back(1);  // an 8-byte reply on 580h + node
+            const auto f = can::parse_candump(text).value();
+            s.insert(s.end(), f.data().begin(), f.data().end());
+        }
+        w.add("sdo_upload", s);
+    }
+
+    // One seed per core message kind: the selector, a node, zero fields.
+    for (std::uint8_t which = 0; which < 13; ++which)
+        w.add("core_encode", {which, node_byte(0x15), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+    return 0;
+}
