@@ -84,7 +84,8 @@ TEST_CASE("the switch back to CANopen, PK1000 49") {
     CHECK(encode(switch_to_canopen{}) == *f);
     const auto m = decode_switch_to_canopen(*f);
     REQUIRE(m.has_value());
-    CHECK(m->priority == priority{6});
+    constexpr priority six = 6;
+    CHECK(m->priority == six);
     CHECK(m->destination == 0x21);
     CHECK(m->source == 0x00);
     for (const auto& r : bad_rows) {
