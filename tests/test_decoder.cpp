@@ -46,7 +46,7 @@ TEST_CASE("core rows decode to their meaning and encode back to the same bytes")
         REQUIRE(f.has_value());
         const auto m = decode(*f, keypad, model::pk1000);
         REQUIRE(m.has_value());
-        CHECK(*m == r.expected);
+        CHECK(*m == message{r.expected});
         const auto back = encode(keypad, model::pk1000, *m);
         REQUIRE(back.has_value());
         CHECK(*back == *f);

@@ -19,9 +19,11 @@
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/pkp/profile.hpp>
 #include <powerkey/result.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -231,22 +233,46 @@ using message =
 
 // --- every frame of a model ---------------------------------------------------------------------
 
-// Until the profiles land, the model-aware decoder speaks the core messages only.
-using message = core::message;
-
-// Any frame of keypad `node` of model `m`. Errors: wrong_id (a frame of another node, or of a
-// function no keypad uses), and every error of the decoder of the frame's function.
-[[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node,
-                                               model m) noexcept {
-    (void)m;
-    return core::decode(f, node);
+// The PKP profile's model for a PKP keypad; nullopt for the PK1000.
+[[nodiscard]] constexpr std::optional<pkp::model> pkp_model(model m) noexcept {
+    switch (m) {
+        case model::pkp2200: return pkp::model::pkp2200;
+        case model::pkp2400: return pkp::model::pkp2400;
+        case model::pkp2600: return pkp::model::pkp2600;
+        default: return std::nullopt;
+    }
 }
 
-// The inverse of decode: encode(node, m, *decode(f, node, m)) == f.
+// A message of any model: the PK1000 speaks the core messages until its profile lands.
+using message = std::variant<core::message, pkp::message>;
+
+// Any frame of keypad `node` of model `m`. Errors: wrong_id (a frame of another node, or of a
+// function no keypad uses), wrong_id_format (a 29-bit frame for a keypad without J1939), and
+// every error of the profile's decoder (unknown_object, value_out_of_range, wrong_length ...).
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node,
+                                               model m) noexcept {
+    if (const auto pm = pkp_model(m)) {
+        const auto r = pkp::decode(f, node, *pm);
+        if (!r) return r.error();
+        return message{*r};
+    }
+    const auto r = core::decode(f, node);
+    if (!r) return r.error();
+    return message{*r};
+}
+
+// The inverse of decode: encode(node, m, *decode(f, node, m)) == f. Errors: unknown_command
+// (a message of another model's profile), and the profile encoder's errors (a key or LED the
+// model lacks: value_out_of_range).
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
-    (void)m;
-    return core::encode(node, msg);
+    if (const auto* c = std::get_if<core::message>(&msg)) {
+        if (pkp_model(m)) return errc::unknown_command;
+        return core::encode(node, *c);
+    }
+    const auto pm = pkp_model(m);
+    if (!pm) return errc::unknown_command;
+    return pkp::encode(node, *pm, std::get<pkp::message>(msg));
 }
 
 }  // namespace powerkey
