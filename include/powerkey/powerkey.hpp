@@ -22,4 +22,9 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 
+#include <powerkey/pk1000/objects.hpp>
+#include <powerkey/pk1000/pdo.hpp>
+#include <powerkey/pk1000/profile.hpp>
+#include <powerkey/pk1000/values.hpp>
+
 #endif  // POWERKEY_POWERKEY_HPP
