@@ -4,6 +4,7 @@
 #define POWERKEY_BENCH_ALL_OPS_HPP
 
 #include "ops.hpp"
+#include "ops_pkp.hpp"
 
 #include <array>
 #include <cstddef>
@@ -11,8 +12,9 @@
 
 namespace bench {
 
-inline constexpr std::array<std::span<const op>, 1> op_groups = {
+inline constexpr std::array<std::span<const op>, 2> op_groups = {
     std::span<const op>(core_ops),
+    std::span<const op>(pkp_ops),
 };
 
 // Calls f(op) for every operation, floor first.

@@ -1,0 +1,262 @@
+// PKP profile operations (PKP-2400 at node 15h) and the any-frame decoder on a mixed log. Inputs
+// are frames printed in the PKP manual (sections 10-13, 14-17); each is proved at compile time to
+// decode, so that no benchmark silently measures an error path.
+#ifndef POWERKEY_BENCH_OPS_PKP_HPP
+#define POWERKEY_BENCH_OPS_PKP_HPP
+
+#include <powerkey/decoder.hpp>
+#include <powerkey/pkp/command.hpp>
+#include <powerkey/pkp/model.hpp>
+#include <powerkey/pkp/objects.hpp>
+#include <powerkey/pkp/pdo.hpp>
+#include <powerkey/pkp/profile.hpp>
+
+#include <array>
+#include <cstddef>
+
+#include "ops.hpp"
+
+namespace bench {
+
+namespace pkp = powerkey::pkp;
+inline constexpr pkp::model pkp_model = pkp::model::pkp2400;
+
+// Section 10 (PKP-2400 table; the tick byte, XX in the manual, is filled in).
+inline constexpr std::array pkp_key_frames = {
+    candump("195#0000000011"),
+    candump("195#0100000012"),
+    candump("195#0200000013"),
+    candump("195#4200000014"),
+};
+// Sections 11 and 12 (PKP-2400 tables).
+inline constexpr std::array pkp_led_on_frames = {
+    candump("215#0000000000000000"), candump("215#0100000000000000"),
+    candump("215#4200000000000000"), candump("215#0011000000000000"),
+    candump("215#596A740000000000"),
+};
+inline constexpr std::array pkp_led_blink_frames = {
+    candump("315#0100000000000000"),
+    candump("315#4200000000000000"),
+    candump("315#0000060000000000"),
+    candump("315#0007070000000000"),
+};
+// Expedited SDO requests: the command module (13), LED map write (15), heartbeat time (17).
+inline constexpr std::array pkp_sdo_request_frames = {
+    candump("615#2300650101080100"), candump("615#2300650102100000"),
+    candump("615#23006501032F0000"), candump("615#2300650112013200"),
+    candump("615#2301600000010000"), candump("615#4000600000000000"),
+    candump("615#2B17100032000000"), candump("615#4017100000000000"),
+};
+// Expedited SDO responses.
+inline constexpr std::array pkp_sdo_response_frames = {
+    candump("595#6000650100000000"),
+    candump("595#6001600000000000"),
+    candump("595#4301600001000000"),
+    candump("595#4301600000FF0000"),
+};
+
+inline constexpr std::array pkp_key_messages = {pkp::key_state{{}, 0x11}, pkp::key_state{{1}, 0x12},
+                                                pkp::key_state{{2}, 0x13},
+                                                pkp::key_state{{2, 7}, 0x14}};
+inline constexpr std::array pkp_led_messages = {
+    pkp::led_on{pkp::leds{{1}, {}, {}}}, pkp::led_on{pkp::leds{{2, 7}, {}, {}}},
+    pkp::led_on{pkp::leds{{}, {1, 5}, {}}},
+    pkp::led_on{pkp::leds{{1, 4, 5, 7}, {2, 4, 6, 7}, {3, 5, 6, 7}}}};
+inline constexpr std::array pkp_led_maps = {
+    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::red}},
+    pkp::led_map<pkp::model::pkp2400>{{2, pkp::colour::red}, {7, pkp::colour::red}},
+    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::green}, {5, pkp::colour::green}},
+    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::amber}, {8, pkp::colour::white}}};
+inline constexpr std::array pkp_sdo_messages = {
+    pkp::message{pkp::set_led_state{8, pkp::led_state{0x01}}},
+    pkp::message{pkp::set_led_brightness{0x10}},
+    pkp::message{pkp::write_request{pkp::object::heartbeat_time, 50}},
+    pkp::message{pkp::read_request{pkp::object::heartbeat_time}},
+};
+
+// A realistic minute on a bus, compressed to 64 frames: mostly key-state and LED PDOs, the
+// keypad's heartbeat, SYNC, a few configuration SDOs with their replies, and traffic of other
+// devices (another node's PDO and heartbeat, a J1939 frame), which the decoder must refuse.
+inline constexpr std::array mixed_log = {
+    candump("000#0115"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+    candump("195#0100000012"),
+    candump("196#0100000000"),
+    candump("315#0000060000000000"),
+    candump("195#0000000013"),
+    candump("080#"),
+    candump("215#4200000000000000"),
+    candump("195#4200000014"),
+    candump("716#05"),
+    candump("215#0011000000000000"),
+    candump("615#2300650102100000"),
+    candump("595#6000650100000000"),
+    candump("195#0200000015"),
+    candump("18FEF100#FFFFFFFFFFFFFFFF"),
+    candump("715#05"),
+    candump("215#596A740000000000"),
+    candump("195#0000000016"),
+    candump("315#0100000000000000"),
+    candump("080#"),
+    candump("195#0100000017"),
+    candump("216#0100000000000000"),
+    candump("215#0000000000000000"),
+    candump("195#0000000018"),
+    candump("715#05"),
+    candump("615#4017100000000000"),
+    candump("595#4B17100032000000"),
+    candump("195#4200000019"),
+    candump("215#4200000000000000"),
+    candump("195#000000001A"),
+    candump("080#"),
+    candump("315#0007070000000000"),
+    candump("195#020000001B"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+    candump("195#000000001C"),
+    candump("196#0000000000"),
+    candump("615#2300650101080100"),
+    candump("595#6000650100000000"),
+    candump("195#010000001D"),
+    candump("215#0011000000000000"),
+    candump("080#"),
+    candump("195#000000001E"),
+    candump("715#05"),
+    candump("315#4200000000000000"),
+    candump("195#420000001F"),
+    candump("215#596A740000000000"),
+    candump("716#05"),
+    candump("195#0000000020"),
+    candump("215#0000000000000000"),
+    candump("615#2301600000010000"),
+    candump("595#6001600000000000"),
+    candump("195#0100000021"),
+    candump("080#"),
+    candump("715#05"),
+    candump("195#0000000022"),
+    candump("215#4200000000000000"),
+    candump("315#0100000000000000"),
+    candump("195#0200000023"),
+    candump("18FEF100#FFFFFFFFFFFFFFFF"),
+    candump("195#0000000024"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+};
+
+namespace detail {
+template <class Frames, class Decode>
+constexpr bool all_decode(const Frames& frames, Decode d) {
+    for (const auto& f : frames)
+        if (!d(f).has_value()) return false;
+    return true;
+}
+constexpr auto pkp_decode = [](const pc::frame& f) { return pkp::decode(f, node, pkp_model); };
+}  // namespace detail
+
+static_assert(detail::all_decode(pkp_key_frames, detail::pkp_decode));
+static_assert(detail::all_decode(pkp_led_on_frames, detail::pkp_decode));
+static_assert(detail::all_decode(pkp_led_blink_frames, detail::pkp_decode));
+static_assert(detail::all_decode(pkp_sdo_request_frames, detail::pkp_decode));
+static_assert(detail::all_decode(pkp_sdo_response_frames, detail::pkp_decode));
+
+// How many frames of the mixed log belong to the keypad (the rest are refused with wrong_id or
+// wrong_id_format): kept in the table's notes.
+inline constexpr std::size_t mixed_log_keypad_frames = [] {
+    std::size_t n = 0;
+    for (const auto& f : mixed_log)
+        if (powerkey::decode(f, node, powerkey::model::pkp2400).has_value()) ++n;
+    return n;
+}();
+static_assert(mixed_log_keypad_frames == mixed_log.size() - 7);
+
+// The decoded log, for the encoder: encode(decode(f)) == f for each of these.
+inline constexpr auto mixed_log_messages = [] {
+    std::array<powerkey::message, mixed_log_keypad_frames> m{};
+    std::size_t n = 0;
+    for (const auto& f : mixed_log)
+        if (const auto r = powerkey::decode(f, node, powerkey::model::pkp2400)) m[n++] = *r;
+    return m;
+}();
+
+inline void pkp_key_state_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_key_frames, calls,
+          [n, m](const pc::frame& f) { return pkp::decode_key_state(f, n, m); });
+}
+inline void pkp_key_state_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_key_messages, calls,
+          [n, m](const pkp::key_state& s) { return pkp::encode(n, m, s); });
+}
+inline void pkp_led_on_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_led_on_frames, calls,
+          [n, m](const pc::frame& f) { return pkp::decode_led_on(f, n, m); });
+}
+inline void pkp_led_blink_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_led_blink_frames, calls,
+          [n, m](const pc::frame& f) { return pkp::decode_led_blink(f, n, m); });
+}
+inline void pkp_led_on_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_led_messages, calls, [n, m](const pkp::led_on& s) { return pkp::encode(n, m, s); });
+}
+inline void pkp_led_on_encode_typed(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_led_maps, calls,
+          [n](const pkp::led_map<pkp::model::pkp2400>& map) { return pkp::encode_led_on(n, map); });
+}
+inline void pkp_sdo_request_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_sdo_request_frames, calls,
+          [n, m](const pc::frame& f) { return pkp::decode(f, n, m); });
+}
+inline void pkp_sdo_response_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_sdo_response_frames, calls,
+          [n, m](const pc::frame& f) { return pkp::decode(f, n, m); });
+}
+inline void pkp_sdo_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(pkp_sdo_messages, calls,
+          [n, m](const pkp::message& msg) { return pkp::encode(n, m, msg); });
+}
+inline void any_decode_mixed_log(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(powerkey::model::pkp2400);
+    cycle(mixed_log, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+}
+inline void any_encode_mixed_log(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(powerkey::model::pkp2400);
+    cycle(mixed_log_messages, calls,
+          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+}
+
+inline constexpr op pkp_ops[] = {
+    {"pkp2400/key_state/decode", pkp_key_state_decode},
+    {"pkp2400/key_state/encode", pkp_key_state_encode},
+    {"pkp2400/led_on/decode", pkp_led_on_decode},
+    {"pkp2400/led_blink/decode", pkp_led_blink_decode},
+    {"pkp2400/led_on/encode", pkp_led_on_encode},
+    {"pkp2400/led_on/encode_typed", pkp_led_on_encode_typed},
+    {"pkp2400/sdo/decode_request", pkp_sdo_request_decode},
+    {"pkp2400/sdo/decode_response", pkp_sdo_response_decode},
+    {"pkp2400/sdo/encode", pkp_sdo_encode},
+    {"any/pkp2400/decode_mixed_log", any_decode_mixed_log},
+    {"any/pkp2400/encode_mixed_log", any_encode_mixed_log, "frame (keypad frames only)"},
+};
+
+}  // namespace bench
+
+#endif  // POWERKEY_BENCH_OPS_PKP_HPP
