@@ -27,4 +27,16 @@
 #include <powerkey/pk1000/profile.hpp>
 #include <powerkey/pk1000/values.hpp>
 
+#include <powerkey/pkp/command.hpp>
+#include <powerkey/pkp/model.hpp>
+#include <powerkey/pkp/objects.hpp>
+#include <powerkey/pkp/pdo.hpp>
+#include <powerkey/pkp/profile.hpp>
+
+// The any-frame decoder, the session follower and the description writer, over every model.
+#include <powerkey/decoder.hpp>
+#include <powerkey/describe.hpp>
+#include <powerkey/fields.hpp>
+#include <powerkey/session.hpp>
+
 #endif  // POWERKEY_POWERKEY_HPP
