@@ -272,8 +272,8 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
 
 // The node id a message moves the keypad to (a write of 2013h), if it does.
 [[nodiscard]] constexpr std::optional<canopen::node_id> new_node_id(const message& m) noexcept {
-    if (const auto* s = std::get_if<set_request<node_id_value>>(&m)) return s->value.new_node_id;
-    return std::nullopt;
+    if (!std::holds_alternative<set_request<node_id_value>>(m)) return std::nullopt;
+    return std::get<set_request<node_id_value>>(m).value.new_node_id;
 }
 
 }  // namespace powerkey::pk1000
