@@ -57,6 +57,24 @@ namespace pc = powerkey::can;
 
 inline constexpr co::node_id node = 0x15;
 
+// classify() was rewritten from a scan of the function bases to a switch for speed (issue 7);
+// this proves the two agree on all 2048 standard identifiers.
+constexpr bool classify_matches_scan() {
+    for (std::uint16_t v = 0; v <= 0x7FF; ++v) {
+        co::cob_info expected{co::function::other, 0};
+        if (v == 0x000) expected = {co::function::nmt, 0};
+        if (v == 0x080) expected = {co::function::sync, 0};
+        const auto n = static_cast<std::uint8_t>(v & 0x7F);
+        for (co::function f : {co::function::tpdo1, co::function::rpdo1, co::function::rpdo2,
+                               co::function::rpdo3, co::function::rpdo4, co::function::sdo_tx,
+                               co::function::sdo_rx, co::function::heartbeat})
+            if (n != 0 && co::detail::per_node_base(f) + n == v) expected = {f, n};
+        if (co::classify(pc::standard_id::make(v).value()) != expected) return false;
+    }
+    return true;
+}
+static_assert(classify_matches_scan());
+
 // --- inputs: frames and messages exactly as the manuals print them ---------------------------
 
 inline constexpr std::array core_frames = {

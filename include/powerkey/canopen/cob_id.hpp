@@ -85,12 +85,21 @@ struct cob_info {
     if (v == 0x080) return {function::sync, 0};
     const auto node = static_cast<std::uint8_t>(v & 0x7F);
     if (node == 0) return {function::other, 0};
-    const auto base = static_cast<std::uint16_t>(v - node);
-    // 580h is not a multiple of 100h, so compare each base rather than masking.
-    for (function f : {function::tpdo1, function::rpdo1, function::rpdo2, function::rpdo3,
-                       function::rpdo4, function::sdo_tx, function::sdo_rx, function::heartbeat})
-        if (detail::per_node_base(f) == base) return {f, node};
-    return {function::other, 0};
+    // Bits 10..7 are the function code (580h is code 11). A switch, not a scan of the bases:
+    // every decoder starts here, and this is a table lookup (bench/: issue 7).
+    function f = function::other;
+    switch (v >> 7) {
+        case 0x3: f = function::tpdo1; break;
+        case 0x4: f = function::rpdo1; break;
+        case 0x6: f = function::rpdo2; break;
+        case 0x8: f = function::rpdo3; break;
+        case 0xA: f = function::rpdo4; break;
+        case 0xB: f = function::sdo_tx; break;
+        case 0xC: f = function::sdo_rx; break;
+        case 0xE: f = function::heartbeat; break;
+        default: return {function::other, 0};
+    }
+    return {f, node};
 }
 
 // The same for any frame: a 29-bit identifier is never CANopen, so it is `other`.
