@@ -603,6 +603,8 @@ inline constexpr error_row error_rows[] = {
     // command bytes and sizes
     {"PKP 13 command 99h", all, "615#2300650199000000", errc::unknown_command},
     {"PKP 13 command 00h", all, "615#2300650100000000", errc::unknown_command},
+    {"PKP 13 command 99h, byte 7 set: the command is checked first", all, "615#2300650199000001",
+     errc::unknown_command},
     {"PKP 13 byte 7 not 00h", all, "615#2300650102100001", errc::reserved_not_zero},
     {"PKP 13 byte 6 of a one-parameter command", all, "615#2300650102100100",
      errc::reserved_not_zero},

@@ -390,20 +390,11 @@ constexpr bool is_backlight_colour(std::uint8_t b) noexcept { return b >= 0x01 &
     if (r.value.size.value() != 4) return errc::size_mismatch;
     const auto& b = r.value.bytes;
     const std::uint8_t p1 = b[1];
-    if (b[3] != 0) return errc::reserved_not_zero;
-    // Commands with two parameters.
-    if (b[0] == set_led_state::code) {
-        if (p1 < 1 || p1 > key_count(m) || !detail::is_led_state(b[2]))
-            return errc::value_out_of_range;
-        return command{set_led_state{key::make(p1).value(), static_cast<led_state>(b[2])}};
-    }
-    if (b[0] == set_periodic_transmission::code) {
-        const auto on = detail::bool_of(p1);
-        if (!on) return on.error();
-        return command{set_periodic_transmission{*on, b[2]}};
-    }
-    // Commands with one parameter.
+    // The command byte first, then the reserved bytes, then the values (docs/errors.md).
+    bool two_parameters = false;
     switch (b[0]) {
+        case set_led_state::code:
+        case set_periodic_transmission::code: two_parameters = true; break;
         case set_led_brightness::code:
         case set_backlight_brightness::code:
         case set_backlight_colour::code:
@@ -418,7 +409,17 @@ constexpr bool is_backlight_colour(std::uint8_t b) noexcept { return b >= 0x01 &
         case set_startup_show::code: break;
         default: return errc::unknown_command;
     }
-    if (b[2] != 0) return errc::reserved_not_zero;
+    if (b[3] != 0 || (!two_parameters && b[2] != 0)) return errc::reserved_not_zero;
+    if (b[0] == set_led_state::code) {
+        if (p1 < 1 || p1 > key_count(m) || !detail::is_led_state(b[2]))
+            return errc::value_out_of_range;
+        return command{set_led_state{key::make(p1).value(), static_cast<led_state>(b[2])}};
+    }
+    if (b[0] == set_periodic_transmission::code) {
+        const auto on = detail::bool_of(p1);
+        if (!on) return on.error();
+        return command{set_periodic_transmission{*on, b[2]}};
+    }
     const auto lv = level::make(p1);
     const auto on = detail::bool_of(p1);
     switch (b[0]) {
