@@ -195,6 +195,60 @@ constexpr bool edges_round_trip() {
 }
 static_assert(edges_round_trip());
 
+// Each erratum of docs/errata.md (## PK1000) and the behaviour chosen: errc{} = the frame decodes
+// (its meaning is pinned in pk1000_rows.hpp), otherwise the error the decoder returns.
+struct erratum_check {
+    std::string_view id;
+    std::string_view frame;
+    errc error;
+};
+constexpr erratum_check errata[] = {
+    {"E-PK-1", "215#0102040880402010", errc::reserved_not_zero},
+    {"E-PK-1", "215#0102040880402000", errc{}},
+    {"E-PK-2", "595#4F03200304000000", errc{}},
+    {"E-PK-3", "615#2F03200600160000", errc::reserved_not_zero},
+    {"E-PK-3", "595#4F03200600160000", errc::reserved_not_zero},
+    {"E-PK-3", "615#2F03200616000000", errc{}},
+    {"E-PK-4", "595#4311100100000000", errc{}},
+    {"E-PK-5", "595#4301160120020220", errc{}},
+    {"E-PK-6", "595#4300100091010B00", errc{}},
+    {"E-PK-7", "595#4300100091010B00", errc{}},
+    {"E-PK-8", "615#2B171000FFFF0000", errc{}},
+    {"E-PK-8", "615#2B171000FFFE0000", errc{}},
+    {"E-PK-9", "615#2F011402F0000000", errc{}},
+    {"E-PK-9", "615#2F011402FE000000", errc{}},
+    {"E-PK-9", "615#2F011402F1000000", errc::value_out_of_range},
+    {"E-PK-9", "615#2F011402FD000000", errc::value_out_of_range},
+    {"E-PK-10", "615#2BFF200101", errc::wrong_length},
+    {"E-PK-10", "615#2BFF200101000000", errc{}},
+    {"E-PK-11", "615#2F00180532000000", errc::size_mismatch},
+    {"E-PK-11", "615#2B00180532000000", errc{}},
+    {"E-CORE-1", "595#0046464646464646", errc{}},
+    {"E-PK-12", "195#0100", errc::wrong_length},
+    {"E-PK-12", "195#010000002A", errc{}},
+    {"E-PK-13", "615#2BFF200100000000", errc{}},
+    {"E-PK-13", "615#40FF200100000000", errc{}},
+};
+
+constexpr std::size_t first_bad_erratum() {
+    for (std::size_t i = 0; i < std::size(errata); ++i) {
+        const auto r = decode(frame_of(errata[i].frame), node);
+        if (errata[i].error == errc{} ? !r.has_value() : r != errata[i].error) return i;
+    }
+    return std::size(errata);
+}
+static_assert(first_bad_erratum() == std::size(errata));
+
+// E-PK-8: 1017h takes the full 16-bit range, as 1016h and CiA 301 do, not the 65279 ms printed.
+static_assert(decode(can::candump("615#2B171000FFFF0000"), node) ==
+              result<message>{set_request<producer_heartbeat_value>{{true, 0xFFFF}}});
+// E-PK-6 and E-PK-7: the bytes say profile 401 (0191h) and analogue output implemented.
+static_assert(decode(can::candump("595#4300100091010B00"), node) ==
+              result<message>{value_reply<device_type_value>{{401, true, true, false, true}}});
+// E-PK-5: the reply labelled sub-index 01h is decoded as sub-index 01h.
+static_assert(decode(can::candump("595#4301160120020220"), node) ==
+              result<message>{
+                  value_reply<pdo_mapping_value>{{mapping_entry::rpdo2_1, 0x2002, 2, 0x20}}});
 }  // namespace
 
 TEST_CASE("pk1000: every manual row encodes to its printed frame and decodes to its meaning") {
@@ -258,4 +312,17 @@ TEST_CASE("pk1000: node change, E-PK-3 and E-PK-2 decisions") {
     const auto* v = std::get_if<value_reply<colour_value>>(&*colour);
     REQUIRE(v != nullptr);
     CHECK(v->value.colour == backlight_colour::yellow);
+}
+
+TEST_CASE("pk1000: errata decisions (docs/errata.md, ## PK1000)") {
+    for (const auto& e : errata) {
+        CAPTURE(e.id);
+        CAPTURE(e.frame);
+        const auto r = decode(frame_of(e.frame), node);
+        if (e.error == errc{}) {
+            CHECK(r.has_value());
+        } else {
+            CHECK(to_string(r.error()) == to_string(e.error));
+        }
+    }
 }
