@@ -195,7 +195,8 @@ constexpr bool kinds_ok(std::index_sequence<I...>) noexcept {
         for (std::size_t j = 0; j < i; ++j)
             if (kinds[i] == kinds[j]) return false;
     std::size_t prefixed = 0;
-    for (auto k : kinds) if (k.starts_with("pkp_")) ++prefixed;
+    for (auto k : kinds)
+        if (k.starts_with("pkp_")) ++prefixed;
     return prefixed == sizeof...(I) - 8;  // the 8 core messages are not prefixed
 }
 static_assert(kinds_ok(std::make_index_sequence<std::variant_size_v<pkp::message>>{}));
@@ -289,10 +290,29 @@ TEST_CASE("PKP errata: the manual's frames pin the chosen behaviour") {
     // E-PKP-6: sub-index 0 values are kept as printed (6302h has 4 entries but answers 2).
     CHECK(pkp::decode(can::candump("595#4F02630002000000"), node, model::pkp2200).value() ==
           pkp::message{pkp::read_response{pkp::object::key_led_count_count, 2}});
-    // E-PKP-7: the 2600 has 12 keys but the manual's only 2600 rows are 13a; PKP-2600 6001h
-    // carries red and green only (reference): byte 7 would be blue 1..8 by the rule, refused.
+    // E-PKP-7: heartbeat 0 is off; 1..9 ms are below the minimum, both ways.
+    CHECK(pkp::decode(can::candump("615#2B17100000000000"), node, model::pkp2400).value() ==
+          pkp::message{pkp::write_request{pkp::object::heartbeat_time, 0}});
+    CHECK(pkp::decode(can::candump("615#2B17100009000000"), node, model::pkp2400) ==
+          errc::value_out_of_range);
+    CHECK(pkp::encode(node, model::pkp2400, pkp::write_request{pkp::object::heartbeat_time, 9}) ==
+          errc::value_out_of_range);
+    // E-PKP-8: PKP-2600 keys 9..12 in key-state byte 1; 6001h carries red and green only, so
+    // data byte 7 (blue 1..8 by the rule) is refused and blue does not encode.
+    CHECK(pkp::decode(can::candump("195#000F000000"), node, model::pkp2600).value() ==
+          pkp::message{pkp::key_state{pkp_rows::span(9, 12), 0}});
     CHECK(pkp::decode(can::candump("615#23016000000000FF"), node, model::pkp2600) ==
           errc::reserved_not_zero);
+    CHECK(pkp::encode(node, model::pkp2600,
+                      pkp::write_led_on{pkp_rows::rgb({}, {}, pkp_rows::keys({1}))}) ==
+          errc::value_out_of_range);
+    // E-PKP-9 (E-CORE-3): the 6100h sub 2 reply 40h decodes as printed, size not indicated, and
+    // re-encodes unchanged.
+    const auto f = can::candump("595#4000610208000000");
+    const auto d = pkp::decode(f, node, model::pkp2400);
+    REQUIRE(d.has_value());
+    CHECK(d.value() == pkp::message{canopen::sdo_upload_initiate_response{{0x6100, 2}, false, 8}});
+    CHECK(pkp::encode(node, model::pkp2400, *d).value() == f);
 }
 
 TEST_CASE("PKP: node id change moves the session to the new COB-IDs") {

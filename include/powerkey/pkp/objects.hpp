@@ -1,6 +1,6 @@
 // powerkey PKP: the object dictionary of the PKP manual (sections 13-32) as one table, and the SDO
 // messages that read and write it. Each entry says its index and sub-index, what its value is,
-// the expedited size the keypad uses (as printed in the manual; see E-PKP-7), whether it can be
+// the expedited size the keypad uses (as printed in the manual; see E-PKP-5), whether it can be
 // read and written, and its range.
 #ifndef POWERKEY_PKP_OBJECTS_HPP
 #define POWERKEY_PKP_OBJECTS_HPP
