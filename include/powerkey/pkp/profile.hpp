@@ -58,12 +58,14 @@ constexpr result<message> decode_request(const can::frame& f, canopen::node_id n
         return message{sdo_abort_request{a->address, a->code}};
     if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
         const auto o = find_object(u->address);
-        if (!o || !info(*o)->readable) return errc::unknown_object;
+        if (!o) return errc::unknown_object;
+        if (!info(*o)->readable) return errc::unknown_command;
         return message{read_request{*o}};
     }
     const auto& d = std::get<canopen::sdo_download_request>(*r);
     const auto o = find_object(d.address);
-    if (!o || !info(*o)->writable) return errc::unknown_object;
+    if (!o) return errc::unknown_object;
+    if (!info(*o)->writable) return errc::unknown_command;
     const auto& i = *info(*o);
     switch (i.type) {
         case value_type::commands: {
@@ -94,7 +96,8 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
     if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) return message{*a};
     if (const auto* w = std::get_if<canopen::sdo_download_response>(&*r)) {
         const auto o = find_object(w->address);
-        if (!o || !info(*o)->writable) return errc::unknown_object;
+        if (!o) return errc::unknown_object;
+        if (!info(*o)->writable) return errc::unknown_command;
         return message{write_response{*o}};
     }
     if (const auto* s = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
@@ -104,8 +107,8 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
     }
     const auto& u = std::get<canopen::sdo_upload_response>(*r);
     const auto o = find_object(u.address);
-    if (!o || !info(*o)->readable || info(*o)->type == value_type::string)
-        return errc::unknown_object;
+    if (!o || info(*o)->type == value_type::string) return errc::unknown_object;
+    if (!info(*o)->readable) return errc::unknown_command;
     const auto& i = *info(*o);
     if (i.type == value_type::keys || i.type == value_type::led_map) {
         if (u.value.size.value() != 4) return errc::size_mismatch;
@@ -129,10 +132,13 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
 // Any frame of a PKP keypad of model m at `node`. Errors:
 //   wrong_id_format  a 29-bit identifier
 //   wrong_id         an identifier of another node, or of a function the keypad does not use
-//   wrong_length, unknown_command, reserved_not_zero, value_out_of_range
+//   wrong_length, reserved_not_zero, value_out_of_range
 //                    from the message's decoder (NMT, heartbeat, PDOs, SDO, command module)
-//   unknown_object   an SDO for an index/sub-index the profile does not define, or an access
-//                    the entry does not have (a write to a read-only entry, a read of 6500h)
+//   unknown_command  an NMT or SDO specifier the keypad does not use, a 6500h command byte it
+//                    does not define, an access the entry does not have (a write to a read-only
+//                    entry or its acknowledgement, a read of 6500h)
+//   unknown_object   an SDO for an index/sub-index the profile does not define; an expedited
+//                    reply for a string entry or a segmented one for a number entry
 //   size_mismatch    an expedited SDO whose size is not the entry's
 [[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node,
                                                model m) noexcept {
@@ -216,26 +222,29 @@ constexpr result<can::frame> encode_one(node_id n, model m, const V& v) noexcept
 }
 constexpr result<can::frame> encode_one(node_id n, model, const read_request& v) noexcept {
     const auto* i = info(v.entry);
-    if (!i || !i->readable) return errc::unknown_object;
+    if (!i) return errc::unknown_object;
+    if (!i->readable) return errc::unknown_command;
     return canopen::encode(n, canopen::sdo_upload_request{i->address});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const read_response& v) noexcept {
     const auto* i = info(v.entry);
-    if (!i || !i->readable || i->type != value_type::number) return errc::unknown_object;
+    if (!i || i->type != value_type::number) return errc::unknown_object;
     if (!in_range(*i, v.value)) return errc::value_out_of_range;
     return canopen::encode(
         n, canopen::sdo_upload_response{i->address, number_bytes(i->size, v.value)});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const write_request& v) noexcept {
     const auto* i = info(v.entry);
-    if (!i || !i->writable || i->type != value_type::number) return errc::unknown_object;
+    if (!i || i->type != value_type::number) return errc::unknown_object;
+    if (!i->writable) return errc::unknown_command;
     if (!in_range(*i, v.value)) return errc::value_out_of_range;
     return canopen::encode(
         n, canopen::sdo_download_request{i->address, number_bytes(i->size, v.value)});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const write_response& v) noexcept {
     const auto* i = info(v.entry);
-    if (!i || !i->writable) return errc::unknown_object;
+    if (!i) return errc::unknown_object;
+    if (!i->writable) return errc::unknown_command;
     return canopen::encode(n, canopen::sdo_download_response{i->address});
 }
 constexpr result<can::frame> encode_one(node_id n, model m, const keys_response& v) noexcept {
@@ -278,7 +287,9 @@ constexpr result<can::frame> encode_one(node_id n, model m, const V& v) noexcept
 
 // The frame of a message for a keypad of model m at `node`. Errors: value_out_of_range (a key,
 // LED or value the model or entry does not have, e.g. blue LEDs in 6001h on a PKP-2600),
-// unknown_object (an access the entry does not have, e.g. read_response of a string entry).
+// unknown_command (an access the entry does not have: a write of a read-only entry, a read of
+// 6500h), unknown_object (a message of the wrong shape for its entry, e.g. a number reply for a
+// string entry).
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
     if (key_count(m) == 0) return errc::value_out_of_range;
