@@ -50,17 +50,18 @@ constexpr step_row pkp_node_change[] = {
     {"718#00", sdo_pairing::none, 0x18, true, 0},
 };
 static_assert(follows(model::pkp2400, pkp_node_change));
-// The same frames mean nothing special to a PK1000, which has no command module.
+// The same frames mean nothing to a PK1000, which has no object 6500h (unknown_object), and
+// move nothing; they are still an SDO exchange.
 constexpr step_row pkp_frames_on_pk1000[] = {
-    {"615#2300650170180000", sdo_pairing::request, 0x15, true, 0},
-    {"595#6000650100000000", sdo_pairing::reply, 0x15, true, 0},
+    {"615#2300650170180000", sdo_pairing::request, 0x15, false, 0},
+    {"595#6000650100000000", sdo_pairing::reply, 0x15, false, 0},
     {"718#00", sdo_pairing::none, 0x15, false, 0},
 };
 static_assert(follows(model::pk1000, pkp_frames_on_pk1000));
 
 // A refused node change: the keypad aborts from the old id and stays there.
 constexpr step_row pk1000_refused[] = {
-    {"615#2F13200080000000", sdo_pairing::request, 0x15, true, 0},  // 80h is no node id
+    {"615#2F13200080000000", sdo_pairing::request, 0x15, false, 0},  // 80h is no node id
     {"595#8013200030000906", sdo_pairing::reply, 0x15, true, 0},
     {"615#2F1320003A000000", sdo_pairing::request, 0x15, true, 0x3A},
     {"595#8013200030000906", sdo_pairing::reply, 0x15, true, 0x15},

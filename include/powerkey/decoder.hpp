@@ -19,6 +19,7 @@
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/pk1000/profile.hpp>
 #include <powerkey/pkp/profile.hpp>
 #include <powerkey/result.hpp>
 
@@ -243,8 +244,8 @@ using message =
     }
 }
 
-// A message of any model: the PK1000 speaks the core messages until its profile lands.
-using message = std::variant<core::message, pkp::message>;
+// A message of any model: the PK1000 profile's or the PKP profile's.
+using message = std::variant<pk1000::message, pkp::message>;
 
 // Any frame of keypad `node` of model `m`. Errors: wrong_id (a frame of another node, or of a
 // function no keypad uses), wrong_id_format (a 29-bit frame for a keypad without J1939), and
@@ -256,7 +257,7 @@ using message = std::variant<core::message, pkp::message>;
         if (!r) return r.error();
         return message{*r};
     }
-    const auto r = core::decode(f, node);
+    const auto r = pk1000::decode(f, node);
     if (!r) return r.error();
     return message{*r};
 }
@@ -266,9 +267,9 @@ using message = std::variant<core::message, pkp::message>;
 // model lacks: value_out_of_range).
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
-    if (const auto* c = std::get_if<core::message>(&msg)) {
+    if (const auto* c = std::get_if<pk1000::message>(&msg)) {
         if (pkp_model(m)) return errc::unknown_command;
-        return core::encode(node, *c);
+        return pk1000::encode(node, *c);
     }
     const auto pm = pkp_model(m);
     if (!pm) return errc::unknown_command;

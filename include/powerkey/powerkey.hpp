@@ -3,9 +3,13 @@
 #define POWERKEY_POWERKEY_HPP
 
 #include <powerkey/bounded.hpp>
+#include <powerkey/decoder.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/error.hpp>
+#include <powerkey/fields.hpp>
 #include <powerkey/index_set.hpp>
 #include <powerkey/result.hpp>
+#include <powerkey/session.hpp>
 #include <powerkey/version.hpp>
 
 #include <powerkey/can/candump.hpp>

@@ -1,0 +1,87 @@
+// Writes the sample bus logs of examples/logs/ from the manual rows of the test suite
+// (tests/pk1000_rows.hpp, tests/pkp_rows.hpp), one log per model, in the manuals' order:
+//   sample_logs pk1000 > examples/logs/pk1000.log
+// Each frame is a candump -l line with a made-up timestamp, 10 ms apart. The manuals show some
+// frames for another node id (after a node-id change); where the next row is for another node
+// than the keypad has at that point, the log moves the keypad there with the model's own node-id
+// command, marked "not in the manual", so that the log reads as one session.
+#include "../tests/pk1000_rows.hpp"
+#include "../tests/pkp_rows.hpp"
+
+#include <powerkey/can/candump.hpp>
+#include <powerkey/session.hpp>
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+
+struct writer {
+    model keypad;
+    session<256> s;
+    long tick = 0;
+    std::string_view last_section;
+
+    void frame(const can::frame& f) {
+        (void)s.step(f);
+        const auto t = can::format_candump(f);
+        std::printf("(%ld.%06ld) can0 %.*s\n", 1700000000L + tick / 100, (tick % 100) * 10000L,
+                    static_cast<int>(t.view().size()), t.view().data());
+        ++tick;
+    }
+    void text(std::string_view candump) { frame(can::parse_candump(candump).value()); }
+
+    // Moves the keypad to `target` the way its profile does it.
+    void move_to(canopen::node_id target) {
+        const auto from = s.node();
+        std::printf("# (not in the manual) node id %02Xh -> %02Xh\n", from.value(), target.value());
+        const std::uint8_t t = target.value();
+        if (keypad == model::pk1000) {
+            frame(canopen::encode(
+                from, canopen::sdo_download_request{{0x2013, 0}, canopen::expedited_data::u8(t)}));
+            frame(canopen::encode(target, canopen::sdo_download_response{{0x2013, 0}}));
+        } else {
+            frame(canopen::encode(
+                from, canopen::sdo_download_request{{0x6500, 1}, {4, {0x70, t, 0, 0}}}));
+            frame(canopen::encode(from, canopen::sdo_download_response{{0x6500, 1}}));
+            frame(canopen::encode(target, canopen::heartbeat_message{}));
+        }
+    }
+
+    void row(std::string_view section, std::uint8_t node, std::string_view candump) {
+        if (section != last_section) {
+            std::printf("# %.*s\n", static_cast<int>(section.size()), section.data());
+            last_section = section;
+        }
+        const auto n = canopen::node_id::make(node).value();
+        if (n != s.node()) move_to(n);
+        text(candump);
+    }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2 || !parse_model(argv[1])) {
+        std::fputs("usage: sample_logs pk1000|pkp2200|pkp2400|pkp2600\n", stderr);
+        return 2;
+    }
+    const model m = *parse_model(argv[1]);
+    writer w{m, session<256>(m, canopen::default_node_id), 0, {}};
+    std::printf("# powerkey sample log: %s, node 15h, every example frame of the manual in order\n",
+                argv[1]);
+    if (m == model::pk1000) {
+        std::printf("# from PK1000_CANopen_UM_rev1.13 (tests/pk1000_rows.hpp)\n");
+        for (const auto& r : pk1000_rows::rows) w.row(r.section, r.node.value(), r.frame);
+    } else {
+        std::printf(
+            "# from PKP-2200-2400-LI_CANopen_UM_rev1.1 and reference/pkp-2600.md "
+            "(tests/pkp_rows.hpp)\n");
+        const auto pm = *pkp_model(m);
+        for (const auto& r : pkp_rows::rows)
+            if (pkp_rows::applies(r.models, pm)) w.row(r.section, r.node, r.frame);
+    }
+    if (w.s.node() != canopen::default_node_id) w.move_to(canopen::default_node_id);
+}

@@ -1,0 +1,100 @@
+// powerkey tool: `decode --show` draws the keypad after every frame that changes it: each key
+// with its LED colour (ANSI colours on a terminal, letters otherwise) and pressed keys marked.
+// It reads the messages through their fields: `keys` of a key-state message, and `red`, `green`,
+// `blue` of the LED on / blink messages, so it follows whatever the profiles name that way.
+#ifndef POWERKEY_TOOL_SHOW_HPP
+#define POWERKEY_TOOL_SHOW_HPP
+
+#include <powerkey/decoder.hpp>
+#include <powerkey/fields.hpp>
+
+#include <unistd.h>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+namespace tool {
+
+class keypad_picture {
+public:
+    explicit keypad_picture(powerkey::model m)
+        : keys_(m == powerkey::model::pk1000    ? 10
+                : m == powerkey::model::pkp2200 ? 4
+                : m == powerkey::model::pkp2400 ? 8
+                                                : 12),
+          leds_(m == powerkey::model::pk1000 ? 28 : keys_),
+          ansi_(isatty(1) != 0) {}
+
+    // Takes in a decoded message; true when the picture changed.
+    template <class M>
+    bool update(const M& msg) {
+        const std::string_view kind = powerkey::kind_of(msg);
+        const bool is_keys = kind.find("key_state") != std::string_view::npos ||
+                             kind.find("keys_response") != std::string_view::npos ||
+                             kind.ends_with("_keys");
+        const bool is_on = kind.ends_with("led_on") || kind.ends_with("led_on_response");
+        const bool is_blink = kind.ends_with("led_blink") || kind.ends_with("led_blink_response");
+        if (!is_keys && !is_on && !is_blink) return false;
+        const auto before = state_;
+        powerkey::for_each_field(msg, [&](std::string_view name, const auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (powerkey::is_index_set<T>::value) {
+                if (is_keys && (name == "keys" || name == "pressed")) state_.keys = v.mask();
+                const int plane = name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : -1;
+                if (plane >= 0 && is_on) state_.on[plane] = v.mask();
+                if (plane >= 0 && is_blink) state_.blink[plane] = v.mask();
+            }
+        });
+        return !(before == state_);
+    }
+
+    [[nodiscard]] std::string draw() const {
+        std::string s = "    ";
+        for (unsigned i = 0; i < leds_; ++i) {
+            const unsigned planes =
+                bit(state_.on[0], i) | (bit(state_.on[1], i) << 1) | (bit(state_.on[2], i) << 2);
+            const unsigned blink = bit(state_.blink[0], i) | (bit(state_.blink[1], i) << 1) |
+                                   (bit(state_.blink[2], i) << 2);
+            const bool pressed = i < keys_ && bit(state_.keys, i) != 0;
+            const std::string label = (i + 1 < 10 ? " " : "") + std::to_string(i + 1);
+            if (ansi_) {
+                static constexpr int bg[8] = {0, 41, 42, 43, 44, 45, 46, 47};
+                const unsigned shown = planes | blink;
+                s += "\x1b[";
+                s += shown ? std::to_string(bg[shown]) : std::string("100");
+                if (blink) s += ";5";
+                if (pressed) s += ";7";
+                s += "m" + label + (pressed ? "*" : " ") + "\x1b[0m ";
+            } else {
+                static constexpr char name[8] = {'.', 'R', 'G', 'Y', 'B', 'M', 'C', 'W'};
+                const unsigned shown = planes | blink;
+                char c = name[shown];
+                if (blink && c != '.') c = static_cast<char>(c - 'A' + 'a');
+                s += "[" + label + (pressed ? "*" : " ") + c + "]";
+            }
+        }
+        s += "\n";
+        return s;
+    }
+
+private:
+    static unsigned bit(std::uint64_t m, unsigned i) {
+        return static_cast<unsigned>((m >> i) & 1u);
+    }
+
+    struct state {
+        std::uint64_t keys = 0;
+        std::uint64_t on[3] = {0, 0, 0};
+        std::uint64_t blink[3] = {0, 0, 0};
+        bool operator==(const state&) const = default;
+    };
+    unsigned keys_;
+    unsigned leds_;
+    bool ansi_;
+    state state_;
+};
+
+}  // namespace tool
+
+#endif
