@@ -4,6 +4,7 @@
 #define POWERKEY_BENCH_ALL_OPS_HPP
 
 #include "ops.hpp"
+#include "ops_pk1000.hpp"
 #include "ops_pkp.hpp"
 
 #include <array>
@@ -12,8 +13,9 @@
 
 namespace bench {
 
-inline constexpr std::array<std::span<const op>, 2> op_groups = {
+inline constexpr std::array<std::span<const op>, 3> op_groups = {
     std::span<const op>(core_ops),
+    std::span<const op>(pk1000_ops),
     std::span<const op>(pkp_ops),
 };
 

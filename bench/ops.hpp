@@ -160,6 +160,16 @@ inline constexpr std::array upload_cases = {
                 {candump("595#410810000B000000"), candump("595#00426C696E6B4D61"),
                  candump("595#1772696E65000000")}}};
 
+namespace detail {
+// True when every input decodes: no benchmark may silently measure an error path.
+template <class Frames, class Decode>
+constexpr bool all_decode(const Frames& frames, Decode d) {
+    for (const auto& f : frames)
+        if (!d(f).has_value()) return false;
+    return true;
+}
+}  // namespace detail
+
 // --- the operations -------------------------------------------------------------------------
 
 inline void floor_read(std::size_t calls) {

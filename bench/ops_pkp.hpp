@@ -145,12 +145,6 @@ inline constexpr std::array mixed_log = {
 };
 
 namespace detail {
-template <class Frames, class Decode>
-constexpr bool all_decode(const Frames& frames, Decode d) {
-    for (const auto& f : frames)
-        if (!d(f).has_value()) return false;
-    return true;
-}
 constexpr auto pkp_decode = [](const pc::frame& f) { return pkp::decode(f, node, pkp_model); };
 }  // namespace detail
 

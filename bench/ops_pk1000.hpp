@@ -1,0 +1,255 @@
+// PK1000 profile operations at node 15h. The inputs are the manual's own rows (tests/
+// pk1000_rows.hpp, shared with the test suite), picked by family at compile time, so every row the
+// manual prints for a family is measured and every input is known to decode.
+#ifndef POWERKEY_BENCH_OPS_PK1000_HPP
+#define POWERKEY_BENCH_OPS_PK1000_HPP
+
+#include <powerkey/decoder.hpp>
+#include <powerkey/pk1000/pdo.hpp>
+#include <powerkey/pk1000/profile.hpp>
+
+#include <array>
+#include <cstddef>
+
+#include "../tests/pk1000_rows.hpp"
+#include "ops.hpp"
+
+namespace bench {
+
+namespace pk = powerkey::pk1000;
+
+namespace detail {
+constexpr pc::frame frame_of(const pk1000_rows::row& r) {
+    return pc::parse_candump(r.frame).value();
+}
+
+// Rows of keypad 15h whose frame has function `fn` and, for SDOs, an expedited specifier.
+template <co::function Fn>
+constexpr bool in_family(const pk1000_rows::row& r) {
+    if (r.node != node) return false;
+    const auto f = pc::parse_candump(r.frame);
+    if (!f || co::classify(*f).fn != Fn) return false;
+    if constexpr (Fn == co::function::sdo_rx) {
+        const auto c = (*f)[0];
+        return c == 0x23 || c == 0x27 || c == 0x2B || c == 0x2F || c == 0x40;
+    } else if constexpr (Fn == co::function::sdo_tx) {
+        const auto c = (*f)[0];
+        return c == 0x43 || c == 0x47 || c == 0x4B || c == 0x4F || c == 0x60;
+    }
+    return true;
+}
+template <co::function Fn>
+constexpr std::size_t family_size() {
+    std::size_t n = 0;
+    for (const auto& r : pk1000_rows::rows)
+        if (in_family<Fn>(r)) ++n;
+    return n;
+}
+template <co::function Fn>
+constexpr auto family_frames() {
+    std::array<pc::frame, family_size<Fn>()> a{};
+    std::size_t i = 0;
+    for (const auto& r : pk1000_rows::rows)
+        if (in_family<Fn>(r)) a[i++] = frame_of(r);
+    return a;
+}
+template <co::function Fn>
+constexpr auto family_messages() {
+    std::array<pk::message, family_size<Fn>()> a{};
+    std::size_t i = 0;
+    for (const auto& r : pk1000_rows::rows)
+        if (in_family<Fn>(r)) a[i++] = r.expected;
+    return a;
+}
+template <class T, co::function Fn>
+constexpr auto family_alternative() {
+    std::array<T, family_size<Fn>()> a{};
+    std::size_t i = 0;
+    for (const auto& r : pk1000_rows::rows)
+        if (in_family<Fn>(r)) a[i++] = std::get<T>(r.expected);
+    return a;
+}
+}  // namespace detail
+
+inline constexpr auto pk_key_frames = detail::family_frames<co::function::tpdo1>();
+inline constexpr auto pk_key_messages =
+    detail::family_alternative<pk::key_state, co::function::tpdo1>();
+inline constexpr auto pk_led_on_frames = detail::family_frames<co::function::rpdo1>();
+inline constexpr auto pk_led_on_messages =
+    detail::family_alternative<pk::led_on, co::function::rpdo1>();
+inline constexpr auto pk_led_blink_frames = detail::family_frames<co::function::rpdo2>();
+inline constexpr auto pk_backlight_frames = detail::family_frames<co::function::rpdo4>();
+inline constexpr auto pk_backlight_messages =
+    detail::family_alternative<pk::backlight, co::function::rpdo4>();
+inline constexpr auto pk_sdo_request_frames = detail::family_frames<co::function::sdo_rx>();
+inline constexpr auto pk_sdo_request_messages = detail::family_messages<co::function::sdo_rx>();
+inline constexpr auto pk_sdo_response_frames = detail::family_frames<co::function::sdo_tx>();
+inline constexpr auto pk_sdo_response_messages = detail::family_messages<co::function::sdo_tx>();
+
+inline constexpr auto pk_all_rows = [] {
+    std::array<pc::frame, std::size(pk1000_rows::rows)> a{};
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = detail::frame_of(pk1000_rows::rows[i]);
+    return a;
+}();
+
+// The PK1000 counterpart of the PKP mixed log: key-state and LED PDOs, brightness and backlight,
+// heartbeat, SYNC, configuration SDOs with replies, and other devices' traffic.
+inline constexpr std::array pk_mixed_log = {
+    candump("000#0115"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+    candump("195#010000002A"),
+    candump("196#0100000000"),
+    candump("315#0200000000000000"),
+    candump("195#000000002B"),
+    candump("080#"),
+    candump("215#0500000000000000"),
+    candump("195#090000002C"),
+    candump("716#05"),
+    candump("215#0000000000200000"),
+    candump("615#4000200100000000"),
+    candump("595#4B00200101000000"),
+    candump("195#000100002D"),
+    candump("18FEF100#FFFFFFFFFFFFFFFF"),
+    candump("715#05"),
+    candump("215#0000010000000008"),
+    candump("195#000000002E"),
+    candump("315#0500000000000000"),
+    candump("080#"),
+    candump("195#010000002F"),
+    candump("216#0100000000000000"),
+    candump("215#0000000000000000"),
+    candump("195#0000000030"),
+    candump("715#05"),
+    candump("415#0800000000000000"),
+    candump("515#2003000000000000"),
+    candump("195#0800000031"),
+    candump("215#0102040880402000"),
+    candump("195#0000000032"),
+    candump("080#"),
+    candump("315#0000010000000008"),
+    candump("195#0002000033"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+    candump("195#0000000034"),
+    candump("196#0000000000"),
+    candump("415#1000000000000000"),
+    candump("515#0000000000000000"),
+    candump("195#0100000035"),
+    candump("215#0500000000000000"),
+    candump("080#"),
+    candump("195#0000000036"),
+    candump("715#05"),
+    candump("315#0200000000000000"),
+    candump("195#0900000037"),
+    candump("215#0000000000200000"),
+    candump("716#05"),
+    candump("195#0000000038"),
+    candump("215#0000000000000000"),
+    candump("615#4000200100000000"),
+    candump("595#4B00200100000000"),
+    candump("195#0100000039"),
+    candump("080#"),
+    candump("715#05"),
+    candump("195#000000003A"),
+    candump("215#0500000000000000"),
+    candump("315#0000000000000000"),
+    candump("195#080000003B"),
+    candump("18FEF100#FFFFFFFFFFFFFFFF"),
+    candump("195#000000003C"),
+    candump("715#05"),
+    candump("215#0100000000000000"),
+};
+
+namespace detail {
+constexpr auto pk_decode = [](const pc::frame& f) { return pk::decode(f, node); };
+}  // namespace detail
+static_assert(detail::all_decode(pk_key_frames, detail::pk_decode) && pk_key_frames.size() >= 6);
+static_assert(detail::all_decode(pk_led_on_frames, detail::pk_decode));
+static_assert(detail::all_decode(pk_sdo_request_frames, detail::pk_decode));
+static_assert(detail::all_decode(pk_sdo_response_frames, detail::pk_decode));
+
+// 57 of the 64 frames are the keypad's; the J1939 frames and those of node 16h are refused.
+inline constexpr std::size_t pk_mixed_log_keypad_frames = [] {
+    std::size_t n = 0;
+    for (const auto& f : pk_mixed_log)
+        if (pk::decode(f, node).has_value()) ++n;
+    return n;
+}();
+static_assert(pk_mixed_log_keypad_frames == pk_mixed_log.size() - 7);
+
+inline void pk_key_state_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_key_frames, calls, [n](const pc::frame& f) { return pk::decode_key_state(f, n); });
+}
+inline void pk_key_state_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_key_messages, calls, [n](const pk::key_state& m) { return pk::encode(n, m); });
+}
+inline void pk_led_on_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_led_on_frames, calls, [n](const pc::frame& f) { return pk::decode_led_on(f, n); });
+}
+inline void pk_led_on_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_led_on_messages, calls, [n](const pk::led_on& m) { return pk::encode(n, m); });
+}
+inline void pk_led_blink_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_led_blink_frames, calls,
+          [n](const pc::frame& f) { return pk::decode_led_blink(f, n); });
+}
+inline void pk_backlight_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_backlight_frames, calls,
+          [n](const pc::frame& f) { return pk::decode_backlight(f, n); });
+}
+inline void pk_backlight_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_backlight_messages, calls, [n](const pk::backlight& m) { return pk::encode(n, m); });
+}
+inline void pk_sdo_request_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_sdo_request_frames, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
+}
+inline void pk_sdo_response_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_sdo_response_frames, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
+}
+inline void pk_sdo_request_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_sdo_request_messages, calls, [n](const pk::message& m) { return pk::encode(n, m); });
+}
+inline void pk_sdo_response_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_sdo_response_messages, calls, [n](const pk::message& m) { return pk::encode(n, m); });
+}
+inline void pk_decode_all_rows(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_all_rows, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
+}
+inline void any_pk1000_decode_mixed_log(std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(powerkey::model::pk1000);
+    cycle(pk_mixed_log, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+}
+
+inline constexpr op pk1000_ops[] = {
+    {"pk1000/key_state/decode", pk_key_state_decode},
+    {"pk1000/key_state/encode", pk_key_state_encode},
+    {"pk1000/led_on/decode", pk_led_on_decode},
+    {"pk1000/led_on/encode", pk_led_on_encode},
+    {"pk1000/led_blink/decode", pk_led_blink_decode},
+    {"pk1000/backlight/decode", pk_backlight_decode},
+    {"pk1000/backlight/encode", pk_backlight_encode},
+    {"pk1000/sdo/decode_request", pk_sdo_request_decode},
+    {"pk1000/sdo/decode_response", pk_sdo_response_decode},
+    {"pk1000/sdo/encode_request", pk_sdo_request_encode},
+    {"pk1000/sdo/encode_response", pk_sdo_response_encode},
+    {"pk1000/decode/all_manual_rows", pk_decode_all_rows},
+    {"any/pk1000/decode_mixed_log", any_pk1000_decode_mixed_log},
+};
+
+}  // namespace bench
+
+#endif  // POWERKEY_BENCH_OPS_PK1000_HPP
