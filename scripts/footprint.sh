@@ -107,8 +107,16 @@ def resolve(t):
             return k
     return t
 
+# An indirect call (GCC's __indirect_call node) is, in this library, std::visit calling through
+# its table: its targets are the __gen_vtable_impl entries. Any of them may be called, so the
+# bound takes the worst; with no such entry every function is a possible target (still a bound).
+visit_entries = [k for k in frame if "__gen_vtable_impl" in k or "__visit_invoke" in k]
+indirect_targets = visit_entries or [k for k in frame if k != "reset_handler"]
+
 memo, cyclic = {}, set()
 def worst(t, stack=()):
+    if t == "__indirect_call":
+        return max([worst(c, stack) for c in indirect_targets if c not in stack] or [0])
     t = resolve(t)
     if t in stack:
         cyclic.add(t)

@@ -37,6 +37,10 @@ using handler = void (*)();
     trap,  // SysTick
 };
 
+// std::get and std::visit reach abort() on a valueless variant (bad_variant_access without
+// exceptions); the library never makes one, but the call is linked in, as in any firmware.
+extern "C" [[noreturn]] void abort() { trap(); }
+
 extern "C" [[noreturn]] void reset_handler() {
     std::uint32_t* src = &_sidata;
     for (std::uint32_t* dst = &_sdata; dst < &_edata;) *dst++ = *src++;
