@@ -64,6 +64,9 @@ constexpr bool every_row() {
 }
 static_assert(every_row());
 static_assert(describes(led_on_like{}, "node 15h  LED on  red: 1 7  green: -  blue: -"));
+// Three or more in a row are a range; two are not.
+static_assert(describes(led_on_like{{1, 2, 3, 5, 6}, {1, 2, 3, 4, 5, 6, 7, 8}, {8}},
+                        "node 15h  LED on  red: 1-3 5 6  green: 1-8  blue: 8"));
 }  // namespace
 
 TEST_CASE("descriptions of the core messages") {

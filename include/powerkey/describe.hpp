@@ -5,8 +5,8 @@
 //
 // The text is generated from the message's kind and fields: the kind without its profile prefix
 // and with spaces for underscores (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field
-// as `name: value`. Values: key and LED sets as their numbers (or -), raw bytes in hex, an SDO
-// index as 4 hex digits and h, enumerators by name, other numbers in decimal.
+// as `name: value`. Values: key and LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex,
+// an SDO index as 4 hex digits and h, enumerators by name, other numbers in decimal.
 #ifndef POWERKEY_DESCRIBE_HPP
 #define POWERKEY_DESCRIBE_HPP
 
@@ -103,9 +103,16 @@ constexpr void put_value(text_writer& w, std::string_view name, const T& v) noex
         bool first = true;
         for (unsigned i = 1; i <= T::max; ++i) {
             if (!v.contains(i)) continue;
+            unsigned last = i;  // three or more in a row print as a range, "1-28"
+            while (last < T::max && v.contains(last + 1)) ++last;
             if (!first) w.put(' ');
             first = false;
             w.put_decimal(i);
+            if (last >= i + 2) {
+                w.put('-');
+                w.put_decimal(last);
+                i = last;
+            }
         }
     } else if constexpr (is_byte_array<T>::value) {
         for (std::size_t i = 0; i < v.size(); ++i) {
