@@ -4,22 +4,27 @@
 # net of the floor (reading the frame plus the loop and the barriers of bench/ops.hpp), and the
 # ratio to the floor.
 # Usage: scripts/callgrind.sh [build-dir] [name-prefix]   (default build dir: build/bench)
+#        ICOUNT=/path/to/powerkey_icount scripts/callgrind.sh   measures a driver built elsewhere
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/bench}
 prefix=${2:-}
 calls=${CALLS:-10000}
-if [ ! -x "$build/bench/powerkey_icount" ]; then
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=${CXX:-g++} \
-    -DPOWERKEY_BUILD_BENCH=ON -DPOWERKEY_BUILD_TESTS=OFF -DPOWERKEY_BUILD_EXAMPLES=OFF >/dev/null
+icount=${ICOUNT:-}
+if [ -z "$icount" ]; then
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=${CXX:-g++} \
+      -DPOWERKEY_BUILD_BENCH=ON -DPOWERKEY_BUILD_TESTS=OFF -DPOWERKEY_BUILD_EXAMPLES=OFF >/dev/null
+  fi
+  cmake --build "$build" -j 2 --target powerkey_icount >/dev/null
+  icount=$build/bench/powerkey_icount
 fi
-cmake --build "$build" -j 2 --target powerkey_icount >/dev/null
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 valgrind --tool=callgrind --collect-atstart=no --dump-instr=no --dump-line=no \
-  --callgrind-out-file="$out/cg.%p" "$build/bench/powerkey_icount" "$calls" "$prefix" \
+  --callgrind-out-file="$out/cg.%p" "$icount" "$calls" "$prefix" \
   >/dev/null 2>"$out/valgrind.log" || { cat "$out/valgrind.log" >&2; exit 1; }
-"$build/bench/powerkey_icount" --list >"$out/list"
+"$icount" --list >"$out/list"
 # Each dump names its operation in "desc: Trigger: Client Request: <name> calls=<n>" and holds
 # the instruction total in its "summary:" (or "totals:") line.
 for f in "$out"/cg.*; do
