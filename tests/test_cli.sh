@@ -64,6 +64,14 @@ grep -q "215#" "$tmp/out" || fail "the file after a missing one was not read"
   cmp -s "$tmp/hex" "$tmp/dec" || fail "--node 0x3A and 58 differ"
 grep -q "error: wrong_id" "$tmp/hex" || fail "a frame of node 15h decoded for node 3Ah"
 
+# --show draws the keypad when the log changes it (letters when not on a terminal).
+printf '%s\n' '195#0100000010' '215#596A740000000000' '315#0100000000000000' > "$tmp/show.log"
+"$pk" decode --model pkp2400 --show "$tmp/show.log" > "$tmp/out" || fail "--show exit status"
+grep -qF '[ 1*.][ 2 .]' "$tmp/out" || fail "--show: key 1 pressed: $(cat "$tmp/out")"
+grep -qF '[ 1*R][ 2 G][ 3 B][ 4 Y][ 5 M][ 6 C][ 7 W][ 8 .]' "$tmp/out" ||
+  fail "--show: one colour per key: $(cat "$tmp/out")"
+grep -qF '[ 1*r]' "$tmp/out" || fail "--show: blinking red: $(cat "$tmp/out")"
+
 # encode from the command line (the issue's examples and manual rows).
 check_encode() {
   local want=$1; shift

@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -57,7 +58,8 @@ public:
             const unsigned blink = bit(state_.blink[0], i) | (bit(state_.blink[1], i) << 1) |
                                    (bit(state_.blink[2], i) << 2);
             const bool pressed = i < keys_ && bit(state_.keys, i) != 0;
-            const std::string label = (i + 1 < 10 ? " " : "") + std::to_string(i + 1);
+            char label[12];
+            std::snprintf(label, sizeof label, "%2u", i + 1);
             if (ansi_) {
                 static constexpr int bg[8] = {0, 41, 42, 43, 44, 45, 46, 47};
                 const unsigned shown = planes | blink;
@@ -65,13 +67,20 @@ public:
                 s += shown ? std::to_string(bg[shown]) : std::string("100");
                 if (blink) s += ";5";
                 if (pressed) s += ";7";
-                s += "m" + label + (pressed ? "*" : " ") + "\x1b[0m ";
+                s += "m";
+                s += label;
+                s += pressed ? "*" : " ";
+                s += "\x1b[0m ";
             } else {
                 static constexpr char name[8] = {'.', 'R', 'G', 'Y', 'B', 'M', 'C', 'W'};
                 const unsigned shown = planes | blink;
                 char c = name[shown];
                 if (blink && c != '.') c = static_cast<char>(c - 'A' + 'a');
-                s += "[" + label + (pressed ? "*" : " ") + c + "]";
+                s += "[";
+                s += label;
+                s += pressed ? '*' : ' ';
+                s += c;
+                s += "]";
             }
         }
         s += "\n";
