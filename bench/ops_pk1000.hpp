@@ -177,6 +177,13 @@ inline constexpr std::size_t pk_mixed_log_keypad_frames = [] {
     return n;
 }();
 static_assert(pk_mixed_log_keypad_frames == pk_mixed_log.size() - 7);
+// The any-frame decoder agrees: the same 57 frames are the PK1000's.
+static_assert([] {
+    std::size_t n = 0;
+    for (const auto& f : pk_mixed_log)
+        if (powerkey::decode(f, node, powerkey::model::pk1000).has_value()) ++n;
+    return n;
+}() == pk_mixed_log_keypad_frames);
 
 inline void pk_key_state_decode(std::size_t calls) {
     const auto n = opaque(node);
