@@ -176,7 +176,7 @@ static_assert(pkp::mode_of(on4, pkp::leds{}, pkp::plane::green, 4) == pkp::led_m
 constexpr bool table_is_consistent() noexcept {
     for (std::size_t i = 0; i < pkp::object_count; ++i) {
         const auto o = static_cast<pkp::object>(i);
-        const auto* in = pkp::info(o);
+        const auto in = pkp::info(o);
         if (!in || pkp::find_object(in->address) != o) return false;  // unique addresses
         if (pkp::to_string(o) == "unknown" || pkp::to_string(o).empty()) return false;
         for (std::size_t j = 0; j < i; ++j)
@@ -184,7 +184,7 @@ constexpr bool table_is_consistent() noexcept {
         if (in->type == pkp::value_type::number && in->size != 1 && in->size != 2 && in->size != 4)
             return false;
     }
-    return pkp::info(static_cast<pkp::object>(pkp::object_count)) == nullptr &&
+    return !pkp::info(static_cast<pkp::object>(pkp::object_count)).has_value() &&
            pkp::to_string(static_cast<pkp::object>(0xFF)) == "unknown";
 }
 static_assert(table_is_consistent());

@@ -365,7 +365,8 @@ constexpr canopen::sdo_download_request command_request(const C& c) noexcept {
 // model lacks).
 [[nodiscard]] constexpr result<canopen::sdo_download_request> command_request(
     model m, const command& c) noexcept {
-    if (const auto* s = std::get_if<set_led_state>(&c); s && s->led.value() > key_count(m))
+    if (std::holds_alternative<set_led_state>(c) &&
+        std::get<set_led_state>(c).led.value() > key_count(m))
         return errc::value_out_of_range;
     return std::visit([](const auto& v) { return detail::command_request(v); }, c);
 }

@@ -270,14 +270,16 @@ static_assert(table_in_enum_order());
 
 inline constexpr std::size_t object_count = std::size(detail::object_table);
 
-// The table row of an object; nullptr for a value outside the enum.
-[[nodiscard]] constexpr const object_info* info(object o) noexcept {
+// The table row of an object; nullopt for a value outside the enum. (A copy, not a pointer: a
+// null test on the address of a static object is not a constant expression under UBSan.)
+[[nodiscard]] constexpr std::optional<object_info> info(object o) noexcept {
     const auto i = static_cast<std::size_t>(o);
-    return i < object_count ? &detail::object_table[i] : nullptr;
+    if (i >= object_count) return std::nullopt;
+    return detail::object_table[i];
 }
 
 [[nodiscard]] constexpr std::string_view to_string(object o) noexcept {
-    const auto* i = info(o);
+    const auto i = info(o);
     return i ? i->name : "unknown";
 }
 

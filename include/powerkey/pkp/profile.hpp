@@ -53,11 +53,14 @@ constexpr result<message> decode_request(const can::frame& f, canopen::node_id n
                                          model m) noexcept {
     const auto r = canopen::decode_sdo_request(f, node);
     if (!r) return r.error();
-    if (const auto* s = std::get_if<canopen::sdo_segment_request>(&*r)) return message{*s};
-    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r))
-        return message{sdo_abort_request{a->address, a->code}};
-    if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
-        const auto o = find_object(u->address);
+    if (std::holds_alternative<canopen::sdo_segment_request>(*r))
+        return message{std::get<canopen::sdo_segment_request>(*r)};
+    if (std::holds_alternative<canopen::sdo_abort>(*r)) {
+        const auto& a = std::get<canopen::sdo_abort>(*r);
+        return message{sdo_abort_request{a.address, a.code}};
+    }
+    if (std::holds_alternative<canopen::sdo_upload_request>(*r)) {
+        const auto o = find_object(std::get<canopen::sdo_upload_request>(*r).address);
         if (!o) return errc::unknown_object;
         if (!info(*o)->readable) return errc::unknown_command;
         return message{read_request{*o}};
@@ -66,7 +69,7 @@ constexpr result<message> decode_request(const can::frame& f, canopen::node_id n
     const auto o = find_object(d.address);
     if (!o) return errc::unknown_object;
     if (!info(*o)->writable) return errc::unknown_command;
-    const auto& i = *info(*o);
+    const auto i = *info(*o);
     switch (i.type) {
         case value_type::commands: {
             const auto c = decode_command(d, m);
@@ -92,24 +95,27 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
                                           model m) noexcept {
     const auto r = canopen::decode_sdo_response(f, node);
     if (!r) return r.error();
-    if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) return message{*s};
-    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) return message{*a};
-    if (const auto* w = std::get_if<canopen::sdo_download_response>(&*r)) {
-        const auto o = find_object(w->address);
+    if (std::holds_alternative<canopen::sdo_segment_response>(*r))
+        return message{std::get<canopen::sdo_segment_response>(*r)};
+    if (std::holds_alternative<canopen::sdo_abort>(*r))
+        return message{std::get<canopen::sdo_abort>(*r)};
+    if (std::holds_alternative<canopen::sdo_download_response>(*r)) {
+        const auto o = find_object(std::get<canopen::sdo_download_response>(*r).address);
         if (!o) return errc::unknown_object;
         if (!info(*o)->writable) return errc::unknown_command;
         return message{write_response{*o}};
     }
-    if (const auto* s = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
-        const auto o = find_object(s->address);
+    if (std::holds_alternative<canopen::sdo_upload_initiate_response>(*r)) {
+        const auto& s = std::get<canopen::sdo_upload_initiate_response>(*r);
+        const auto o = find_object(s.address);
         if (!o || info(*o)->type != value_type::string) return errc::unknown_object;
-        return message{*s};
+        return message{s};
     }
     const auto& u = std::get<canopen::sdo_upload_response>(*r);
     const auto o = find_object(u.address);
     if (!o || info(*o)->type == value_type::string) return errc::unknown_object;
     if (!info(*o)->readable) return errc::unknown_command;
-    const auto& i = *info(*o);
+    const auto i = *info(*o);
     if (i.type == value_type::keys || i.type == value_type::led_map) {
         if (u.value.size.value() != 4) return errc::size_mismatch;
         if (i.type == value_type::keys) {
@@ -221,20 +227,20 @@ constexpr result<can::frame> encode_one(node_id n, model m, const V& v) noexcept
     return encode(n, m, v);
 }
 constexpr result<can::frame> encode_one(node_id n, model, const read_request& v) noexcept {
-    const auto* i = info(v.entry);
+    const auto i = info(v.entry);
     if (!i) return errc::unknown_object;
     if (!i->readable) return errc::unknown_command;
     return canopen::encode(n, canopen::sdo_upload_request{i->address});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const read_response& v) noexcept {
-    const auto* i = info(v.entry);
+    const auto i = info(v.entry);
     if (!i || i->type != value_type::number) return errc::unknown_object;
     if (!in_range(*i, v.value)) return errc::value_out_of_range;
     return canopen::encode(
         n, canopen::sdo_upload_response{i->address, number_bytes(i->size, v.value)});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const write_request& v) noexcept {
-    const auto* i = info(v.entry);
+    const auto i = info(v.entry);
     if (!i || i->type != value_type::number) return errc::unknown_object;
     if (!i->writable) return errc::unknown_command;
     if (!in_range(*i, v.value)) return errc::value_out_of_range;
@@ -242,7 +248,7 @@ constexpr result<can::frame> encode_one(node_id n, model, const write_request& v
         n, canopen::sdo_download_request{i->address, number_bytes(i->size, v.value)});
 }
 constexpr result<can::frame> encode_one(node_id n, model, const write_response& v) noexcept {
-    const auto* i = info(v.entry);
+    const auto i = info(v.entry);
     if (!i) return errc::unknown_object;
     if (!i->writable) return errc::unknown_command;
     return canopen::encode(n, canopen::sdo_download_response{i->address});
