@@ -189,6 +189,13 @@ constexpr bool table_is_consistent() noexcept {
 }
 static_assert(table_is_consistent());
 
+// PKP 23: 43 18 10 03 10 16 12 00 is app revision 10h, com lib 16h, hw lib 12h.
+static_assert(pkp::revision_of(
+                  std::get<pkp::read_response>(pkp::decode(can::candump("595#4318100310161200"),
+                                                           canopen::default_node_id, model::pkp2400)
+                                                   .value())
+                      .value) == pkp::revision{0x10, 0x16, 0x12});
+
 // Every kind is unique and every profile-specific kind is prefixed "pkp_".
 template <std::size_t... I>
 constexpr bool kinds_ok(std::index_sequence<I...>) noexcept {

@@ -296,6 +296,18 @@ inline constexpr std::size_t object_count = std::size(detail::object_table);
     return (v >= i.min && v <= i.max) || (i.zero_allowed && v == 0);
 }
 
+// 1018h sub 3 (section 23): the revision number's bytes, data byte 4 first.
+struct revision {
+    std::uint8_t app = 0;      // application revision
+    std::uint8_t com_lib = 0;  // communication library revision
+    std::uint8_t hw_lib = 0;   // hardware library revision
+    friend constexpr bool operator==(const revision&, const revision&) noexcept = default;
+};
+[[nodiscard]] constexpr revision revision_of(std::uint32_t value) noexcept {
+    return {static_cast<std::uint8_t>(value), static_cast<std::uint8_t>(value >> 8),
+            static_cast<std::uint8_t>(value >> 16)};
+}
+
 // --- SDO messages ---------------------------------------------------------------------------
 
 // Read an entry: upload request 40h to 600h + node.
