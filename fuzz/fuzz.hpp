@@ -17,6 +17,7 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #if defined(__has_feature)
@@ -264,6 +265,11 @@ bool fill_message(input& in, M& m) {
     return ok;
 }
 
+template <class T>
+struct is_variant : std::false_type {};
+template <class... T>
+struct is_variant<std::variant<T...>> : std::true_type {};
+
 // A default-constructed alternative of a variant, chosen by index.
 template <class V, std::size_t I = 0>
 V variant_alternative_at(std::size_t index) {
@@ -271,6 +277,18 @@ V variant_alternative_at(std::size_t index) {
         if (index != I) return variant_alternative_at<V, I + 1>(index);
     }
     return V{std::in_place_index<I>};
+}
+
+// A message, or a variant of messages (nested variants too: the any-frame decoder's message is a
+// variant of the profiles' variants): one input byte picks each alternative, the rest fill it.
+template <class M>
+bool fill_any(input& in, M& m) {
+    if constexpr (is_variant<M>::value) {
+        m = variant_alternative_at<M>(in.u8() % std::variant_size_v<M>);
+        return std::visit([&](auto& alt) { return fill_any(in, alt); }, m);
+    } else {
+        return fill_message(in, m);
+    }
 }
 
 // Is the error one of the listed codes?
