@@ -76,9 +76,17 @@ public:
 
     // Begin reading `address` (any earlier transfer is forgotten); send the frame returned.
     [[nodiscard]] constexpr can::frame start(sdo_address address) noexcept {
-        *this = segmented_upload(node_, policy_);
-        address_ = address;
         state_ = upload_state::running;
+        error_ = errc{};
+        address_ = address;
+        initiated_ = false;
+        toggle_ = false;
+        size_indicated_ = false;
+        announced_ = 0;
+        aborted_ = false;
+        notes_ = upload_notes{};
+        size_ = 0;
+        text_size_ = 0;
         return encode(node_, sdo_upload_request{address});
     }
 
@@ -98,6 +106,7 @@ public:
             return fail(decoded.error());
         }
         if (const auto* a = std::get_if<sdo_abort>(&*decoded)) {
+            aborted_ = true;
             abort_code_ = a->code;
             return fail(errc::sdo_aborted);
         }
@@ -111,10 +120,12 @@ public:
     [[nodiscard]] constexpr sdo_address address() const noexcept { return address_; }
     // The keypad's abort code, when error() is sdo_aborted.
     [[nodiscard]] constexpr std::optional<sdo_abort_code> abort_code() const noexcept {
+        if (!aborted_) return std::nullopt;
         return abort_code_;
     }
     // The size the keypad announced (41h or expedited), if it announced one.
     [[nodiscard]] constexpr std::optional<std::uint32_t> announced_size() const noexcept {
+        if (!size_indicated_) return std::nullopt;
         return announced_;
     }
     [[nodiscard]] constexpr const upload_notes& notes() const noexcept { return notes_; }
@@ -155,6 +166,7 @@ private:
     constexpr result<upload_step> on_initiate(const sdo_response& r) noexcept {
         if (const auto* e = std::get_if<sdo_upload_response>(&r)) {  // expedited: all at once
             if (e->address != address_) return fail(errc::index_mismatch);
+            size_indicated_ = true;
             announced_ = e->value.size.value();
             if (!append(e->value.data())) return fail(errc::buffer_too_small);
             return finish();
@@ -163,6 +175,7 @@ private:
         if (i == nullptr) return fail(errc::unexpected_frame);
         if (i->address != address_) return fail(errc::index_mismatch);
         if (i->size_indicated) {
+            size_indicated_ = true;
             announced_ = i->size;
         } else {
             notes_.size_not_indicated = true;
@@ -175,12 +188,12 @@ private:
         if (s.toggle != toggle_) return fail(errc::toggle_error);
         if (!append(s.data())) return fail(errc::buffer_too_small);
         bool discrepancy = false;
-        if (announced_) {
-            if (size_ > *announced_ || (s.last && size_ != *announced_)) {
+        if (size_indicated_) {
+            if (size_ > announced_ || (s.last && size_ != announced_)) {
                 notes_.size_mismatch = true;
                 discrepancy = true;
             }
-            if (!s.last && size_ >= *announced_) {
+            if (!s.last && size_ >= announced_) {
                 notes_.continued_past_size = true;
                 discrepancy = true;
             }
@@ -202,8 +215,12 @@ private:
     sdo_address address_{};
     bool initiated_ = false;
     bool toggle_ = false;
-    std::optional<std::uint32_t> announced_;
-    std::optional<sdo_abort_code> abort_code_;
+    // Plain fields rather than std::optional: g++ 12 -O2 reports a false -Wmaybe-uninitialized
+    // on an optional member here.
+    bool size_indicated_ = false;
+    std::uint32_t announced_ = 0;
+    bool aborted_ = false;
+    sdo_abort_code abort_code_ = sdo_abort_code::general_error;
     upload_notes notes_{};
     std::array<std::uint8_t, Capacity> bytes_{};
     std::size_t size_ = 0;
