@@ -182,9 +182,40 @@ static_assert(static_cast<std::size_t>(entry::serial_string) + 1 == entry_count)
 [[nodiscard]] constexpr sdo_address address_of(entry e) noexcept { return info(e).address; }
 
 // The entry at an address; errc::unknown_object for one the manual does not define.
+namespace detail {
+constexpr std::uint32_t address_key(sdo_address a) noexcept {
+    return (std::uint32_t{a.index} << 8) | a.subindex;
+}
+// The entries' addresses as index << 8 | sub-index, sorted, each with its entry, so that
+// find_entry is a binary search (6 steps) rather than a scan of 62 rows (issue 7).
+struct keyed_entry {
+    std::uint32_t key;
+    entry e;
+};
+inline constexpr auto sorted_entries = [] {
+    std::array<keyed_entry, entry_count> t{};
+    for (std::size_t i = 0; i < entry_count; ++i) {
+        const keyed_entry x{address_key(entries[i].address), static_cast<entry>(i)};
+        std::size_t j = i;
+        for (; j > 0 && t[j - 1].key > x.key; --j) t[j] = t[j - 1];
+        t[j] = x;
+    }
+    return t;
+}();
+}  // namespace detail
+
 [[nodiscard]] constexpr result<entry> find_entry(sdo_address a) noexcept {
-    for (std::size_t i = 0; i < entry_count; ++i)
-        if (entries[i].address == a) return static_cast<entry>(i);
+    const std::uint32_t k = detail::address_key(a);
+    std::size_t lo = 0, hi = entry_count;
+    while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (detail::sorted_entries[mid].key < k)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < entry_count && detail::sorted_entries[lo].key == k)
+        return detail::sorted_entries[lo].e;
     return errc::unknown_object;
 }
 

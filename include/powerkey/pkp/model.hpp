@@ -192,17 +192,31 @@ enum class led_mode : std::uint8_t { off, on, blink, alternate_blink };
 
 namespace detail {
 
+// Bytes [at, at + width) of p as one little-endian number (width <= 8).
+constexpr std::uint64_t load_bits(const can::payload& p, std::size_t at,
+                                  std::size_t width) noexcept {
+    std::uint64_t v = 0;
+    for (std::size_t b = 0; b < width; ++b) v |= std::uint64_t{p[at + b]} << (8 * b);
+    return v;
+}
+// ORs the low 8 * width bits of v into bytes [at, at + width) of p.
+constexpr void store_bits(std::uint64_t v, can::payload& p, std::size_t at,
+                          std::size_t width) noexcept {
+    for (std::size_t b = 0; b < width; ++b)
+        p[at + b] = static_cast<std::uint8_t>(p[at + b] | (v >> (8 * b)));
+}
+constexpr std::uint64_t key_mask(unsigned n) noexcept { return (std::uint64_t{1} << n) - 1; }
+
 // Writes the first `planes` planes of `l` by the rule into bytes [at, at + width) of p. Callers
-// check l.fits(m, planes) first; bits that do not fit are not written.
+// check l.fits(m, planes) first; bits that do not fit are not written. Whole planes at a time:
+// plane c is the key mask shifted by c * N (issue 7: a bit loop cost ~300 instructions).
 constexpr void pack_leds(model m, const leds& l, unsigned planes, can::payload& p, std::size_t at,
                          std::size_t width) noexcept {
     const unsigned n = key_count(m);
+    std::uint64_t v = 0;
     for (unsigned c = 0; c < planes; ++c)
-        for (unsigned k = 1; k <= n; ++k) {
-            const auto i = led_bit(m, static_cast<plane>(c), k);
-            if (i < width * 8 && l.of(static_cast<plane>(c)).contains(k))
-                powerkey::detail::set_bit_le(p, at * 8 + i, true);
-        }
+        v |= (l.of(static_cast<plane>(c)).mask() & key_mask(n)) << (c * n);
+    store_bits(v, p, at, width);
 }
 
 // Reads the first `planes` planes from bytes [at, at + width) of p; any other bit set there is
@@ -211,33 +225,25 @@ constexpr result<leds> unpack_leds(model m, const can::payload& p, unsigned plan
                                    std::size_t width) noexcept {
     const unsigned n = key_count(m);
     if (n == 0) return errc::value_out_of_range;  // not a model
+    const std::uint64_t v = load_bits(p, at, width);
+    if ((v >> (planes * n)) != 0) return errc::reserved_not_zero;
     leds l;
-    for (std::size_t i = 0; i < width * 8; ++i) {
-        if (!powerkey::detail::test_bit_le(p, at * 8 + i)) continue;
-        const auto c = i / n;
-        if (c >= planes) return errc::reserved_not_zero;
-        l.of(static_cast<plane>(c)).insert(static_cast<unsigned>(i % n) + 1);
-    }
+    for (unsigned c = 0; c < planes; ++c)
+        l.of(static_cast<plane>(c)) = key_set::from_mask((v >> (c * n)) & key_mask(n));
     return l;
 }
 
-// Keys 1..N as bits 0..N-1 of bytes [at, at + width).
+// Keys 1..N as bits 0..N-1 of bytes [at, at + 2).
 constexpr void pack_keys(const key_set& keys, can::payload& p, std::size_t at) noexcept {
-    for (unsigned k = 1; k <= max_keys; ++k)
-        if (keys.contains(k)) powerkey::detail::set_bit_le(p, at * 8 + (k - 1), true);
+    store_bits(keys.mask(), p, at, 2);
 }
 
 // Any bit above key N is errc::reserved_not_zero.
 constexpr result<key_set> unpack_keys(model m, const can::payload& p, std::size_t at,
                                       std::size_t width) noexcept {
-    const unsigned n = key_count(m);
-    key_set keys;
-    for (std::size_t i = 0; i < width * 8; ++i) {
-        if (!powerkey::detail::test_bit_le(p, at * 8 + i)) continue;
-        if (i >= n) return errc::reserved_not_zero;
-        keys.insert(static_cast<unsigned>(i) + 1);
-    }
-    return keys;
+    const std::uint64_t v = load_bits(p, at, width);
+    if ((v >> key_count(m)) != 0) return errc::reserved_not_zero;
+    return key_set::from_mask(v);
 }
 
 constexpr bool keys_fit(model m, const key_set& keys) noexcept {

@@ -284,9 +284,37 @@ inline constexpr std::size_t object_count = std::size(detail::object_table);
 }
 
 // The object at an index and sub-index, if the profile defines one.
+namespace detail {
+constexpr std::uint32_t address_key(canopen::sdo_address a) noexcept {
+    return (std::uint32_t{a.index} << 8) | a.subindex;
+}
+// The table's addresses as index << 8 | sub-index, in table order, which is ascending.
+inline constexpr auto object_keys = [] {
+    std::array<std::uint32_t, std::size(object_table)> k{};
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = address_key(object_table[i].address);
+    return k;
+}();
+constexpr bool keys_ascending() noexcept {
+    for (std::size_t i = 1; i < object_keys.size(); ++i)
+        if (object_keys[i - 1] >= object_keys[i]) return false;
+    return true;
+}
+static_assert(keys_ascending(), "find_object's binary search needs the table sorted by address");
+}  // namespace detail
+
+// A binary search (6 steps) rather than a scan of the 45 rows (issue 7).
 [[nodiscard]] constexpr std::optional<object> find_object(canopen::sdo_address a) noexcept {
-    for (const auto& row : detail::object_table)
-        if (row.address == a) return row.id;
+    const std::uint32_t k = detail::address_key(a);
+    std::size_t lo = 0, hi = detail::object_keys.size();
+    while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (detail::object_keys[mid] < k)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < detail::object_keys.size() && detail::object_keys[lo] == k)
+        return detail::object_table[lo].id;
     return std::nullopt;
 }
 
