@@ -60,14 +60,15 @@ private:
 struct value {
     enum class type { null, boolean, number, string, array, object } t = type::null;
     bool b = false;
-    std::uint64_t n = 0;                                 // numbers: non-negative integers only
-    std::string s;                                       // strings
-    std::vector<value> items;                            // arrays
-    std::vector<std::pair<std::string, value>> members;  // objects, in order
+    std::uint64_t n = 0;            // numbers: non-negative integers only
+    std::string s;                  // strings
+    std::vector<value> items;       // arrays
+    std::vector<std::string> keys;  // objects: the keys in order, and ...
+    std::vector<value> members;     // ... their values (a vector may hold an incomplete type)
 
     [[nodiscard]] const value* find(std::string_view k) const {
-        for (const auto& m : members)
-            if (m.first == k) return &m.second;
+        for (std::size_t i = 0; i < keys.size(); ++i)
+            if (keys[i] == k) return &members[i];
         return nullptr;
     }
 };
@@ -169,7 +170,8 @@ private:
                 ++pos_;
                 value member;
                 if (!parse_value(member, depth + 1)) return false;
-                v.members.emplace_back(std::move(k), std::move(member));
+                v.keys.push_back(std::move(k));
+                v.members.push_back(std::move(member));
                 skip_space();
                 if (pos_ < s_.size() && s_[pos_] == ',') {
                     ++pos_;
