@@ -41,6 +41,9 @@ struct options {
     bool node_given = false;
     bool json = false;
     bool show = false;
+    // For the benchmark (scripts/bench_cli.sh): read and parse lines only, or decode without output.
+    bool parse_only = false;
+    bool quiet = false;
     std::vector<std::string> args;
 };
 
@@ -263,6 +266,7 @@ int run_decode(const options& o) {
     std::vector<std::string> files = o.args;
     if (files.empty()) files.push_back("-");
     std::string line;
+    std::size_t frames = 0, decoded = 0;
     for (const auto& path : files) {
         const bool ok = for_each_line(path, [&](std::size_t number, std::string_view text) {
             const auto p = tool::parse_log_line(text);
@@ -272,7 +276,13 @@ int run_decode(const options& o) {
                 report(where(path, number), p.problem);
                 return;
             }
+            ++frames;
+            if (o.parse_only) return;
             const auto e = s.step(p.line.frame);
+            if (o.quiet) {
+                decoded += e.decoded.has_value() ? 1u : 0u;
+                return;
+            }
             line.clear();
             if (o.json)
                 decode_json(line, p.line, e, s);
@@ -285,6 +295,10 @@ int run_decode(const options& o) {
             out.flush();
             report(path, std::strerror(errno));
         }
+    }
+    if (o.parse_only || o.quiet) {
+        out.flush();
+        std::fprintf(stderr, "powerkey: %zu frames read, %zu decoded\n", frames, decoded);
     }
     return failures == 0 ? 0 : 1;
 }
@@ -517,6 +531,10 @@ int parse_options(int argc, char** argv, options& o) {
             o.json = true;
         } else if (a == "--show") {
             o.show = true;
+        } else if (a == "--parse-only") {
+            o.parse_only = true;
+        } else if (a == "--quiet") {
+            o.quiet = true;
         } else if (value("--model", v)) {
             const auto m = parse_model(v);
             if (!m) {
