@@ -19,9 +19,13 @@
 #include <powerkey/pk1000/objects.hpp>
 #include <powerkey/pk1000/pdo.hpp>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 namespace powerkey::pk1000 {
@@ -168,22 +172,45 @@ constexpr result<message> lift(const result<T>& r) noexcept {
     return message{*r};
 }
 
-// The first V of the list that covers the address parses the data; unknown_object if none does.
-template <template <class> class Wrap, class... Vs>
-constexpr result<message> parse_value(type_list<Vs...>, canopen::sdo_address a,
+// For each entry, the position in the list of the first value type that covers its address
+// (0xFF: none). Computed once at compile time, so that decoding an SDO looks the entry up once
+// and dispatches on a small integer instead of asking every value type in turn (issue 7).
+template <class... Vs>
+constexpr std::array<std::uint8_t, entry_count> value_type_index(type_list<Vs...>) noexcept {
+    std::array<std::uint8_t, entry_count> t{};
+    for (std::size_t e = 0; e < entry_count; ++e) {
+        const auto a = entries[e].address;
+        std::uint8_t k = 0, found = 0xFF;
+        ((found == 0xFF && Vs::covers(a) ? (found = k, ++k) : ++k), ...);
+        t[e] = found;
+    }
+    return t;
+}
+template <class List>
+inline constexpr auto value_type_table = value_type_index(List{});
+
+template <template <class> class Wrap, class V>
+constexpr result<message> parse_one(canopen::sdo_address a,
+                                    const canopen::expedited_data& d) noexcept {
+    const auto v = V::parse(a, d);
+    if (!v) return v.error();
+    return message{Wrap<V>{*v}};
+}
+
+// The value type the entry's table row names parses the data; unknown_object if none does.
+template <template <class> class Wrap, class... Vs, std::size_t... I>
+constexpr result<message> parse_value(type_list<Vs...> list, std::index_sequence<I...>, entry e,
+                                      canopen::sdo_address a,
                                       const canopen::expedited_data& d) noexcept {
+    const std::uint8_t k = value_type_table<decltype(list)>[static_cast<std::size_t>(e)];
     result<message> out = errc::unknown_object;
-    const auto try_one = [&]<class V>(std::type_identity<V>) {
-        if (!V::covers(a)) return false;
-        const auto v = V::parse(a, d);
-        if (v)
-            out = message{Wrap<V>{*v}};
-        else
-            out = v.error();
-        return true;
-    };
-    (try_one(std::type_identity<Vs>{}) || ...);
+    (void)((k == I ? (out = parse_one<Wrap, Vs>(a, d), true) : false) || ...);
     return out;
+}
+template <template <class> class Wrap, class... Vs>
+constexpr result<message> parse_value(type_list<Vs...> list, entry e, canopen::sdo_address a,
+                                      const canopen::expedited_data& d) noexcept {
+    return parse_value<Wrap>(list, std::index_sequence_for<Vs...>{}, e, a, d);
 }
 
 constexpr bool is_string_entry(entry e) noexcept {
@@ -198,7 +225,7 @@ constexpr result<message> decode_request(const can::frame& f, canopen::node_id n
         const auto e = find_entry(w->address);
         if (!e) return e.error();
         if (!info(*e).writable) return errc::unknown_command;
-        return parse_value<set_request>(set_values{}, w->address, w->value);
+        return parse_value<set_request>(set_values{}, *e, w->address, w->value);
     }
     if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
         const auto e = find_entry(u->address);
@@ -221,7 +248,7 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
     if (const auto* u = std::get_if<canopen::sdo_upload_response>(&*r)) {
         const auto e = find_entry(u->address);
         if (!e) return e.error();
-        return parse_value<value_reply>(reply_values{}, u->address, u->value);
+        return parse_value<value_reply>(reply_values{}, *e, u->address, u->value);
     }
     if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
         const auto e = find_entry(i->address);
