@@ -41,7 +41,8 @@ struct options {
     bool node_given = false;
     bool json = false;
     bool show = false;
-    // For the benchmark (scripts/bench_cli.sh): read and parse lines only, or decode without output.
+    // For the benchmark (scripts/bench_cli.sh): read and parse lines only, or decode without
+    // output.
     bool parse_only = false;
     bool quiet = false;
     std::vector<std::string> args;
@@ -108,8 +109,11 @@ bool for_each_line(const std::string& path, F&& f) {
         }
     }
     if (!carry.empty()) f(++number, std::string_view(carry));
+    const bool failed = std::ferror(in) != 0;  // e.g. a directory: EISDIR
+    const int saved = errno;
     if (in != stdin) std::fclose(in);
-    return true;
+    errno = saved;
+    return !failed;
 }
 
 std::string where(const std::string& path, std::size_t line) {

@@ -57,6 +57,8 @@ grep -q "615#40 .*error: wrong_length" "$tmp/out" || fail "short SDO: $(cat "$tm
 [ $rc -eq 1 ] || fail "missing file: exit status $rc"
 grep -q "missing.log" "$tmp/err" || fail "missing file not named"
 grep -q "215#" "$tmp/out" || fail "the file after a missing one was not read"
+"$pk" decode "$tmp" > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && grep -q "Is a directory" "$tmp/err" || fail "a directory as log: $rc $(cat "$tmp/err")"
 "$pk" decode --model pk2000 "$tmp/b" > /dev/null 2> "$tmp/err"; rc=$?
 [ $rc -eq 2 ] && grep -q "unknown model" "$tmp/err" || fail "unknown model: $rc $(cat "$tmp/err")"
 "$pk" decode --node 0 "$tmp/b" > /dev/null 2>&1 && fail "node 0 accepted"
