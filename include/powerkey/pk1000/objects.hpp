@@ -15,6 +15,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/detail/bytes.hpp>
+#include <powerkey/detail/lookup.hpp>
 #include <powerkey/pk1000/pdo.hpp>
 #include <powerkey/pk1000/values.hpp>
 
@@ -181,42 +182,23 @@ static_assert(static_cast<std::size_t>(entry::serial_string) + 1 == entry_count)
 }
 [[nodiscard]] constexpr sdo_address address_of(entry e) noexcept { return info(e).address; }
 
-// The entry at an address; errc::unknown_object for one the manual does not define.
 namespace detail {
-constexpr std::uint32_t address_key(sdo_address a) noexcept {
-    return (std::uint32_t{a.index} << 8) | a.subindex;
-}
-// The entries' addresses as index << 8 | sub-index, sorted, each with its entry, so that
-// find_entry is a binary search (6 steps) rather than a scan of 62 rows (issue 7).
-struct keyed_entry {
-    std::uint32_t key;
-    entry e;
-};
-inline constexpr auto sorted_entries = [] {
-    std::array<keyed_entry, entry_count> t{};
-    for (std::size_t i = 0; i < entry_count; ++i) {
-        const keyed_entry x{address_key(entries[i].address), static_cast<entry>(i)};
-        std::size_t j = i;
-        for (; j > 0 && t[j - 1].key > x.key; --j) t[j] = t[j - 1];
-        t[j] = x;
-    }
-    return t;
+// The entries' addresses in a compile-time hash table (issue 7: one or two probes per lookup).
+inline constexpr auto entry_table = [] {
+    std::array<std::uint32_t, entry_count> keys{};
+    for (std::size_t i = 0; i < entry_count; ++i)
+        keys[i] =
+            powerkey::detail::address_key(entries[i].address.index, entries[i].address.subindex);
+    return powerkey::detail::address_table<entry_count, 8>(keys);
 }();
+static_assert(entry_table.max_probes() <= 2);
 }  // namespace detail
 
+// The entry at an address; errc::unknown_object for one the manual does not define.
 [[nodiscard]] constexpr result<entry> find_entry(sdo_address a) noexcept {
-    const std::uint32_t k = detail::address_key(a);
-    std::size_t lo = 0, hi = entry_count;
-    while (lo < hi) {
-        const std::size_t mid = (lo + hi) / 2;
-        if (detail::sorted_entries[mid].key < k)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    if (lo < entry_count && detail::sorted_entries[lo].key == k)
-        return detail::sorted_entries[lo].e;
-    return errc::unknown_object;
+    const auto row = detail::entry_table.find(powerkey::detail::address_key(a.index, a.subindex));
+    if (!row) return errc::unknown_object;
+    return static_cast<entry>(*row);
 }
 
 namespace detail {

@@ -6,9 +6,11 @@
 #define POWERKEY_PKP_OBJECTS_HPP
 
 #include <powerkey/canopen/sdo.hpp>
+#include <powerkey/detail/lookup.hpp>
 #include <powerkey/pkp/model.hpp>
 #include <powerkey/result.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -283,39 +285,24 @@ inline constexpr std::size_t object_count = std::size(detail::object_table);
     return i ? i->name : "unknown";
 }
 
-// The object at an index and sub-index, if the profile defines one.
 namespace detail {
-constexpr std::uint32_t address_key(canopen::sdo_address a) noexcept {
-    return (std::uint32_t{a.index} << 8) | a.subindex;
-}
-// The table's addresses as index << 8 | sub-index, in table order, which is ascending.
-inline constexpr auto object_keys = [] {
-    std::array<std::uint32_t, std::size(object_table)> k{};
-    for (std::size_t i = 0; i < k.size(); ++i) k[i] = address_key(object_table[i].address);
-    return k;
+// The table's addresses in a compile-time hash table (issue 7: one or two probes per lookup).
+inline constexpr auto object_lookup = [] {
+    constexpr std::size_t n = std::size(object_table);
+    std::array<std::uint32_t, n> keys{};
+    for (std::size_t i = 0; i < n; ++i)
+        keys[i] = powerkey::detail::address_key(object_table[i].address.index,
+                                                object_table[i].address.subindex);
+    return powerkey::detail::address_table<n, 8>(keys);
 }();
-constexpr bool keys_ascending() noexcept {
-    for (std::size_t i = 1; i < object_keys.size(); ++i)
-        if (object_keys[i - 1] >= object_keys[i]) return false;
-    return true;
-}
-static_assert(keys_ascending(), "find_object's binary search needs the table sorted by address");
+static_assert(object_lookup.max_probes() <= 2);
 }  // namespace detail
 
-// A binary search (6 steps) rather than a scan of the 45 rows (issue 7).
+// The object at an index and sub-index, if the profile defines one.
 [[nodiscard]] constexpr std::optional<object> find_object(canopen::sdo_address a) noexcept {
-    const std::uint32_t k = detail::address_key(a);
-    std::size_t lo = 0, hi = detail::object_keys.size();
-    while (lo < hi) {
-        const std::size_t mid = (lo + hi) / 2;
-        if (detail::object_keys[mid] < k)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    if (lo < detail::object_keys.size() && detail::object_keys[lo] == k)
-        return detail::object_table[lo].id;
-    return std::nullopt;
+    const auto row = detail::object_lookup.find(powerkey::detail::address_key(a.index, a.subindex));
+    if (!row) return std::nullopt;
+    return detail::object_table[*row].id;
 }
 
 // True when v is a valid value of a number entry.
