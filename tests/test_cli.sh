@@ -73,6 +73,12 @@ grep -qF '[ 1*.][ 2 .]' "$tmp/out" || fail "--show: key 1 pressed: $(cat "$tmp/o
 grep -qF '[ 1*R][ 2 G][ 3 B][ 4 Y][ 5 M][ 6 C][ 7 W][ 8 .]' "$tmp/out" ||
   fail "--show: one colour per key: $(cat "$tmp/out")"
 grep -qF '[ 1*r]' "$tmp/out" || fail "--show: blinking red: $(cat "$tmp/out")"
+# PKP command 6500h/01h (one key) and PK1000 object 2001h (one colour plane) move the picture too.
+printf '%s\n' '615#2300650101080700' > "$tmp/show.log"
+"$pk" decode --model pkp2400 --show "$tmp/show.log" | grep -qF '[ 7 .][ 8 B]' ||
+  fail "--show: 6500h/01h key 8 blue"
+printf '%s\n' '615#2301200104000000' > "$tmp/show.log"
+"$pk" decode --show "$tmp/show.log" | grep -qF '[ 2 .][ 3 R][ 4 .]' || fail "--show: 2001h red #3"
 
 # encode from the command line (the issue's examples and manual rows).
 check_encode() {

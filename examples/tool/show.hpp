@@ -34,19 +34,39 @@ public:
         const bool is_keys = kind.find("key_state") != std::string_view::npos ||
                              kind.find("keys_response") != std::string_view::npos ||
                              kind.ends_with("_keys");
-        const bool is_on = kind.ends_with("led_on") || kind.ends_with("led_on_response");
-        const bool is_blink = kind.ends_with("led_blink") || kind.ends_with("led_blink_response");
-        if (!is_keys && !is_on && !is_blink) return false;
+        const bool is_on = kind.find("led_on") != std::string_view::npos;
+        const bool is_blink = kind.find("led_blink") != std::string_view::npos;
+        const bool is_state = kind.ends_with("set_led_state");
+        if (!is_keys && !is_on && !is_blink && !is_state) return false;
         const auto before = state_;
+        // Fields of one colour plane (PK1000 2001h/2002h: colour + leds), or of one key (PKP
+        // command 6500h/01h: key + state), are gathered first.
+        int colour = -1;
+        std::uint64_t leds = 0;
+        bool has_leds = false;
+        unsigned key = 0;
+        std::string_view led_state;
         powerkey::for_each_field(msg, [&](std::string_view name, const auto& v) {
             using T = std::decay_t<decltype(v)>;
             if constexpr (powerkey::is_index_set<T>::value) {
                 if (is_keys && (name == "keys" || name == "pressed")) state_.keys = v.mask();
-                const int plane = name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : -1;
+                const int plane = plane_of(name);
                 if (plane >= 0 && is_on) state_.on[plane] = v.mask();
                 if (plane >= 0 && is_blink) state_.blink[plane] = v.mask();
+                if (name == "leds") {
+                    leds = v.mask();
+                    has_leds = true;
+                }
+            } else if constexpr (std::is_enum_v<T>) {
+                if (name == "colour") colour = plane_of(powerkey::enum_name(v));
+                if (name == "state") led_state = powerkey::enum_name(v);
+            } else if constexpr (powerkey::is_bounded<T>::value) {
+                if (name == "key") key = v.value();
             }
         });
+        if (has_leds && colour >= 0 && is_on) state_.on[colour] = leds;
+        if (has_leds && colour >= 0 && is_blink) state_.blink[colour] = leds;
+        if (is_state && key >= 1 && key <= 64) set_key(key - 1, led_state);
         return !(before == state_);
     }
 
@@ -88,6 +108,33 @@ public:
     }
 
 private:
+    static int plane_of(std::string_view name) {
+        return name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : -1;
+    }
+
+    // PKP command 01h: red_on, green_blink, blue_alternate_blink, off, and the two-colour
+    // blinks (red_green_blink: red and green in turn, shown as red on + green blinking).
+    void set_key(unsigned i, std::string_view s) {
+        const std::uint64_t bit_i = std::uint64_t{1} << i;
+        for (auto* plane : {state_.on, state_.blink})
+            for (int p = 0; p < 3; ++p) plane[p] &= ~bit_i;
+        const auto first = s.substr(0, s.find('_'));
+        const auto rest = s.substr(first.size());
+        int p = plane_of(first);
+        if (first == "amber") {
+            state_.on[0] |= bit_i;
+            p = 1;
+        }
+        if (p < 0) return;  // off, or a state without a name
+        if (rest == "_on" || rest == "_alternate_blink" || first == "amber") state_.on[p] |= bit_i;
+        if (rest == "_blink" || rest == "_alternate_blink") state_.blink[p] |= bit_i;
+        if (rest.starts_with("_green") || rest.starts_with("_amber")) {
+            state_.on[p] |= bit_i;
+            state_.blink[1] |= bit_i;
+        }
+        if (rest == "_red_blink") state_.blink[0] |= bit_i;
+    }
+
     static unsigned bit(std::uint64_t m, unsigned i) {
         return static_cast<unsigned>((m >> i) & 1u);
     }
