@@ -1,0 +1,88 @@
+// The invariants of issue 6 as tests: every decoder, over a sweep of frames around every manual
+// row, refuses only with listed codes, keeps decode -> encode -> decode a fixed point, and (under
+// AddressSanitizer) reads no data byte past the dlc; every errc is named and listed.
+#include <doctest/doctest.h>
+
+#include "../fuzz/fuzz.hpp"
+#include "test_invariants.hpp"
+
+#include <set>
+#include <string_view>
+#include <vector>
+
+namespace {
+using namespace powerkey;
+
+#ifdef POWERKEY_FUZZ_ASAN
+constexpr bool asan = true;
+using past_dlc_guard = powerkey_fuzz::poison_past_dlc;
+#else
+constexpr bool asan = false;
+using past_dlc_guard = invariants::no_guard;
+#endif
+
+TEST_CASE("every errc is named, listed once, and numbered 1..N") {
+    std::set<std::string_view> names;
+    std::size_t expected = 1;
+    for (errc e : all_errc) {
+        CHECK(static_cast<std::size_t>(e) == expected++);
+        const auto name = to_string(e);
+        CHECK(name != "unknown");
+        CHECK(names.insert(name).second);
+    }
+    CHECK(to_string(errc{}) == "unknown");
+    CHECK(to_string(static_cast<errc>(expected)) == "unknown");
+    CHECK(!invariants::listed(errc{}));
+}
+
+TEST_CASE("the bytes past the dlc are unreadable while a decoder runs (ASan builds)") {
+    if (!asan) {
+        MESSAGE("not an AddressSanitizer build: the past-dlc check runs in build/clang-asan");
+        return;
+    }
+    // The guard is effective for every dlc: exactly the bytes at and past the dlc are poisoned,
+    // and all of them are readable again afterwards.
+    for (std::uint8_t n = 0; n <= 8; ++n) {
+        const can::payload p{1, 2, 3, 4, 5, 6, 7, 8};
+        powerkey_fuzz::aligned_frame held{
+            can::frame(can::standard_id{0x615}, can::dlc::make(n).value(), p)};
+        {
+            const powerkey_fuzz::poison_past_dlc guard(held.f);
+            CHECK(guard.effective());
+        }
+        CHECK(held.f == can::frame(can::standard_id{0x615}, can::dlc::make(n).value(), p));
+    }
+}
+
+TEST_CASE("frame::make reads exactly the span it is given (ASan: the span ends a heap block)") {
+    for (std::size_t n = 0; n <= 8; ++n) {
+        std::vector<std::uint8_t> bytes(n, 0xA5);  // exactly n bytes: a read past them traps
+        const auto f = can::frame::make(can::standard_id{0x615}, bytes);
+        REQUIRE(f.has_value());
+        CHECK(f->size() == n);
+        for (std::size_t i = 0; i < 8; ++i) CHECK(f->bytes()[i] == (i < n ? 0xA5 : 0));
+    }
+    const std::vector<std::uint8_t> nine(9, 0);
+    CHECK(can::frame::make(can::standard_id{0x615}, nine) == errc::wrong_length);
+}
+
+TEST_CASE("every decoder keeps its invariants on a sweep around every manual row") {
+    std::size_t frames = 0, failures = 0, decoded = 0;
+    invariants::sweep([&](const can::frame& f, canopen::node_id node) {
+        ++frames;
+        const powerkey_fuzz::aligned_frame held{f};
+        const auto v = invariants::check_all<past_dlc_guard>(held.f, node);
+        decoded += v.accepted;
+        if (v.any() && failures++ < 20) {
+            INFO("frame " << can::format_candump(f).view() << " node " << int{node.value()});
+            INFO(v.decoder << ": " << v.what);
+            CHECK(!v.any());
+        }
+    });
+    MESSAGE(frames << " frames, " << decoded << " decodes accepted, " << failures << " violations");
+    CHECK(frames > 10000);
+    CHECK(decoded > frames / 4);  // not a sweep of refusals only
+    CHECK(failures == 0);
+}
+
+}  // namespace
