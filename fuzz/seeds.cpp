@@ -2,13 +2,17 @@
 //   <dir>/<target>/<n>
 // The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
 // binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic.
+#include "decoder_rows.hpp"
 #include "fuzz.hpp"
+#include "pk1000_rows.hpp"
+#include "pkp_rows.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace {
@@ -107,8 +111,64 @@ int main(int argc, char** argv) {
         w.add("sdo_upload", s);
     }
 
+    // The profiles' manual rows: for the profile decoders, the any-frame decoder (mode byte: model
+    // << 1, decode), the candump parser, and as bus logs for the session follower (each frame as
+    // an arbitrary frame: kind byte 0).
+    constexpr std::uint8_t pkp_models[] = {1, 2, 3};  // decoder.cpp's models[] index of each
+    std::vector<std::uint8_t> pk1000_log{0, node_byte(0x15)}, pkp_log{3, node_byte(0x15)};
+    auto log_frame = [](std::vector<std::uint8_t>& log, const can::frame& f) {
+        if (log.size() > 600) return;
+        log.push_back(0);
+        put_frame(log, f);
+    };
+    for (const auto& r : pk1000_rows::rows) {
+        const auto f = can::parse_candump(r.frame).value();
+        w.add_text("candump", r.frame);
+        w.add("pk1000_decode", node_and_frame(node_byte(r.node.value()), f));
+        auto d = node_and_frame(node_byte(r.node.value()), f);
+        d.insert(d.begin(), std::uint8_t{0});
+        w.add("decoder", d);
+        log_frame(pk1000_log, f);
+    }
+    for (const auto& r : pk1000_rows::bad_rows) {
+        const auto f = can::parse_candump(r.frame).value();
+        w.add("pk1000_decode", node_and_frame(node_byte(r.node.value()), f));
+    }
+    for (const auto& r : pkp_rows::rows) {
+        const auto f = can::parse_candump(r.frame).value();
+        w.add_text("candump", r.frame);
+        for (std::uint8_t m = 0; m < 3; ++m) {
+            if (!pkp_rows::applies(r.models, static_cast<pkp::model>(m))) continue;
+            auto p = node_and_frame(node_byte(r.node), f);
+            p.insert(p.begin(), m);
+            w.add("pkp_decode", p);
+            auto d = node_and_frame(node_byte(r.node), f);
+            d.insert(d.begin(), static_cast<std::uint8_t>(pkp_models[m] << 1));
+            w.add("decoder", d);
+        }
+        log_frame(pkp_log, f);
+    }
+    for (const auto& r : decoder_rows::core_rows)
+        w.add("core_decode", node_and_frame(node_byte(0x15), can::parse_candump(r.frame).value()));
+    w.add("session", pk1000_log);
+    w.add("session", pkp_log);
+
     // One seed per core message kind: the selector, a node, zero fields.
     for (std::uint8_t which = 0; which < 13; ++which)
         w.add("core_encode", {which, node_byte(0x15), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+    // The profile encoders: each message kind with zero fields (the fuzzer varies the rest).
+    const std::vector<std::uint8_t> zeros(24, 0);
+    for (std::size_t k = 0; k < std::variant_size_v<pk1000::message>; ++k) {
+        std::vector<std::uint8_t> v{node_byte(0x15), static_cast<std::uint8_t>(k)};
+        v.insert(v.end(), zeros.begin(), zeros.end());
+        w.add("pk1000_encode", v);
+    }
+    for (std::size_t k = 0; k < std::variant_size_v<pkp::message>; ++k) {
+        for (std::uint8_t m = 0; m < 3; ++m) {
+            std::vector<std::uint8_t> v{m, node_byte(0x15), static_cast<std::uint8_t>(k)};
+            v.insert(v.end(), zeros.begin(), zeros.end());
+            w.add("pkp_encode", v);
+        }
+    }
     return 0;
 }
