@@ -30,7 +30,8 @@ status=0
 for t in "${targets[@]}"; do
   corpus=fuzz/corpus-run/$t
   mkdir -p "$corpus"
-  inputs=("$build/fuzz/seeds/$t")
+  inputs=()
+  [ -d "$build/fuzz/seeds/$t" ] && inputs+=("$build/fuzz/seeds/$t")
   [ -d "fuzz/regressions/$t" ] && inputs+=("fuzz/regressions/$t")
   log="$build/fuzz-$t.log"
   result=ok
