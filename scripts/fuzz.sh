@@ -41,9 +41,9 @@ for t in "${targets[@]}"; do
     result="FAILED (see $log)"
     status=1
   fi
-  execs=$(grep -h 'stat::number_of_executed_units' "$log" | awk '{s += $2} END {print s + 0}')
+  execs=$(grep -h 'stat::number_of_executed_units' "$log" | awk '{s += $2} END {print s + 0}' || true)
   rate=$(( execs / (seconds > 0 ? seconds : 1) ))
-  cov=$(grep -hoE 'cov: [0-9]+' "$log" | tail -1 | awk '{print $2}')
+  cov=$(grep -hoE 'cov: [0-9]+' "$log" | tail -1 | awk '{print $2}' || true)
   printf '%-16s %12s %10s %8s %s\n' "$t" "$execs" "$rate" "${cov:-?}" "$result" | tee -a "$summary"
 done
 exit $status
