@@ -35,12 +35,17 @@ for t in "${targets[@]}"; do
   [ -d "fuzz/regressions/$t" ] && inputs+=("fuzz/regressions/$t")
   log="$build/fuzz-$t.log"
   result=ok
+  parallel=()
+  # With -jobs, libFuzzer writes each job's log to fuzz-<n>.log in the working directory.
+  [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
+  rm -f fuzz-[0-9]*.log
   if ! "$build/fuzz/powerkey_fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -jobs="$jobs" -workers="$jobs" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" \
+      "${parallel[@]}" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" \
       "$corpus" "${inputs[@]}" >"$log" 2>&1; then
     result="FAILED (see $log)"
     status=1
   fi
+  if [ "$jobs" -gt 1 ]; then cat fuzz-[0-9]*.log >>"$log" 2>/dev/null || true; rm -f fuzz-[0-9]*.log; fi
   execs=$(grep -h 'stat::number_of_executed_units' "$log" | awk '{s += $2} END {print s + 0}' || true)
   rate=$(( execs / (seconds > 0 ? seconds : 1) ))
   cov=$(grep -hoE 'cov: [0-9]+' "$log" | tail -1 | awk '{print $2}' || true)
