@@ -559,6 +559,11 @@ struct consumer_heartbeat_value {
     heartbeat_ms period_ms{};
     canopen::node_id producer = 1;  // the node whose heartbeat is watched, 01h..7Fh
 
+    // Off is 0000h on the wire, so an off value must carry the default period to round-trip.
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        return enabled || period_ms == heartbeat_ms{};
+    }
+
     static constexpr sdo_address at{0x1016, 1};
     [[nodiscard]] constexpr sdo_address address() const noexcept { return at; }
     [[nodiscard]] static constexpr bool covers(sdo_address a) noexcept { return a == at; }
@@ -594,6 +599,10 @@ struct producer_heartbeat_value {
     }
     bool enabled = false;
     heartbeat_ms period_ms{};
+
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        return enabled || period_ms == heartbeat_ms{};
+    }
 
     static constexpr sdo_address at{0x1017, 0};
     [[nodiscard]] constexpr sdo_address address() const noexcept { return at; }
@@ -687,6 +696,12 @@ struct string_value {
     string_object object = string_object::device_name;
     canopen::expedited_size size = 4;
     std::array<std::uint8_t, 4> bytes{};  // bytes past `size` are zero
+
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        for (std::size_t i = size.value(); i < 4; ++i)
+            if (bytes[i] != 0) return false;
+        return true;
+    }
 
     static constexpr std::array<sdo_address, 5> table{
         {{0x1008, 0}, {0x1009, 0}, {0x100A, 0}, {0x100B, 0}, {0x2200, 0}}};
@@ -940,6 +955,7 @@ struct pdo_cob_id_value {
 enum class rpdo : std::uint8_t { rpdo1, rpdo2, rpdo3, rpdo4 };
 
 [[nodiscard]] constexpr std::string_view to_string(rpdo p) noexcept {
+    if (static_cast<unsigned>(p) > static_cast<unsigned>(rpdo::rpdo4)) return "";
     return to_string(static_cast<pdo>(p));
 }
 
@@ -955,6 +971,10 @@ struct rpdo_transmission_value {
     rpdo of = rpdo::rpdo1;
     bool event_driven = true;
     rpdo_sync_type sync_type{};  // meaningful (and encoded) only when not event-driven
+
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        return !event_driven || sync_type == rpdo_sync_type{};
+    }
 
     [[nodiscard]] constexpr sdo_address address() const noexcept {
         return {static_cast<std::uint16_t>(0x1400 + static_cast<unsigned>(of)), 2};
@@ -991,6 +1011,10 @@ struct tpdo_transmission_value {
     bool event_driven = true;
     tpdo_sync_type sync_type{};  // every n-th SYNC; meaningful only when not event-driven
 
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        return !event_driven || sync_type == tpdo_sync_type{};
+    }
+
     static constexpr sdo_address at{0x1800, 2};
     [[nodiscard]] constexpr sdo_address address() const noexcept { return at; }
     [[nodiscard]] static constexpr bool covers(sdo_address a) noexcept { return a == at; }
@@ -1020,6 +1044,10 @@ struct event_timer_value {
     }
     bool enabled = false;
     event_timer_ms period_ms{};
+
+    [[nodiscard]] constexpr bool canonical() const noexcept {
+        return enabled || period_ms == event_timer_ms{};
+    }
 
     static constexpr sdo_address at{0x1800, 5};
     [[nodiscard]] constexpr sdo_address address() const noexcept { return at; }

@@ -1,7 +1,7 @@
 // powerkey PK1000: every frame of the PK1000 CANopen manual (rev 1.13, sections 4 to 49) as one
 // typed message, both ways:
 //   pk1000::decode(frame, node) -> result<pk1000::message>
-//   pk1000::encode(node, message) -> can::frame, and encode(node, decode(f, node)) == f
+//   pk1000::encode(node, message) -> result<can::frame>, and encode(node, decode(f, node)) == f
 // `node` is the keypad's current node id: it picks the COB-IDs of the PDOs, SDOs and heartbeat.
 // After a write of 2013h (set_request<node_id_value>) the keypad answers from the new node id,
 // so a follower decodes the acknowledgement with new_node_id(message).
@@ -158,11 +158,6 @@ constexpr can::frame encode_one(canopen::node_id node, const T& m) noexcept {
 }
 }  // namespace detail
 
-// The frame of a message for the keypad `node`. Total: every message encodes.
-[[nodiscard]] constexpr can::frame encode(canopen::node_id node, const message& m) noexcept {
-    return std::visit([node](const auto& v) { return detail::encode_one(node, v); }, m);
-}
-
 // --- decoding -----------------------------------------------------------------------------------
 
 namespace detail {
@@ -259,6 +254,80 @@ constexpr result<message> decode_response(const can::frame& f, canopen::node_id 
     return message{std::get<canopen::sdo_abort>(*r)};
 }
 }  // namespace detail
+
+// --- encoding: what the decoder would refuse is refused here too --------------------------------
+
+namespace detail {
+template <class V, class... Vs>
+constexpr std::uint8_t type_index(type_list<Vs...>) noexcept {
+    std::uint8_t i = 0, found = 0xFF;
+    ((std::is_same_v<V, Vs> && found == 0xFF ? (found = i, ++i) : ++i), ...);
+    return found;
+}
+
+// errc{} when every enumeration field holds a named value (any 32-bit abort code is valid).
+template <class T>
+constexpr errc check_enum_fields(const T& m) noexcept {
+    errc e{};
+    T::fields(m, [&e](std::string_view, const auto& v) {
+        using F = std::remove_cvref_t<decltype(v)>;
+        if constexpr (std::is_enum_v<F> && !std::is_same_v<F, canopen::sdo_abort_code>) {
+            const std::string_view name = to_string(v);
+            if (name.empty() || name == "unknown") e = errc::value_out_of_range;
+        }
+    });
+    return e;
+}
+
+// errc{} when the message encodes to a frame that decode() accepts and reads back unchanged;
+// otherwise the error decode() would return for that frame, or value_out_of_range for a value
+// the wire cannot carry (an "off" heartbeat with a period, bytes past a string's size).
+template <class T>
+constexpr errc check_encodable(const T& m) noexcept {
+    if (const auto e = check_enum_fields(m); e != errc{}) return e;
+    if constexpr (is_set_request<T>::value || is_value_reply<T>::value) {
+        using V = std::remove_cvref_t<decltype(m.value)>;
+        if constexpr (requires { m.value.canonical(); })
+            if (!m.value.canonical()) return errc::value_out_of_range;
+        const auto e = find_entry(m.value.address());
+        if (!e) return e.error();
+        if constexpr (is_set_request<T>::value) {
+            if (!info(*e).writable) return errc::unknown_command;
+            if (value_type_table<set_values>[static_cast<std::size_t>(*e)] !=
+                type_index<V>(set_values{}))
+                return errc::unknown_object;
+        } else {
+            if (value_type_table<reply_values>[static_cast<std::size_t>(*e)] !=
+                type_index<V>(reply_values{}))
+                return errc::unknown_object;
+        }
+    } else if constexpr (std::is_same_v<T, set_ack>) {
+        if (!info(m.object).writable) return errc::unknown_command;
+    } else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>) {
+        const auto e = find_entry(m.address);
+        if (!e || !is_string_entry(*e)) return errc::unknown_object;
+    }
+    return errc{};
+}
+}  // namespace detail
+
+// The frame of a message for the keypad `node`, such that decode(encode(m)) == m. Every message
+// decode() returns encodes; a message built by hand that decode() could never return is refused:
+//   value_out_of_range  an enumeration field with no named value; an "off" heartbeat or event
+//                       timer with a period, an event-driven PDO with a sync type, a string value
+//                       with bytes past its size (the wire cannot carry them)
+//   unknown_object      a value for an address the manual does not define for it; a segmented
+//                       upload response for an entry that is not a string
+//   unknown_command     a write to, or a write acknowledgement of, a read-only entry
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
+                                                  const message& m) noexcept {
+    return std::visit(
+        [node](const auto& v) -> result<can::frame> {
+            if (const auto e = detail::check_encodable(v); e != errc{}) return e;
+            return detail::encode_one(node, v);
+        },
+        m);
+}
 
 // Any frame of a PK1000 whose node id is `node`. Errors:
 //   wrong_id            another node's COB-ID, a COB-ID the keypad does not use, a 29-bit frame
