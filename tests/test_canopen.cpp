@@ -169,6 +169,9 @@ constexpr bool sdo_rows_encode() {
     return true;
 }
 static_assert(sdo_rows_encode());
+// A client abort as a message of its own keeps its direction: 600h + node.
+static_assert(encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
+              can::candump("615#8000200100000405"));
 static_assert(expedited_data::u16(500).value() == 500);
 static_assert(expedited_data::u32(0x000B0191).value() == 0x000B0191);
 static_assert(expedited_data{3, {1, 2, 3, 0xFF}}.value() == 0x030201);

@@ -135,18 +135,8 @@ struct frame_class {
 
 namespace core {
 
-// An SDO abort sent by the client (600h + node). The core type has no direction, so the
-// any-frame decoder wraps it to keep encode(decode(f)) == f.
-struct sdo_abort_request {
-    static constexpr std::string_view kind = "sdo_abort_request";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        canopen::sdo_abort::fields(self.abort, f);
-    }
-    canopen::sdo_abort abort;
-    friend constexpr bool operator==(const sdo_abort_request&,
-                                     const sdo_abort_request&) noexcept = default;
-};
+// An SDO abort sent by the client (600h + node): the core type keeps its direction.
+using canopen::sdo_abort_request;
 
 // An SDO abort sent by the keypad (580h + node).
 struct sdo_abort_response {

@@ -276,6 +276,20 @@ struct sdo_abort {
     friend constexpr bool operator==(const sdo_abort&, const sdo_abort&) noexcept = default;
 };
 
+// An abort sent by the client (600h + node), as a message of its own: canopen::sdo_abort has no
+// direction, and the profiles' and the any-frame decoder's variants need the two kept apart so
+// that each re-encodes on its own COB-ID.
+struct sdo_abort_request {
+    static constexpr std::string_view kind = "sdo_abort_request";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        sdo_abort::fields(self.abort, f);
+    }
+    sdo_abort abort;
+    friend constexpr bool operator==(const sdo_abort_request&,
+                                     const sdo_abort_request&) noexcept = default;
+};
+
 using sdo_request =
     std::variant<sdo_download_request, sdo_upload_request, sdo_segment_request, sdo_abort>;
 using sdo_response = std::variant<sdo_download_response, sdo_upload_response,
@@ -351,6 +365,10 @@ enum class sdo_direction : std::uint8_t { request, response };
     powerkey::detail::store_le_u32(p, 4, static_cast<std::uint32_t>(m.code));
     return detail::sdo_frame(dir == sdo_direction::request ? function::sdo_rx : function::sdo_tx,
                              node, p);
+}
+
+[[nodiscard]] constexpr can::frame encode(node_id node, const sdo_abort_request& m) noexcept {
+    return encode(node, m.abort, sdo_direction::request);
 }
 
 [[nodiscard]] constexpr can::frame encode_request(node_id node, const sdo_request& m) noexcept {

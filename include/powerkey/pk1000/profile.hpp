@@ -77,16 +77,7 @@ struct set_ack {
 };
 
 // Host -> keypad abort (80h on 600h + node); canopen::sdo_abort in the message is the keypad's.
-struct sdo_abort_request {
-    static constexpr std::string_view kind = "sdo_abort_request";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        canopen::sdo_abort::fields(self.abort, f);
-    }
-    canopen::sdo_abort abort;
-    friend constexpr bool operator==(const sdo_abort_request&,
-                                     const sdo_abort_request&) noexcept = default;
-};
+using canopen::sdo_abort_request;
 
 template <class... Ts>
 struct type_list {};

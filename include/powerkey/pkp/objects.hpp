@@ -436,21 +436,8 @@ struct led_blink_response {
                                      const led_blink_response&) noexcept = default;
 };
 
-// An abort sent by the client (600h + node). An abort from the keypad (580h + node) is the core
-// canopen::sdo_abort; the two are distinct messages so that each re-encodes on its own COB-ID.
-struct sdo_abort_request {
-    static constexpr std::string_view kind = "sdo_abort_request";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-        f("code", self.code);
-    }
-    canopen::sdo_address address;
-    canopen::sdo_abort_code code = canopen::sdo_abort_code::general_error;
-    friend constexpr bool operator==(const sdo_abort_request&,
-                                     const sdo_abort_request&) noexcept = default;
-};
+// An abort sent by the client (600h + node); one from the keypad is canopen::sdo_abort.
+using canopen::sdo_abort_request;
 
 // --- value helpers ----------------------------------------------------------------------------
 

@@ -57,7 +57,7 @@ constexpr result<message> decode_request(const can::frame& f, canopen::node_id n
         return message{std::get<canopen::sdo_segment_request>(*r)};
     if (std::holds_alternative<canopen::sdo_abort>(*r)) {
         const auto& a = std::get<canopen::sdo_abort>(*r);
-        return message{sdo_abort_request{a.address, a.code}};
+        return message{sdo_abort_request{a}};
     }
     if (std::holds_alternative<canopen::sdo_upload_request>(*r)) {
         const auto o = find_object(std::get<canopen::sdo_upload_request>(*r).address);
@@ -218,8 +218,7 @@ constexpr result<can::frame> encode_one(node_id n, model, const canopen::sdo_abo
     return canopen::encode(n, v, canopen::sdo_direction::response);
 }
 constexpr result<can::frame> encode_one(node_id n, model, const sdo_abort_request& v) noexcept {
-    return canopen::encode(n, canopen::sdo_abort{v.address, v.code},
-                           canopen::sdo_direction::request);
+    return canopen::encode(n, v);
 }
 template <class V>
 requires std::is_same_v<V, key_state> || std::is_same_v<V, led_on> || std::is_same_v<V, led_blink>
