@@ -7,12 +7,19 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <type_traits>
 
 namespace powerkey {
 
 template <std::size_t N>
 class index_set {
     static_assert(N > 0 && N <= 64);
+    // The smallest unsigned type with N bits: messages that hold several sets stay small, and
+    // decoders copy less (a PKP LED map is 6 bytes, not 24).
+    using storage = std::conditional_t<
+        (N <= 8), std::uint8_t,
+        std::conditional_t<(N <= 16), std::uint16_t,
+                           std::conditional_t<(N <= 32), std::uint32_t, std::uint64_t>>>;
 
 public:
     static constexpr std::size_t max = N;
@@ -29,11 +36,11 @@ public:
     // Adds n; returns false (and changes nothing) when n is outside 1..N.
     constexpr bool insert(unsigned n) noexcept {
         if (n < 1 || n > N) return false;
-        bits_ |= std::uint64_t{1} << (n - 1);
+        bits_ = static_cast<storage>(bits_ | (std::uint64_t{1} << (n - 1)));
         return true;
     }
     constexpr void erase(unsigned n) noexcept {
-        if (n >= 1 && n <= N) bits_ &= ~(std::uint64_t{1} << (n - 1));
+        if (n >= 1 && n <= N) bits_ = static_cast<storage>(bits_ & ~(std::uint64_t{1} << (n - 1)));
     }
     [[nodiscard]] constexpr bool empty() const noexcept { return bits_ == 0; }
     [[nodiscard]] constexpr std::size_t count() const noexcept {
@@ -45,14 +52,14 @@ public:
     [[nodiscard]] constexpr std::uint64_t mask() const noexcept { return bits_; }
     [[nodiscard]] static constexpr index_set from_mask(std::uint64_t m) noexcept {
         index_set s;
-        s.bits_ = N == 64 ? m : (m & ((std::uint64_t{1} << N) - 1));
+        s.bits_ = static_cast<storage>(N == 64 ? m : (m & ((std::uint64_t{1} << N) - 1)));
         return s;
     }
 
     friend constexpr bool operator==(const index_set&, const index_set&) noexcept = default;
 
 private:
-    std::uint64_t bits_ = 0;
+    storage bits_ = 0;
 };
 
 }  // namespace powerkey

@@ -34,6 +34,19 @@ constexpr void store_le_u32(Bytes& b, std::size_t at, std::uint32_t v) noexcept 
     b[at + 3] = static_cast<std::uint8_t>(v >> 24);
 }
 
+// All eight bytes of a payload as one little-endian number. Written out rather than as a loop:
+// g++ -O2 merges this form into a single 64-bit load (the loop cost ~55 instructions).
+template <class Bytes>
+constexpr std::uint64_t load_le_u64(const Bytes& b) noexcept {
+    return std::uint64_t{load_le_u32(b, 0)} | (std::uint64_t{load_le_u32(b, 4)} << 32);
+}
+
+template <class Bytes>
+constexpr void store_le_u64(Bytes& b, std::uint64_t v) noexcept {
+    store_le_u32(b, 0, static_cast<std::uint32_t>(v));
+    store_le_u32(b, 4, static_cast<std::uint32_t>(v >> 32));
+}
+
 // Bit i of a little-endian bit string: byte i / 8, bit i % 8 (bit 0 least significant).
 template <class Bytes>
 constexpr bool test_bit_le(const Bytes& b, std::size_t i) noexcept {

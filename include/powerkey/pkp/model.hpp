@@ -195,15 +195,15 @@ namespace detail {
 // Bytes [at, at + width) of p as one little-endian number (width <= 8).
 constexpr std::uint64_t load_bits(const can::payload& p, std::size_t at,
                                   std::size_t width) noexcept {
-    std::uint64_t v = 0;
-    for (std::size_t b = 0; b < width; ++b) v |= std::uint64_t{p[at + b]} << (8 * b);
-    return v;
+    const std::uint64_t v = powerkey::detail::load_le_u64(p) >> (8 * at);
+    return width >= 8 ? v : v & ((std::uint64_t{1} << (8 * width)) - 1);
 }
 // ORs the low 8 * width bits of v into bytes [at, at + width) of p.
 constexpr void store_bits(std::uint64_t v, can::payload& p, std::size_t at,
                           std::size_t width) noexcept {
-    for (std::size_t b = 0; b < width; ++b)
-        p[at + b] = static_cast<std::uint8_t>(p[at + b] | (v >> (8 * b)));
+    const std::uint64_t mask =
+        width >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * width)) - 1;
+    powerkey::detail::store_le_u64(p, powerkey::detail::load_le_u64(p) | ((v & mask) << (8 * at)));
 }
 constexpr std::uint64_t key_mask(unsigned n) noexcept { return (std::uint64_t{1} << n) - 1; }
 
