@@ -2,7 +2,8 @@
 # Installs what building and testing powerkey needs on Debian 12, if it is missing.
 set -euo pipefail
 packages=(g++ clang cmake make doctest-dev libbenchmark-dev clang-format-14 valgrind
-          gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib llvm python3)
+          libclang-rt-14-dev gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
+          llvm python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
