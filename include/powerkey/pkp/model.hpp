@@ -140,6 +140,21 @@ struct leds {
     friend constexpr bool operator==(const leds&, const leds&) noexcept = default;
 };
 
+// A message that carries one LED map: the LED-on and LED-blink PDOs (200h/300h) and objects
+// 6001h/6002h written or read. The six differ only in their kind, which the Tag names.
+template <class Tag>
+struct leds_message {
+    static constexpr std::string_view kind = Tag::kind;
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("red", self.value.red);
+        f("green", self.value.green);
+        f("blue", self.value.blue);
+    }
+    leds value;
+    friend constexpr bool operator==(const leds_message&, const leds_message&) noexcept = default;
+};
+
 // An LED map typed for model M: key numbers are checked at compile time, so encoding it for M
 // cannot fail. `led_map<model::pkp2400>{{1, colour::red}, {4, colour::amber}}`.
 template <model M>

@@ -388,53 +388,22 @@ struct keys_response {
 // 6001h (LED on) and 6002h (LED blink), written (23h) or read (43h): 4 bytes of the bit map.
 // A PKP-2600 needs 36 bits for RGB, which do not fit: there these objects carry red and green
 // only (reference/pkp-2600.md); blue is reached through the RPDOs or command 01h.
-struct write_led_on {
+struct write_led_on_tag {
     static constexpr std::string_view kind = "pkp_write_led_on";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const write_led_on&, const write_led_on&) noexcept = default;
 };
-struct write_led_blink {
+using write_led_on = leds_message<write_led_on_tag>;
+struct write_led_blink_tag {
     static constexpr std::string_view kind = "pkp_write_led_blink";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const write_led_blink&,
-                                     const write_led_blink&) noexcept = default;
 };
-struct led_on_response {
+using write_led_blink = leds_message<write_led_blink_tag>;
+struct led_on_response_tag {
     static constexpr std::string_view kind = "pkp_led_on_response";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const led_on_response&,
-                                     const led_on_response&) noexcept = default;
 };
-struct led_blink_response {
+using led_on_response = leds_message<led_on_response_tag>;
+struct led_blink_response_tag {
     static constexpr std::string_view kind = "pkp_led_blink_response";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const led_blink_response&,
-                                     const led_blink_response&) noexcept = default;
 };
+using led_blink_response = leds_message<led_blink_response_tag>;
 
 // An abort sent by the client (600h + node); one from the keypad is canopen::sdo_abort.
 using canopen::sdo_abort_request;

@@ -32,30 +32,16 @@ struct key_state {
 };
 
 // Section 11: which LEDs are on (red, green, blue sets of keys).
-struct led_on {
+struct led_on_tag {
     static constexpr std::string_view kind = "pkp_led_on";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const led_on&, const led_on&) noexcept = default;
 };
+using led_on = leds_message<led_on_tag>;
 
 // Section 12: which LEDs blink; an LED also on in led_on blinks in alternate mode.
-struct led_blink {
+struct led_blink_tag {
     static constexpr std::string_view kind = "pkp_led_blink";
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("red", self.value.red);
-        f("green", self.value.green);
-        f("blue", self.value.blue);
-    }
-    leds value;
-    friend constexpr bool operator==(const led_blink&, const led_blink&) noexcept = default;
 };
+using led_blink = leds_message<led_blink_tag>;
 
 namespace detail {
 constexpr can::frame led_pdo(canopen::function fn, canopen::node_id node, model m,
