@@ -18,13 +18,6 @@ constexpr errc check_frame(const can::frame& f, can::standard_id id, std::uint8_
     return errc{};
 }
 
-constexpr errc check_frame(const can::frame& f, can::extended_id id, std::uint8_t length) noexcept {
-    if (!f.is_extended()) return errc::wrong_id_format;
-    if (f.raw_id() != id.value()) return errc::wrong_id;
-    if (f.size() != length) return errc::wrong_length;
-    return errc{};
-}
-
 }  // namespace powerkey::detail
 
 #endif  // POWERKEY_DETAIL_CHECKS_HPP
