@@ -47,18 +47,6 @@ constexpr void store_le_u64(Bytes& b, std::uint64_t v) noexcept {
     store_le_u32(b, 4, static_cast<std::uint32_t>(v >> 32));
 }
 
-// Bit i of a little-endian bit string: byte i / 8, bit i % 8 (bit 0 least significant).
-template <class Bytes>
-constexpr bool test_bit_le(const Bytes& b, std::size_t i) noexcept {
-    return ((b[i / 8] >> (i % 8)) & 1u) != 0;
-}
-
-template <class Bytes>
-constexpr void set_bit_le(Bytes& b, std::size_t i, bool on) noexcept {
-    const auto mask = static_cast<std::uint8_t>(1u << (i % 8));
-    b[i / 8] = static_cast<std::uint8_t>(on ? (b[i / 8] | mask) : (b[i / 8] & ~mask));
-}
-
 // True when bytes [from, to) are all zero.
 template <class Bytes>
 constexpr bool all_zero(const Bytes& b, std::size_t from, std::size_t to) noexcept {

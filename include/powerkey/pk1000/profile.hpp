@@ -15,6 +15,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
+#include <powerkey/fields.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/pk1000/objects.hpp>
 #include <powerkey/pk1000/pdo.hpp>
@@ -262,10 +263,8 @@ constexpr errc check_enum_fields(const T& m) noexcept {
     errc e{};
     T::fields(m, [&e](std::string_view, const auto& v) {
         using F = std::remove_cvref_t<decltype(v)>;
-        if constexpr (std::is_enum_v<F> && !std::is_same_v<F, canopen::sdo_abort_code>) {
-            const std::string_view name = to_string(v);
-            if (name.empty() || name == "unknown") e = errc::value_out_of_range;
-        }
+        if constexpr (std::is_enum_v<F> && !std::is_same_v<F, canopen::sdo_abort_code>)
+            if (enum_name(v).empty()) e = errc::value_out_of_range;
     });
     return e;
 }
