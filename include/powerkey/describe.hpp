@@ -3,10 +3,11 @@
 //
 //   node 15h  LED on  red: 1 7  green: -  blue: -
 //
-// The text is generated from the message's kind and fields: the kind without its profile prefix
-// and with spaces for underscores (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field
-// as `name: value`. Values: key and LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex,
-// an SDO index as 4 hex digits and h, enumerators by name, other numbers in decimal.
+// The text is generated from the message's kind and fields: the kind with spaces for underscores
+// (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field as `name: value`. Values: key and
+// LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex, enumerators by name; numbers in
+// hex with h (node ids, COB-IDs, indexes, levels, words: 15h, 0215h, 2003h, 3Fh), except counts
+// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused).
 #ifndef POWERKEY_DESCRIBE_HPP
 #define POWERKEY_DESCRIBE_HPP
 
@@ -69,8 +70,6 @@ constexpr std::string_view upper_words[] = {"led", "sdo",  "nmt",  "pdo", "rgb",
                                             "id",  "rpdo", "tpdo", "cob", "rs485"};
 
 constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
-    for (std::string_view prefix : {std::string_view{"pk1000_"}, std::string_view{"pkp_"}})
-        if (kind.substr(0, prefix.size()) == prefix) kind.remove_prefix(prefix.size());
     bool first = true;
     while (!kind.empty()) {
         const auto end = kind.find('_');
@@ -84,6 +83,21 @@ constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
         if (end == std::string_view::npos) break;
         kind.remove_prefix(end + 1);
     }
+}
+
+// Field names whose numbers are counts or times, printed in decimal; all others print in hex.
+constexpr std::string_view decimal_fields[] = {"tick", "period_ms", "period_10ms", "size",
+                                               "bits", "key",       "subindex",    "unused"};
+
+constexpr void put_number(text_writer& w, std::string_view name, std::uint64_t v,
+                          int width) noexcept {
+    for (auto d : decimal_fields)
+        if (d == name) return w.put_decimal(v);
+    int digits = 2;
+    while (digits < 2 * width && (v >> (4 * digits)) != 0) ++digits;
+    if (name == "index") digits = 4;
+    w.put_hex(v, digits);
+    w.put('h');
 }
 
 template <class T>
@@ -120,14 +134,9 @@ constexpr void put_value(text_writer& w, std::string_view name, const T& v) noex
             w.put_hex(v[i], 2);
         }
     } else if constexpr (is_bounded<T>::value) {
-        w.put_decimal(v.value());
+        put_number(w, name, v.value(), static_cast<int>(sizeof(typename T::rep)));
     } else if constexpr (std::is_integral_v<T>) {
-        if (name == "index") {
-            w.put_hex(v, 4);
-            w.put('h');
-        } else {
-            w.put_decimal(static_cast<std::uint64_t>(v));
-        }
+        put_number(w, name, static_cast<std::uint64_t>(v), static_cast<int>(sizeof(T)));
     } else {
         static_assert(std::is_integral_v<T>, "a field type outside the kind/fields convention");
     }
@@ -137,7 +146,7 @@ constexpr void put_value(text_writer& w, std::string_view name, const T& v) noex
 
 // Writes the description of m, sent to or by keypad `node`, into `out`. Returns the text (a view
 // of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
-// 160 characters hold every message of both profiles.
+// 160 characters hold every message of every model.
 template <class M>
 [[nodiscard]] constexpr result<std::string_view> describe(const M& m, canopen::node_id node,
                                                           std::span<char> out) noexcept {

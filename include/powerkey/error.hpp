@@ -3,8 +3,9 @@
 #ifndef POWERKEY_ERROR_HPP
 #define POWERKEY_ERROR_HPP
 
+#include <powerkey/detail/enum_table.hpp>
+
 #include <cstdint>
-#include <string_view>
 
 namespace powerkey {
 
@@ -25,34 +26,24 @@ enum class errc : std::uint8_t {
     unknown_object,       // an SDO index or sub-index the keypad's profile does not define
 };
 
-// A short stable name for each code, e.g. "wrong_length"; "unknown" for a value outside the enum.
-[[nodiscard]] constexpr std::string_view to_string(errc e) noexcept {
-    switch (e) {
-        case errc::wrong_id_format: return "wrong_id_format";
-        case errc::wrong_id: return "wrong_id";
-        case errc::wrong_length: return "wrong_length";
-        case errc::unknown_command: return "unknown_command";
-        case errc::index_mismatch: return "index_mismatch";
-        case errc::value_out_of_range: return "value_out_of_range";
-        case errc::reserved_not_zero: return "reserved_not_zero";
-        case errc::toggle_error: return "toggle_error";
-        case errc::size_mismatch: return "size_mismatch";
-        case errc::buffer_too_small: return "buffer_too_small";
-        case errc::sdo_aborted: return "sdo_aborted";
-        case errc::unexpected_frame: return "unexpected_frame";
-        case errc::syntax_error: return "syntax_error";
-        case errc::unknown_object: return "unknown_object";
-    }
-    return "unknown";
-}
-
-// Every code, for tests and tools that enumerate them.
-inline constexpr errc all_errc[] = {
-    errc::wrong_id_format,   errc::wrong_id,       errc::wrong_length,
-    errc::unknown_command,   errc::index_mismatch, errc::value_out_of_range,
-    errc::reserved_not_zero, errc::toggle_error,   errc::size_mismatch,
-    errc::buffer_too_small,  errc::sdo_aborted,    errc::unexpected_frame,
-    errc::syntax_error,      errc::unknown_object,
+template <>
+struct enum_names<errc> {
+    static constexpr enum_name_entry<errc> entries[] = {
+        {errc::wrong_id_format, "wrong_id_format"},
+        {errc::wrong_id, "wrong_id"},
+        {errc::wrong_length, "wrong_length"},
+        {errc::unknown_command, "unknown_command"},
+        {errc::index_mismatch, "index_mismatch"},
+        {errc::value_out_of_range, "value_out_of_range"},
+        {errc::reserved_not_zero, "reserved_not_zero"},
+        {errc::toggle_error, "toggle_error"},
+        {errc::size_mismatch, "size_mismatch"},
+        {errc::buffer_too_small, "buffer_too_small"},
+        {errc::sdo_aborted, "sdo_aborted"},
+        {errc::unexpected_frame, "unexpected_frame"},
+        {errc::syntax_error, "syntax_error"},
+        {errc::unknown_object, "unknown_object"},
+    };
 };
 
 }  // namespace powerkey

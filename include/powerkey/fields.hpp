@@ -1,7 +1,7 @@
 // powerkey: generic access to messages through the kind/fields convention. Every message struct
 // has `static constexpr std::string_view kind` and `fields(self, f)`, which calls f(name, member)
-// for every field the frame carries. A profile's message is a std::variant of such structs, maybe
-// nested; visit_message finds the struct inside. The description writer, the session follower
+// for every field the frame carries. powerkey::message is a std::variant of such structs;
+// visit_message finds the struct inside (through nested variants too, for users' own types). The description writer, the session follower
 // and the command-line tool (JSON both ways) are all written on top of this, so a new message
 // needs no code outside its own header.
 #ifndef POWERKEY_FIELDS_HPP
@@ -9,6 +9,7 @@
 
 #include <powerkey/bounded.hpp>
 #include <powerkey/index_set.hpp>
+#include <powerkey/names.hpp>
 
 #include <array>
 #include <cstddef>
@@ -116,13 +117,10 @@ struct is_byte_array : std::false_type {};
 template <std::size_t N>
 struct is_byte_array<std::array<std::uint8_t, N>> : std::true_type {};
 
-// The name of an enumerator through its ADL to_string, "" when the value has no name (to_string
-// returns "" or "unknown" for values outside the enum).
-template <class E>
-requires std::is_enum_v<E>
+// The name of an enumerator from its table (names.hpp), "" when the value has no name.
+template <named_enum E>
 [[nodiscard]] constexpr std::string_view enum_name(E e) noexcept {
-    const std::string_view n = to_string(e);
-    return n == "unknown" ? std::string_view{} : n;
+    return to_string(e);
 }
 
 }  // namespace powerkey

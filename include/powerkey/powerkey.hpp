@@ -3,11 +3,11 @@
 #define POWERKEY_POWERKEY_HPP
 
 #include <powerkey/bounded.hpp>
-#include <powerkey/decoder.hpp>
 #include <powerkey/describe.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/fields.hpp>
 #include <powerkey/index_set.hpp>
+#include <powerkey/names.hpp>
 #include <powerkey/result.hpp>
 #include <powerkey/session.hpp>
 #include <powerkey/version.hpp>
@@ -26,21 +26,12 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 
-#include <powerkey/pk1000/objects.hpp>
-#include <powerkey/pk1000/pdo.hpp>
-#include <powerkey/pk1000/profile.hpp>
-#include <powerkey/pk1000/values.hpp>
-
-#include <powerkey/pkp/command.hpp>
-#include <powerkey/pkp/model.hpp>
-#include <powerkey/pkp/objects.hpp>
-#include <powerkey/pkp/pdo.hpp>
-#include <powerkey/pkp/profile.hpp>
-
-// The any-frame decoder, the session follower and the description writer, over every model.
-#include <powerkey/decoder.hpp>
-#include <powerkey/describe.hpp>
-#include <powerkey/fields.hpp>
-#include <powerkey/session.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/values.hpp>
 
 #endif  // POWERKEY_POWERKEY_HPP

@@ -4,11 +4,11 @@
 //     that answer nothing;
 //   - it runs segmented uploads (device name 1008h, serial numbers ...) through the core reader
 //     canopen::segmented_upload, so the whole string is there when the last segment passes;
-//   - it follows a node-id change to the new COB-IDs: PK1000 object 2013h (the keypad answers
-//     from the new id, manual section 23) and PKP command 6500h/70h (the keypad answers from the
-//     old id, then boots up with the new one, PKP manual section 13 h);
-//   - it notices the switch to J1939 (PK1000 object 20FFh sub 1 = 1, section 49) and back (the
-//     18EF2100h frame).
+//   - it follows a node-id change to the new COB-IDs: a keypad that answers from the new id
+//     (PK1000 object 2013h, section 23) or from the old id and then boots up with the new one
+//     (PKP command 6500h/70h, section 13 h), as the model table says;
+//   - it notices the switch to J1939 (a write of protocol_j1939 = 1, PK1000 section 49) and back
+//     (the 18EF2100h frame), for the models that have it.
 //
 //   session<> s(model::pk1000, canopen::default_node_id);
 //   for (const can::frame& f : log) {
@@ -20,29 +20,23 @@
 #define POWERKEY_SESSION_HPP
 
 #include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
-#include <powerkey/decoder.hpp>
-#include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/models.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <string_view>
 #include <variant>
 
 namespace powerkey {
 
 enum class bus_protocol : std::uint8_t { canopen, j1939 };
-
-[[nodiscard]] constexpr std::string_view to_string(bus_protocol p) noexcept {
-    switch (p) {
-        case bus_protocol::canopen: return "canopen";
-        case bus_protocol::j1939: return "j1939";
-    }
-    return "unknown";
-}
 
 // Where an SDO frame stands in its exchange.
 enum class sdo_pairing : std::uint8_t {
@@ -52,19 +46,21 @@ enum class sdo_pairing : std::uint8_t {
     unanswered,  // a reply when no request was pending, or for another object
 };
 
-[[nodiscard]] constexpr std::string_view to_string(sdo_pairing p) noexcept {
-    switch (p) {
-        case sdo_pairing::none: return "none";
-        case sdo_pairing::request: return "request";
-        case sdo_pairing::reply: return "reply";
-        case sdo_pairing::unanswered: return "unanswered";
-    }
-    return "unknown";
-}
+template <>
+struct enum_names<bus_protocol> {
+    static constexpr enum_name_entry<bus_protocol> entries[] = {{bus_protocol::canopen, "canopen"},
+                                                                {bus_protocol::j1939, "j1939"}};
+};
+template <>
+struct enum_names<sdo_pairing> {
+    using p = sdo_pairing;
+    static constexpr enum_name_entry<p> entries[] = {
+        {p::none, "none"}, {p::request, "request"}, {p::reply, "reply"}, {p::unanswered, "unanswered"}};
+};
 
 // What one frame meant, and what it changed.
 struct session_event {
-    frame_class cls;
+    canopen::cob_info cls;
     canopen::node_id node = canopen::default_node_id;  // the node the frame was decoded for
     result<message> decoded = errc::unexpected_frame;
     sdo_pairing sdo = sdo_pairing::none;
@@ -79,7 +75,7 @@ template <std::size_t TextCapacity = 64>
 class session {
 public:
     constexpr session(powerkey::model m, canopen::node_id node) noexcept
-        : model_(m), node_(node), upload_(node) {}
+        : model_(m), info_(info(m).value_or(model_info{})), node_(node), upload_(node) {}
 
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
@@ -93,17 +89,16 @@ public:
 
     [[nodiscard]] constexpr session_event step(const can::frame& f) noexcept {
         session_event e;
-        e.cls = classify(f);
-        // During a PK1000 node change the keypad may still answer (an abort) from the old id.
+        e.cls = canopen::classify(f);
+        // During a node change the keypad may still answer (an abort) from the old id.
         e.node = node_;
         if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
         e.decoded = decode(f, e.node, model_);
-        if (e.cls.function == bus_function::sdo_rx && e.cls.node == e.node.value())
+        if (e.cls.fn == canopen::function::sdo_rx && e.cls.node == e.node.value())
             on_request(f, e);
-        else if (e.cls.function == bus_function::sdo_tx && e.cls.node == e.node.value())
+        else if (e.cls.fn == canopen::function::sdo_tx && e.cls.node == e.node.value())
             on_reply(f, e);
-        else if (e.cls.function == bus_function::j1939 &&
-                 j1939::decode_switch_to_canopen(f).has_value()) {
+        else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
             protocol_ = bus_protocol::canopen;
             e.new_protocol = protocol_;
         }
@@ -120,7 +115,8 @@ private:
         if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) {
             pending_ = pending_kind::download;
             pending_address_ = d->address;
-            on_download(*d, e);
+            change_ = std::nullopt;
+            if (e.decoded) on_write(*e.decoded, e);
         } else if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
             pending_ = pending_kind::upload;
             pending_address_ = u->address;
@@ -134,23 +130,19 @@ private:
     }
 
     // The writes that move the keypad to another node id or protocol.
-    constexpr void on_download(const canopen::sdo_download_request& d, session_event& e) noexcept {
-        change_ = std::nullopt;
-        const auto b = d.value.bytes;
-        if (model_ == powerkey::model::pk1000 && d.address == canopen::sdo_address{0x2013, 0}) {
-            // PK1000 section 23: the reply already comes from the new id.
-            if (const auto n = canopen::node_id::make(b[0]); n && *n != node_) {
+    constexpr void on_write(const message& m, session_event& e) noexcept {
+        if (const auto n = node_id_change(m); n && *n != node_) {
+            if (info_.replies_from_new_id) {  // PK1000 section 23: the reply comes from the new id
                 previous_node_ = node_;
                 node_ = *n;
                 e.new_node = node_;
+            } else {  // PKP section 13 h: the reply from the old id, the boot-up from the new one
+                change_ = *n;
             }
-        } else if (model_ != powerkey::model::pk1000 &&
-                   d.address == canopen::sdo_address{0x6500, 1} && b[0] == 0x70) {
-            // PKP section 13 h: the reply comes from the old id, the boot-up from the new one.
-            if (const auto n = canopen::node_id::make(b[1])) change_ = *n;
-        } else if (model_ == powerkey::model::pk1000 &&
-                   d.address == canopen::sdo_address{0x20FF, 1} && b[0] == 0x01) {
-            protocol_ = bus_protocol::j1939;  // section 49
+        }
+        if (const auto* w = std::get_if<sdo_write>(&m);
+            w && w->object == object::protocol_j1939 && w->value.raw == 1) {
+            protocol_ = bus_protocol::j1939;  // PK1000 section 49
             e.new_protocol = protocol_;
         }
     }
@@ -193,7 +185,7 @@ private:
             }
         }
         if (e.cls.node == node_.value() || (previous_node_ && e.node == *previous_node_))
-            previous_node_ = std::nullopt;  // the first reply settles a PK1000 node change
+            previous_node_ = std::nullopt;  // the first reply settles a node change
     }
 
     constexpr void pair(session_event& e) noexcept {
@@ -216,12 +208,13 @@ private:
     }
 
     powerkey::model model_;
+    model_info info_;
     canopen::node_id node_;
     bus_protocol protocol_ = bus_protocol::canopen;
     pending_kind pending_ = pending_kind::none;
     canopen::sdo_address pending_address_{};
-    std::optional<canopen::node_id> previous_node_;  // PK1000 2013h: the id before the change
-    std::optional<canopen::node_id> change_;         // PKP 70h: the id after the reply
+    std::optional<canopen::node_id> previous_node_;  // the id before a change answered from the new
+    std::optional<canopen::node_id> change_;         // the id after the reply (old-id models)
     canopen::segmented_upload<TextCapacity> upload_;
 };
 

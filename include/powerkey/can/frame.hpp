@@ -91,7 +91,7 @@ private:
         const unsigned n = length.value();
         const std::uint64_t keep = n >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * n)) - 1;
         payload p{};
-        powerkey::detail::store_le_u64(p, powerkey::detail::load_le_u64(data) & keep);
+        powerkey::detail::store_le<8>(p, 0, powerkey::detail::load_le<8>(data, 0) & keep);
         return p;
     }
     template <std::size_t N>

@@ -6,9 +6,9 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/enum_table.hpp>
 
 #include <cstdint>
-#include <string_view>
 
 namespace powerkey::canopen {
 
@@ -23,26 +23,24 @@ enum class function : std::uint8_t {
     sdo_tx,     // 580h + node: SDO server (keypad) -> client
     sdo_rx,     // 600h + node: SDO client -> server (keypad)
     heartbeat,  // 700h + node: boot-up and heartbeat (NMT error control)
+    j1939,      // any 29-bit identifier: J1939, where the keypads' protocol switch lives
     other,      // any other identifier (EMCY, TIME, TPDO2.., LSS, ...)
 };
 
-// Stable lower-case names, as the command-line tool prints them.
-[[nodiscard]] constexpr std::string_view to_string(function f) noexcept {
-    switch (f) {
-        case function::nmt: return "nmt";
-        case function::sync: return "sync";
-        case function::tpdo1: return "tpdo1";
-        case function::rpdo1: return "rpdo1";
-        case function::rpdo2: return "rpdo2";
-        case function::rpdo3: return "rpdo3";
-        case function::rpdo4: return "rpdo4";
-        case function::sdo_tx: return "sdo_tx";
-        case function::sdo_rx: return "sdo_rx";
-        case function::heartbeat: return "heartbeat";
-        case function::other: return "other";
-    }
-    return "other";
-}
+}  // namespace powerkey::canopen
+
+template <>
+struct powerkey::enum_names<powerkey::canopen::function> {
+    using f = canopen::function;
+    static constexpr enum_name_entry<f> entries[] = {
+        {f::nmt, "nmt"},         {f::sync, "sync"},     {f::tpdo1, "tpdo1"},
+        {f::rpdo1, "rpdo1"},     {f::rpdo2, "rpdo2"},   {f::rpdo3, "rpdo3"},
+        {f::rpdo4, "rpdo4"},     {f::sdo_tx, "sdo_tx"}, {f::sdo_rx, "sdo_rx"},
+        {f::heartbeat, "heartbeat"}, {f::j1939, "j1939"}, {f::other, "other"},
+    };
+};
+
+namespace powerkey::canopen {
 
 namespace detail {
 // Function code base (bits 10..7 of the COB-ID) of each per-node function; 0 for the others.
@@ -75,7 +73,7 @@ inline constexpr can::standard_id sync_cob_id = 0x080;
 // Which function and (for per-node functions) which node an identifier belongs to.
 struct cob_info {
     function fn = function::other;
-    std::uint8_t node = 0;  // 1..127 for per-node functions, 0 for nmt, sync and other
+    std::uint8_t node = 0;  // 1..127 for per-node functions, 0 for nmt, sync, j1939 and other
     friend constexpr bool operator==(const cob_info&, const cob_info&) noexcept = default;
 };
 
@@ -102,10 +100,22 @@ struct cob_info {
     return {f, node};
 }
 
-// The same for any frame: a 29-bit identifier is never CANopen, so it is `other`.
+// The same for any frame: every 29-bit identifier is `j1939` (node 0).
 [[nodiscard]] constexpr cob_info classify(const can::frame& f) noexcept {
-    if (const auto id = f.std_id()) return classify(*id);
-    return {function::other, 0};
+    if (f.is_extended()) return {function::j1939, 0};
+    return classify(can::standard_id::make(f.raw_id()).value());
+}
+
+// True when the frame is addressed to or sent by the keypad `node`: NMT and SYNC (every node
+// hears them), a J1939 frame (the keypads' protocol switch), or a per-node COB-ID of `node`.
+[[nodiscard]] constexpr bool concerns(const cob_info& c, node_id node) noexcept {
+    switch (c.fn) {
+        case function::nmt:
+        case function::sync:
+        case function::j1939: return true;
+        case function::other: return false;
+        default: return c.node == node.value();
+    }
 }
 
 }  // namespace powerkey::canopen

@@ -7,6 +7,7 @@
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/enum_table.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -20,15 +21,20 @@ enum class nmt_state : std::uint8_t {
     pre_operational = 0x7F,
 };
 
-[[nodiscard]] constexpr std::string_view to_string(nmt_state s) noexcept {
-    switch (s) {
-        case nmt_state::boot_up: return "boot_up";
-        case nmt_state::stopped: return "stopped";
-        case nmt_state::operational: return "operational";
-        case nmt_state::pre_operational: return "pre_operational";
-    }
-    return "unknown";
-}
+}  // namespace powerkey::canopen
+
+template <>
+struct powerkey::enum_names<powerkey::canopen::nmt_state> {
+    using s = canopen::nmt_state;
+    static constexpr enum_name_entry<s> entries[] = {
+        {s::boot_up, "boot_up"},
+        {s::stopped, "stopped"},
+        {s::operational, "operational"},
+        {s::pre_operational, "pre_operational"},
+    };
+};
+
+namespace powerkey::canopen {
 
 struct heartbeat_message {
     static constexpr std::string_view kind = "heartbeat";

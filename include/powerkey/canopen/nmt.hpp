@@ -8,6 +8,7 @@
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/enum_table.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -23,19 +24,22 @@ enum class nmt_command : std::uint8_t {
     reset_communication = 0x82,
 };
 
-// Stable names as the command-line tool prints them; legacy_stop prints as "stop" too,
-// since that is what it does (use the enum to tell the two apart).
-[[nodiscard]] constexpr std::string_view to_string(nmt_command c) noexcept {
-    switch (c) {
-        case nmt_command::legacy_stop:
-        case nmt_command::stop: return "stop";
-        case nmt_command::start: return "start";
-        case nmt_command::enter_pre_operational: return "pre_operational";
-        case nmt_command::reset_node: return "reset_node";
-        case nmt_command::reset_communication: return "reset_communication";
-    }
-    return "unknown";
-}
+}  // namespace powerkey::canopen
+
+template <>
+struct powerkey::enum_names<powerkey::canopen::nmt_command> {
+    using c = canopen::nmt_command;
+    static constexpr enum_name_entry<c> entries[] = {
+        {c::start, "start"},
+        {c::stop, "stop"},
+        {c::enter_pre_operational, "pre_operational"},
+        {c::reset_node, "reset_node"},
+        {c::reset_communication, "reset_communication"},
+        {c::legacy_stop, "legacy_stop"},
+    };
+};
+
+namespace powerkey::canopen {
 
 struct nmt_message {
     static constexpr std::string_view kind = "nmt";

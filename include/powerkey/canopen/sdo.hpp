@@ -15,6 +15,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/bytes.hpp>
 #include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/enum_table.hpp>
 
 #include <array>
 #include <cstdint>
@@ -60,12 +61,12 @@ struct expedited_data {
     }
     [[nodiscard]] static constexpr expedited_data u16(std::uint16_t v) noexcept {
         expedited_data d{2, {}};
-        powerkey::detail::store_le_u16(d.bytes, 0, v);
+        powerkey::detail::store_le<2>(d.bytes, 0, v);
         return d;
     }
     [[nodiscard]] static constexpr expedited_data u32(std::uint32_t v) noexcept {
         expedited_data d{4, {}};
-        powerkey::detail::store_le_u32(d.bytes, 0, v);
+        powerkey::detail::store_le<4>(d.bytes, 0, v);
         return d;
     }
     friend constexpr bool operator==(const expedited_data&,
@@ -224,43 +225,48 @@ enum class sdo_abort_code : std::uint32_t {
     no_data = 0x0800'0024,
 };
 
-// The enumerator's name, or "" for a code CiA 301 does not name.
-[[nodiscard]] constexpr std::string_view to_string(sdo_abort_code c) noexcept {
-    switch (c) {
-        case sdo_abort_code::toggle_bit_not_alternated: return "toggle_bit_not_alternated";
-        case sdo_abort_code::timed_out: return "timed_out";
-        case sdo_abort_code::invalid_command_specifier: return "invalid_command_specifier";
-        case sdo_abort_code::invalid_block_size: return "invalid_block_size";
-        case sdo_abort_code::invalid_sequence_number: return "invalid_sequence_number";
-        case sdo_abort_code::crc_error: return "crc_error";
-        case sdo_abort_code::out_of_memory: return "out_of_memory";
-        case sdo_abort_code::unsupported_access: return "unsupported_access";
-        case sdo_abort_code::write_only: return "write_only";
-        case sdo_abort_code::read_only: return "read_only";
-        case sdo_abort_code::object_does_not_exist: return "object_does_not_exist";
-        case sdo_abort_code::cannot_be_mapped: return "cannot_be_mapped";
-        case sdo_abort_code::exceeds_pdo_length: return "exceeds_pdo_length";
-        case sdo_abort_code::parameter_incompatibility: return "parameter_incompatibility";
-        case sdo_abort_code::internal_incompatibility: return "internal_incompatibility";
-        case sdo_abort_code::hardware_error: return "hardware_error";
-        case sdo_abort_code::length_mismatch: return "length_mismatch";
-        case sdo_abort_code::length_too_high: return "length_too_high";
-        case sdo_abort_code::length_too_low: return "length_too_low";
-        case sdo_abort_code::subindex_does_not_exist: return "subindex_does_not_exist";
-        case sdo_abort_code::invalid_value: return "invalid_value";
-        case sdo_abort_code::value_too_high: return "value_too_high";
-        case sdo_abort_code::value_too_low: return "value_too_low";
-        case sdo_abort_code::max_less_than_min: return "max_less_than_min";
-        case sdo_abort_code::resource_not_available: return "resource_not_available";
-        case sdo_abort_code::general_error: return "general_error";
-        case sdo_abort_code::cannot_store: return "cannot_store";
-        case sdo_abort_code::cannot_store_local_control: return "cannot_store_local_control";
-        case sdo_abort_code::cannot_store_device_state: return "cannot_store_device_state";
-        case sdo_abort_code::no_object_dictionary: return "no_object_dictionary";
-        case sdo_abort_code::no_data: return "no_data";
-    }
-    return "";
-}
+}  // namespace powerkey::canopen
+
+// CiA 301 table 22's abort codes by name; a code CiA 301 does not name prints as "".
+template <>
+struct powerkey::enum_names<powerkey::canopen::sdo_abort_code> {
+    using c = canopen::sdo_abort_code;
+    static constexpr enum_name_entry<c> entries[] = {
+        {c::toggle_bit_not_alternated, "toggle_bit_not_alternated"},
+        {c::timed_out, "timed_out"},
+        {c::invalid_command_specifier, "invalid_command_specifier"},
+        {c::invalid_block_size, "invalid_block_size"},
+        {c::invalid_sequence_number, "invalid_sequence_number"},
+        {c::crc_error, "crc_error"},
+        {c::out_of_memory, "out_of_memory"},
+        {c::unsupported_access, "unsupported_access"},
+        {c::write_only, "write_only"},
+        {c::read_only, "read_only"},
+        {c::object_does_not_exist, "object_does_not_exist"},
+        {c::cannot_be_mapped, "cannot_be_mapped"},
+        {c::exceeds_pdo_length, "exceeds_pdo_length"},
+        {c::parameter_incompatibility, "parameter_incompatibility"},
+        {c::internal_incompatibility, "internal_incompatibility"},
+        {c::hardware_error, "hardware_error"},
+        {c::length_mismatch, "length_mismatch"},
+        {c::length_too_high, "length_too_high"},
+        {c::length_too_low, "length_too_low"},
+        {c::subindex_does_not_exist, "subindex_does_not_exist"},
+        {c::invalid_value, "invalid_value"},
+        {c::value_too_high, "value_too_high"},
+        {c::value_too_low, "value_too_low"},
+        {c::max_less_than_min, "max_less_than_min"},
+        {c::resource_not_available, "resource_not_available"},
+        {c::general_error, "general_error"},
+        {c::cannot_store, "cannot_store"},
+        {c::cannot_store_local_control, "cannot_store_local_control"},
+        {c::cannot_store_device_state, "cannot_store_device_state"},
+        {c::no_object_dictionary, "no_object_dictionary"},
+        {c::no_data, "no_data"},
+    };
+};
+
+namespace powerkey::canopen {
 
 // Abort transfer (80h), index, sub-index and a 32-bit code.
 struct sdo_abort {
@@ -276,9 +282,9 @@ struct sdo_abort {
     friend constexpr bool operator==(const sdo_abort&, const sdo_abort&) noexcept = default;
 };
 
-// An abort sent by the client (600h + node), as a message of its own: canopen::sdo_abort has no
-// direction, and the profiles' and the any-frame decoder's variants need the two kept apart so
-// that each re-encodes on its own COB-ID.
+// The two directions of an abort as messages of their own: canopen::sdo_abort has no direction,
+// and a message type that holds both needs them apart so that each re-encodes on its COB-ID.
+// Sent by the client (600h + node):
 struct sdo_abort_request {
     static constexpr std::string_view kind = "sdo_abort_request";
     template <class Self, class F>
@@ -288,6 +294,18 @@ struct sdo_abort_request {
     sdo_abort abort;
     friend constexpr bool operator==(const sdo_abort_request&,
                                      const sdo_abort_request&) noexcept = default;
+};
+
+// Sent by the keypad (580h + node):
+struct sdo_abort_response {
+    static constexpr std::string_view kind = "sdo_abort_response";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        sdo_abort::fields(self.abort, f);
+    }
+    sdo_abort abort;
+    friend constexpr bool operator==(const sdo_abort_response&,
+                                     const sdo_abort_response&) noexcept = default;
 };
 
 using sdo_request =
@@ -301,7 +319,7 @@ namespace detail {
 constexpr can::payload with_address(std::uint8_t command, sdo_address a) noexcept {
     can::payload p{};
     p[0] = command;
-    powerkey::detail::store_le_u16(p, 1, a.index);
+    powerkey::detail::store_le<2>(p, 1, a.index);
     p[3] = a.subindex;
     return p;
 }
@@ -345,7 +363,7 @@ constexpr can::payload with_data(std::uint8_t command, sdo_address a,
 [[nodiscard]] constexpr can::frame encode(node_id node,
                                           const sdo_upload_initiate_response& m) noexcept {
     auto p = detail::with_address(m.size_indicated ? 0x41 : 0x40, m.address);
-    powerkey::detail::store_le_u32(p, 4, m.size);
+    powerkey::detail::store_le<4>(p, 4, m.size);
     return detail::sdo_frame(function::sdo_tx, node, p);
 }
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_segment_response& m) noexcept {
@@ -362,13 +380,16 @@ enum class sdo_direction : std::uint8_t { request, response };
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_abort& m,
                                           sdo_direction dir) noexcept {
     auto p = detail::with_address(0x80, m.address);
-    powerkey::detail::store_le_u32(p, 4, static_cast<std::uint32_t>(m.code));
+    powerkey::detail::store_le<4>(p, 4, static_cast<std::uint32_t>(m.code));
     return detail::sdo_frame(dir == sdo_direction::request ? function::sdo_rx : function::sdo_tx,
                              node, p);
 }
 
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_abort_request& m) noexcept {
     return encode(node, m.abort, sdo_direction::request);
+}
+[[nodiscard]] constexpr can::frame encode(node_id node, const sdo_abort_response& m) noexcept {
+    return encode(node, m.abort, sdo_direction::response);
 }
 
 [[nodiscard]] constexpr can::frame encode_request(node_id node, const sdo_request& m) noexcept {
@@ -396,7 +417,7 @@ enum class sdo_direction : std::uint8_t { request, response };
 
 namespace detail {
 constexpr sdo_address address_of(const can::frame& f) noexcept {
-    return {powerkey::detail::load_le_u16(f.bytes(), 1), f[3]};
+    return {static_cast<std::uint16_t>(powerkey::detail::load_le<2>(f.bytes(), 1)), f[3]};
 }
 constexpr std::array<std::uint8_t, 4> data_of(const can::frame& f) noexcept {
     return {f[4], f[5], f[6], f[7]};
@@ -406,7 +427,7 @@ constexpr expedited_data expedited_of(const can::frame& f) noexcept {
 }
 constexpr sdo_abort abort_of(const can::frame& f) noexcept {
     return {address_of(f),
-            static_cast<sdo_abort_code>(powerkey::detail::load_le_u32(f.bytes(), 4))};
+            static_cast<sdo_abort_code>(static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4)))};
 }
 }  // namespace detail
 
@@ -466,7 +487,7 @@ constexpr sdo_abort abort_of(const can::frame& f) noexcept {
             if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
             return sdo_response{
                 sdo_upload_initiate_response{detail::address_of(f), (c & 0x01) != 0,
-                                             powerkey::detail::load_le_u32(f.bytes(), 4)}};
+                                             static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4))}};
         case 3:  // initiate download response
             if (c != 0x60 || !powerkey::detail::all_zero(f.bytes(), 4, 8))
                 return errc::reserved_not_zero;

@@ -1,5 +1,10 @@
-// powerkey detail: little-endian loads and stores on byte arrays, by shifts only, so that they
-// work in constant evaluation and do not depend on the host's byte order. Never public API.
+// powerkey detail: the one little-endian load and store, by shifts only, so that they work in
+// constant evaluation and do not depend on the host's byte order. Never public API.
+//   load_le<N>(bytes, at)        N bytes from `at`, N known at compile time (1..8)
+//   load_le(bytes, at, width)    the same with a run-time width (0..8): bit maps of any model
+//   store_le<N>(bytes, at, v)    the inverse
+// Written as one expression per width rather than a loop: g++ -O2 merges it into a single load
+// (a byte loop cost ~55 instructions, docs/performance.md).
 #ifndef POWERKEY_DETAIL_BYTES_HPP
 #define POWERKEY_DETAIL_BYTES_HPP
 
@@ -8,43 +13,39 @@
 
 namespace powerkey::detail {
 
+// Bytes [at, at + width) only: a decoder never reads past the dlc (the invariant tests poison
+// those bytes under ASan). A switch that falls through: g++ -O2 left a loop at ~55 instructions.
 template <class Bytes>
-constexpr std::uint16_t load_le_u16(const Bytes& b, std::size_t at) noexcept {
-    return static_cast<std::uint16_t>(b[at] | (b[at + 1] << 8));
+constexpr std::uint64_t load_le(const Bytes& b, std::size_t at, std::size_t width) noexcept {
+    std::uint64_t v = 0;
+    const auto byte = [&b, at](std::size_t i) { return std::uint64_t{b[at + i]} << (8 * i); };
+    switch (width) {
+        case 8: v |= byte(7); [[fallthrough]];
+        case 7: v |= byte(6); [[fallthrough]];
+        case 6: v |= byte(5); [[fallthrough]];
+        case 5: v |= byte(4); [[fallthrough]];
+        case 4: v |= byte(3); [[fallthrough]];
+        case 3: v |= byte(2); [[fallthrough]];
+        case 2: v |= byte(1); [[fallthrough]];
+        case 1: v |= byte(0); [[fallthrough]];
+        default: break;
+    }
+    return v;
+}
+
+template <std::size_t N, class Bytes>
+requires(N >= 1 && N <= 8) constexpr std::uint64_t load_le(const Bytes& b, std::size_t at) noexcept {
+    return load_le(b, at, N);
+}
+
+template <std::size_t N, class Bytes>
+requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at, std::uint64_t v) noexcept {
+    for (std::size_t i = 0; i < N; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
 template <class Bytes>
-constexpr std::uint32_t load_le_u32(const Bytes& b, std::size_t at) noexcept {
-    return static_cast<std::uint32_t>(b[at]) | (static_cast<std::uint32_t>(b[at + 1]) << 8) |
-           (static_cast<std::uint32_t>(b[at + 2]) << 16) |
-           (static_cast<std::uint32_t>(b[at + 3]) << 24);
-}
-
-template <class Bytes>
-constexpr void store_le_u16(Bytes& b, std::size_t at, std::uint16_t v) noexcept {
-    b[at] = static_cast<std::uint8_t>(v);
-    b[at + 1] = static_cast<std::uint8_t>(v >> 8);
-}
-
-template <class Bytes>
-constexpr void store_le_u32(Bytes& b, std::size_t at, std::uint32_t v) noexcept {
-    b[at] = static_cast<std::uint8_t>(v);
-    b[at + 1] = static_cast<std::uint8_t>(v >> 8);
-    b[at + 2] = static_cast<std::uint8_t>(v >> 16);
-    b[at + 3] = static_cast<std::uint8_t>(v >> 24);
-}
-
-// All eight bytes of a payload as one little-endian number. Written out rather than as a loop:
-// g++ -O2 merges this form into a single 64-bit load (the loop cost ~55 instructions).
-template <class Bytes>
-constexpr std::uint64_t load_le_u64(const Bytes& b) noexcept {
-    return std::uint64_t{load_le_u32(b, 0)} | (std::uint64_t{load_le_u32(b, 4)} << 32);
-}
-
-template <class Bytes>
-constexpr void store_le_u64(Bytes& b, std::uint64_t v) noexcept {
-    store_le_u32(b, 0, static_cast<std::uint32_t>(v));
-    store_le_u32(b, 4, static_cast<std::uint32_t>(v >> 32));
+constexpr void store_le(Bytes& b, std::size_t at, std::size_t width, std::uint64_t v) noexcept {
+    for (std::size_t i = 0; i < width; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
 // True when bytes [from, to) are all zero.

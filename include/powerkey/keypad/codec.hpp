@@ -1,0 +1,432 @@
+// powerkey: every frame of every keypad behind two calls, driven by the model table:
+//
+//   decode(frame, node, model)     -> result<message>      any CAN frame to its meaning, or an errc
+//   encode(node, model, message)   -> result<can::frame>   the inverse: encode(decode(f)) == f
+//
+// `node` is the keypad's current node id: it picks the COB-IDs of the PDOs, SDOs and heartbeat.
+// A frame that belongs to no keypad (another node, another function) is refused with
+// errc::wrong_id, never mis-decoded. encode refuses every message decode could never return
+// (a key or LED the model lacks, a value outside its object's range, a write to a read-only
+// object ...), with the error decode would give its frame: it builds the frame, decodes it, and
+// returns it only when the meaning comes back unchanged.
+#ifndef POWERKEY_KEYPAD_CODEC_HPP
+#define POWERKEY_KEYPAD_CODEC_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sync.hpp>
+#include <powerkey/detail/bytes.hpp>
+#include <powerkey/detail/checks.hpp>
+#include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/result.hpp>
+
+#include <array>
+#include <cstdint>
+#include <variant>
+
+namespace powerkey {
+
+namespace detail {
+
+template <class T>
+constexpr result<message> lift(const result<T>& r) noexcept {
+    if (!r) return r.error();
+    return message{*r};
+}
+
+// --- SDO values ---------------------------------------------------------------------------------
+
+// The value of row r carried by d; `write` for a download (a restore must carry "load").
+// Errors: size_mismatch (not the row's size), reserved_not_zero (bytes past the size, bits that
+// name no key or LED, reserved bits of a COB-ID, device type or consumer heartbeat),
+// value_out_of_range (outside the row's range), unknown_object (an object without a value).
+constexpr result<object_value> read_value(const model_info& m, const object_row& r,
+                                          const canopen::expedited_data& d, bool write) noexcept {
+    const auto k = kind_of(r.id);
+    const std::uint8_t size = r.size == 0 ? d.size.value() : r.size;
+    if (d.size.value() != size) return errc::size_mismatch;
+    if (!all_zero(d.bytes, size, 4)) return errc::reserved_not_zero;
+    const std::uint32_t raw = d.value();
+    object_value v{raw, {}, 0};
+    switch (k.kind) {
+        case value_kind::number:
+        case value_kind::flag:
+        case value_kind::brightness:
+        case value_kind::colour:
+        case value_kind::baud:
+        case value_kind::show:
+        case value_kind::node:
+            if (!r.in_range(raw)) return errc::value_out_of_range;
+            return v;
+        case value_kind::period:
+            if (raw != 0 && !r.in_range(raw)) return errc::value_out_of_range;
+            return v;
+        case value_kind::keys: {
+            const auto keys = unpack_keys(m, raw);
+            if (!keys) return keys.error();
+            return v;
+        }
+        case value_kind::led_plane:
+            if ((std::uint64_t{raw} >> m.leds) != 0) return errc::reserved_not_zero;
+            v.raw = 0;
+            v.map.of(k.holds) = led_set::from_mask(raw);
+            return v;
+        case value_kind::led_map: {
+            const auto l = unpack_leds(m, raw, m.object_planes());
+            if (!l) return l.error();
+            return object_value{0, *l, 0};
+        }
+        case value_kind::consumer_heartbeat: {
+            if ((raw >> 24) != 0) return errc::reserved_not_zero;
+            const auto time = raw & 0xFFFF;
+            if (!canopen::node_id::make((raw >> 16) & 0xFF) || (time != 0 && !r.in_range(time)))
+                return errc::value_out_of_range;
+            return v;
+        }
+        case value_kind::cob_id:
+            if ((raw & 0x3FFF'F800u) != 0) return errc::reserved_not_zero;
+            return v;
+        case value_kind::device_type:
+            if ((raw >> 20) != 0) return errc::reserved_not_zero;
+            return v;
+        case value_kind::pdo_mapping: return v;
+        case value_kind::string: v.size = size; return v;
+        case value_kind::restore:
+            if (write && raw != load_signature) return errc::value_out_of_range;
+            return v;
+        case value_kind::none:
+        case value_kind::commands: break;
+    }
+    return errc::unknown_object;
+}
+
+// The expedited bytes of a value of row r (what read_value reads back; the codec checks it).
+constexpr canopen::expedited_data write_value(const model_info& m, const object_row& r,
+                                              const object_value& v) noexcept {
+    const auto k = kind_of(r.id);
+    std::uint64_t raw = v.raw;
+    if (k.kind == value_kind::led_plane) raw = v.map.of(k.holds).mask();
+    if (k.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
+    std::uint8_t size = r.size;
+    if (r.size == 0) size = v.size >= 1 && v.size <= 4 ? v.size : 4;
+    canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
+    store_le<4>(d.bytes, 0, raw);
+    return d;
+}
+
+// --- the command module -------------------------------------------------------------------------
+
+// Errors: value_out_of_range for a parameter outside its range.
+constexpr errc read_param(const model_info& m, command_param p, std::uint8_t b,
+                          command& c) noexcept {
+    switch (p) {
+        case command_param::none: return errc{};
+        case command_param::key:
+            if (b < 1 || b > m.keys) return errc::value_out_of_range;
+            c.key = b;
+            return errc{};
+        case command_param::state:
+            if (b > 0x0E || b == 0x0B || b == 0x0D) return errc::value_out_of_range;
+            c.state = static_cast<led_state>(b);
+            return errc{};
+        case command_param::brightness:
+            if (b > 0x3F) return errc::value_out_of_range;
+            c.level = level::make(b).value();
+            return errc{};
+        case command_param::colour:
+            if (b < 1 || b > 9) return errc::value_out_of_range;
+            c.colour = static_cast<backlight_colour>(b);
+            return errc{};
+        case command_param::flag:
+            if (b > 1) return errc::value_out_of_range;
+            c.enabled = b == 1;
+            return errc{};
+        case command_param::baud:
+            if (b >= std::size(command_bauds)) return errc::value_out_of_range;
+            c.baud = command_bauds[b];
+            return errc{};
+        case command_param::period_10ms: c.period_10ms = b; return errc{};
+        case command_param::node: {
+            const auto n = canopen::node_id::make(b);
+            if (!n) return n.error();
+            c.node_id = *n;
+            return errc{};
+        }
+        case command_param::show:
+            if (b < 1 || b > std::size(command_shows)) return errc::value_out_of_range;
+            c.show = command_shows[b - 1u];
+            return errc{};
+    }
+    return errc::value_out_of_range;
+}
+
+constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
+    switch (p) {
+        case command_param::key: return c.key;
+        case command_param::state: return static_cast<std::uint8_t>(c.state);
+        case command_param::brightness: return c.level.value();
+        case command_param::colour: return static_cast<std::uint8_t>(c.colour);
+        case command_param::flag: return c.enabled ? 1 : 0;
+        case command_param::baud:
+            for (std::uint8_t i = 0; i < std::size(command_bauds); ++i)
+                if (command_bauds[i] == c.baud) return i;
+            return 0xFF;
+        case command_param::period_10ms: return c.period_10ms;
+        case command_param::node: return c.node_id.value();
+        case command_param::show:
+            for (std::uint8_t i = 0; i < std::size(command_shows); ++i)
+                if (command_shows[i] == c.show) return static_cast<std::uint8_t>(i + 1);
+            return 0xFF;
+        case command_param::none: break;
+    }
+    return 0;
+}
+
+// The command in a download to 6500h sub 1. Errors, in this order: size_mismatch (not 4 bytes),
+// unknown_command (byte 4 names no command), reserved_not_zero (byte 7, or byte 6 of a
+// one-parameter command, not 00h), value_out_of_range (a parameter outside its range).
+constexpr result<command> read_command(const model_info& m,
+                                       const canopen::expedited_data& d) noexcept {
+    if (d.size.value() != 4) return errc::size_mismatch;
+    const auto& b = d.bytes;
+    const auto row = find_command(b[0]);
+    if (!row) return errc::unknown_command;
+    if (b[3] != 0 || (row->p2 == command_param::none && b[2] != 0)) return errc::reserved_not_zero;
+    command c;
+    c.code = row->code;
+    if (const auto e = read_param(m, row->p1, b[1], c); e != errc{}) return e;
+    if (const auto e = read_param(m, row->p2, b[2], c); e != errc{}) return e;
+    return c;
+}
+
+constexpr canopen::expedited_data write_command(const command& c) noexcept {
+    const auto row = find_command(static_cast<std::uint8_t>(c.code));
+    if (!row) return {4, {static_cast<std::uint8_t>(c.code), 0, 0, 0}};
+    return {4, {static_cast<std::uint8_t>(c.code), write_param(row->p1, c),
+                write_param(row->p2, c), 0}};
+}
+
+// --- SDO frames ---------------------------------------------------------------------------------
+
+constexpr result<message> decode_request(const model_info& m, const can::frame& f,
+                                         canopen::node_id node) noexcept {
+    const auto r = canopen::decode_sdo_request(f, node);
+    if (!r) return r.error();
+    if (const auto* s = std::get_if<canopen::sdo_segment_request>(&*r)) return message{*s};
+    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r))
+        return message{canopen::sdo_abort_request{*a}};
+    if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
+        const auto row = find_row(m.dictionary, u->address);
+        if (!row) return errc::unknown_object;
+        if (!row->readable()) return errc::unknown_command;
+        return message{sdo_read{row->id}};
+    }
+    const auto& d = std::get<canopen::sdo_download_request>(*r);
+    const auto row = find_row(m.dictionary, d.address);
+    if (!row) return errc::unknown_object;
+    if (!row->writable()) return errc::unknown_command;
+    if (kind_of(row->id).kind == value_kind::commands) return lift(read_command(m, d.value));
+    const auto v = read_value(m, *row, d.value, true);
+    if (!v) return v.error();
+    return message{sdo_write{row->id, *v}};
+}
+
+constexpr result<message> decode_response(const model_info& m, const can::frame& f,
+                                          canopen::node_id node) noexcept {
+    const auto r = canopen::decode_sdo_response(f, node);
+    if (!r) return r.error();
+    if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) return message{*s};
+    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r))
+        return message{canopen::sdo_abort_response{*a}};
+    if (const auto* w = std::get_if<canopen::sdo_download_response>(&*r)) {
+        const auto row = find_row(m.dictionary, w->address);
+        if (!row) return errc::unknown_object;
+        if (!row->writable()) return errc::unknown_command;
+        return message{sdo_write_reply{row->id}};
+    }
+    if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
+        const auto row = find_row(m.dictionary, i->address);
+        if (!row || kind_of(row->id).kind != value_kind::string) return errc::unknown_object;
+        return message{*i};
+    }
+    const auto& u = std::get<canopen::sdo_upload_response>(*r);
+    const auto row = find_row(m.dictionary, u.address);
+    if (!row) return errc::unknown_object;
+    if (!row->readable()) return errc::unknown_command;
+    const auto v = read_value(m, *row, u.value, false);
+    if (!v) return v.error();
+    return message{sdo_read_reply{row->id, *v}};
+}
+
+// --- PDO frames ---------------------------------------------------------------------------------
+
+constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
+                                     const can::frame& f, canopen::node_id node) noexcept {
+    switch (fn) {
+        case canopen::function::tpdo1: {
+            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 5); e != errc{}) return e;
+            if (f[2] != 0 || f[3] != 0) return errc::reserved_not_zero;
+            const auto keys = unpack_keys(m, load_le<2>(f.bytes(), 0));
+            if (!keys) return keys.error();
+            return message{key_state{*keys, f[4]}};
+        }
+        case canopen::function::rpdo1:
+        case canopen::function::rpdo2: {
+            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            const auto l = unpack_leds(m, load_le<8>(f.bytes(), 0), m.planes);
+            if (!l) return l.error();
+            if (fn == canopen::function::rpdo1) return message{led_on{*l}};
+            return message{led_blink{*l}};
+        }
+        case canopen::function::rpdo3: {
+            if (!m.brightness_pdo) return errc::wrong_id;
+            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            if (!all_zero(f.bytes(), 1, 8)) return errc::reserved_not_zero;
+            const auto l = level::make(f[0]);
+            if (!l) return l.error();
+            return message{led_brightness{*l}};
+        }
+        case canopen::function::rpdo4: {
+            if (!m.backlight_pdo) return errc::wrong_id;
+            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            if (!all_zero(f.bytes(), 2, 8)) return errc::reserved_not_zero;
+            const auto l = level::make(f[0]);
+            if (!l) return l.error();
+            if (f[1] > 0x09) return errc::value_out_of_range;
+            return message{backlight{*l, static_cast<backlight_colour>(f[1])}};
+        }
+        default: return errc::wrong_id;
+    }
+}
+
+// --- encoding -----------------------------------------------------------------------------------
+
+constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node, std::uint8_t dlc,
+                               std::uint64_t bits) noexcept {
+    can::payload p{};
+    store_le<8>(p, 0, bits);
+    return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
+}
+
+constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
+                                   const message& msg) noexcept {
+    using canopen::function;
+    return std::visit(
+        [&](const auto& v) -> result<can::frame> {
+            using T = std::remove_cvref_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, canopen::nmt_message> ||
+                          std::is_same_v<T, canopen::sync_message> ||
+                          std::is_same_v<T, j1939::switch_to_canopen>) {
+                return encode(v);  // canopen::encode or j1939::encode, found by ADL
+            } else if constexpr (std::is_same_v<T, key_state>) {
+                return pdo_frame(function::tpdo1, node, 5,
+                                 (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
+            } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
+                return pdo_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2,
+                                 node, 8, pack_leds(m, v.map, m.planes));
+            } else if constexpr (std::is_same_v<T, led_brightness>) {
+                return pdo_frame(function::rpdo3, node, 8, v.level.value());
+            } else if constexpr (std::is_same_v<T, backlight>) {
+                return pdo_frame(function::rpdo4, node, 8,
+                                 v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(
+                                                        v.colour)}
+                                                    << 8));
+            } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
+                                 std::is_same_v<T, sdo_read_reply> ||
+                                 std::is_same_v<T, sdo_write_reply>) {
+                const auto row = find_row(m.dictionary, v.object);
+                if (!row) return errc::unknown_object;
+                if constexpr (std::is_same_v<T, sdo_read>) {
+                    return canopen::encode(node, canopen::sdo_upload_request{row->address});
+                } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
+                    return canopen::encode(node, canopen::sdo_download_response{row->address});
+                } else if constexpr (std::is_same_v<T, sdo_write>) {
+                    if (kind_of(v.object).kind == value_kind::commands)
+                        return errc::unknown_object;  // a command is a `command`
+                    return canopen::encode(
+                        node, canopen::sdo_download_request{row->address, write_value(m, *row, v.value)});
+                } else {
+                    return canopen::encode(
+                        node, canopen::sdo_upload_response{row->address, write_value(m, *row, v.value)});
+                }
+            } else if constexpr (std::is_same_v<T, command>) {
+                const auto row = find_row(m.dictionary, object::command_module);
+                if (!row) return errc::unknown_object;
+                return canopen::encode(node,
+                                       canopen::sdo_download_request{row->address, write_command(v)});
+            } else {
+                return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
+            }
+        },
+        msg);
+}
+
+}  // namespace detail
+
+// Any frame of keypad `node` of model `m`. Errors:
+//   wrong_id_format     a 29-bit frame for a keypad without J1939
+//   wrong_id            another node's COB-ID, a function the model does not use, a 29-bit frame
+//                       on a PGN other than EF00h
+//   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes)
+//   unknown_command     an NMT command or SDO specifier the keypads do not use; an access the
+//                       object does not have (a write to a read-only object, a read of 6500h,
+//                       the acknowledgement of either); a command byte 6500h does not define
+//   unknown_object      an SDO for an address the model's dictionary does not define; a value
+//                       reply for an object without one (1001h); a segmented reply for a number
+//   size_mismatch       an expedited SDO whose size is not the object's
+//   reserved_not_zero   a reserved bit or byte set: a key or LED the model lacks, bytes past the
+//                       size, reserved bits of COB-IDs and of the PDOs
+//   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
+//                       node id, heartbeat 1..9 ms, ...), or m is not a model
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node,
+                                               model m) noexcept {
+    const auto mi = info(m);
+    if (!mi) return mi.error();
+    const auto c = canopen::classify(f);
+    switch (c.fn) {
+        case canopen::function::nmt: return detail::lift(canopen::decode_nmt(f));
+        case canopen::function::sync: return detail::lift(canopen::decode_sync(f));
+        case canopen::function::j1939:
+            if (!mi->j1939) return errc::wrong_id_format;
+            return detail::lift(j1939::decode_switch_to_canopen(f));
+        case canopen::function::other: return errc::wrong_id;
+        default: break;
+    }
+    if (c.node != node.value()) return errc::wrong_id;
+    switch (c.fn) {
+        case canopen::function::sdo_rx: return detail::decode_request(*mi, f, node);
+        case canopen::function::sdo_tx: return detail::decode_response(*mi, f, node);
+        case canopen::function::heartbeat:
+            return detail::lift(canopen::decode_heartbeat(f, node));
+        default: return detail::decode_pdo(*mi, c.fn, f, node);
+    }
+}
+
+// The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg.
+// A message decode could never return is refused with the error decode gives its frame
+// (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
+// carry, members the message's kind does not use set), or unknown_object for an object the
+// model's dictionary does not have.
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
+                                                  const message& msg) noexcept {
+    const auto mi = info(m);
+    if (!mi) return mi.error();
+    const auto f = detail::build(*mi, node, msg);
+    if (!f) return f.error();
+    const auto back = decode(*f, node, m);
+    if (!back) return back.error();
+    if (!(*back == msg)) return errc::value_out_of_range;
+    return *f;
+}
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_KEYPAD_CODEC_HPP

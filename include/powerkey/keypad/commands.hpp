@@ -1,0 +1,153 @@
+// powerkey: the PKP command module, object 6500h sub 1 (PKP manual section 13), as data. Every
+// command is an expedited 4-byte download to 600h + node:
+//   23 00 65 01 | cc p1 p2 00      cc the command, p1 p2 its parameters (00h where unused)
+// and the keypad answers 60 00 65 01 00 00 00 00 (an sdo_write_reply of command_module). One
+// table row per command names its parameters; one message type, `command`, carries any of them.
+#ifndef POWERKEY_KEYPAD_COMMANDS_HPP
+#define POWERKEY_KEYPAD_COMMANDS_HPP
+
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/keypad/values.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace powerkey {
+
+// The command byte (byte 4) of each command, PKP section 13 a-m.
+enum class command_code : std::uint8_t {
+    set_led_state = 0x01,                 // 13 a: one key LED
+    set_led_brightness = 0x02,            // 13 b
+    set_backlight_level = 0x03,           // 13 b
+    set_backlight_colour = 0x04,          // 13 c
+    set_active_on_startup = 0x10,         // 13 d
+    set_baud_rate = 0x11,                 // 13 e
+    set_periodic_transmission = 0x12,     // 13 f: key-state PDO every period_10ms x 10 ms
+    set_boot_up = 0x13,                   // 13 g: send the boot-up message at power on
+    set_startup_show = 0x50,              // 13 m
+    set_node_id = 0x70,                   // 13 h: the reply comes from the old id
+    set_demo_mode = 0x7A,                 // 13 l: after the next power cycle
+    set_default_backlight_level = 0x7B,   // 13 j
+    set_default_led_brightness = 0x7C,    // 13 i
+    set_default_backlight_colour = 0x7D,  // 13 k
+};
+
+// What a parameter byte holds, and so which field of `command` carries it.
+enum class command_param : std::uint8_t {
+    none,         // 00h
+    key,          // "key": 1..the model's keys
+    state,        // "state": led_state
+    brightness,   // "level": 00h..3Fh
+    colour,       // "colour": backlight_colour 01h..09h
+    flag,         // "enabled": 00h or 01h
+    baud,         // "baud_rate": 00h 125k, 01h 250k, 02h 500k
+    period_10ms,  // "period_10ms": 00h..FFh, units of 10 ms
+    node,         // "node_id": 01h..7Fh (E-PKP-3)
+    show,         // "startup_show": 01h complete, 02h fast flash, 03h disabled
+};
+
+struct command_row {
+    command_code code;
+    command_param p1;  // byte 5
+    command_param p2;  // byte 6
+};
+
+namespace detail {
+using cc = command_code;
+using cp = command_param;
+inline constexpr command_row command_table[] = {
+    {cc::set_led_state, cp::key, cp::state},
+    {cc::set_led_brightness, cp::brightness, cp::none},
+    {cc::set_backlight_level, cp::brightness, cp::none},
+    {cc::set_backlight_colour, cp::colour, cp::none},
+    {cc::set_active_on_startup, cp::flag, cp::none},
+    {cc::set_baud_rate, cp::baud, cp::none},
+    {cc::set_periodic_transmission, cp::flag, cp::period_10ms},
+    {cc::set_boot_up, cp::flag, cp::none},
+    {cc::set_startup_show, cp::show, cp::none},
+    {cc::set_node_id, cp::node, cp::none},
+    {cc::set_demo_mode, cp::flag, cp::none},
+    {cc::set_default_backlight_level, cp::brightness, cp::none},
+    {cc::set_default_led_brightness, cp::brightness, cp::none},
+    {cc::set_default_backlight_colour, cp::colour, cp::none},
+};
+
+// The command module's own codes for the shared baud_rate and startup_show values.
+inline constexpr baud_rate command_bauds[] = {baud_rate::kbit_125, baud_rate::kbit_250,
+                                              baud_rate::kbit_500};
+inline constexpr startup_show command_shows[] = {startup_show::complete, startup_show::fast_flash,
+                                                 startup_show::disabled};
+}  // namespace detail
+
+// The row of a command byte; nullopt for a byte no command has.
+[[nodiscard]] constexpr std::optional<command_row> find_command(std::uint8_t code) noexcept {
+    for (const auto& r : detail::command_table)
+        if (static_cast<std::uint8_t>(r.code) == code) return r;
+    return std::nullopt;
+}
+
+// One command. `code` says which; its row says which of the other members it carries (the rest
+// stay at their defaults, so that two equal commands compare equal).
+struct command {
+    static constexpr std::string_view kind = "command";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("command", self.code);
+        const auto row = find_command(static_cast<std::uint8_t>(self.code));
+        if (!row) return;
+        for (const auto p : {row->p1, row->p2}) {
+            switch (p) {
+                case command_param::key: f("key", self.key); break;
+                case command_param::state: f("state", self.state); break;
+                case command_param::brightness: f("level", self.level); break;
+                case command_param::colour: f("colour", self.colour); break;
+                case command_param::flag: f("enabled", self.enabled); break;
+                case command_param::baud: f("baud_rate", self.baud); break;
+                case command_param::period_10ms: f("period_10ms", self.period_10ms); break;
+                case command_param::node: f("node_id", self.node_id); break;
+                case command_param::show: f("startup_show", self.show); break;
+                case command_param::none: break;
+            }
+        }
+    }
+    command_code code = command_code::set_led_state;
+    std::uint8_t key = 0;  // set_led_state: the key, 1..the model's keys
+    led_state state = led_state::off;
+    powerkey::level level = 0;
+    backlight_colour colour = backlight_colour::keep;
+    bool enabled = false;
+    baud_rate baud = baud_rate::kbit_125;
+    std::uint8_t period_10ms = 0;
+    canopen::node_id node_id = canopen::default_node_id;
+    startup_show show = startup_show::complete;
+    friend constexpr bool operator==(const command&, const command&) noexcept = default;
+};
+
+template <>
+struct enum_names<command_code> {
+    using c = command_code;
+    static constexpr enum_name_entry<c> entries[] = {
+        {c::set_led_state, "set_led_state"},
+        {c::set_led_brightness, "set_led_brightness"},
+        {c::set_backlight_level, "set_backlight_level"},
+        {c::set_backlight_colour, "set_backlight_colour"},
+        {c::set_active_on_startup, "set_active_on_startup"},
+        {c::set_baud_rate, "set_baud_rate"},
+        {c::set_periodic_transmission, "set_periodic_transmission"},
+        {c::set_boot_up, "set_boot_up"},
+        {c::set_startup_show, "set_startup_show"},
+        {c::set_node_id, "set_node_id"},
+        {c::set_demo_mode, "set_demo_mode"},
+        {c::set_default_backlight_level, "set_default_backlight_level"},
+        {c::set_default_led_brightness, "set_default_led_brightness"},
+        {c::set_default_backlight_colour, "set_default_backlight_colour"},
+    };
+};
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_KEYPAD_COMMANDS_HPP

@@ -1,0 +1,174 @@
+// powerkey: the keypads as data. One row per model says everything the codec needs: its object
+// dictionary, its keys, its LED planes and the one LED-map rule's stride, the PDOs it has, and how
+// it changes node id. Adding a keypad of a known layout is adding a row (and its names).
+//
+// The LED-map rule, for every keypad: LED (plane c, number k), c = 0 red, 1 green, 2 blue, is
+// bit c * stride + (k - 1) of a little-endian bit string (byte i / 8, bit i % 8). PK1000 sections
+// 12, 13 (stride 32: red in bytes 0..3, green in 4..7); PKP sections 11, 12, 15, 16 and
+// docs/pkp.md for the 12-key PKP-2600 (stride = key count).
+#ifndef POWERKEY_KEYPAD_MODELS_HPP
+#define POWERKEY_KEYPAD_MODELS_HPP
+
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/values.hpp>
+#include <powerkey/result.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace powerkey {
+
+enum class model : std::uint8_t { pk1000, pkp2200, pkp2400, pkp2600 };
+
+struct model_info {
+    powerkey::model id;
+    powerkey::dictionary dictionary;
+    std::uint8_t keys;    // keys 1..keys
+    std::uint8_t leds;    // LEDs 1..leds in each colour plane
+    std::uint8_t planes;  // colour planes: 2 red and green, 3 RGB
+    std::uint8_t stride;  // bits from one plane to the next in an LED map
+    bool brightness_pdo;  // RPDO3 400h + node: LED brightness (PK1000 section 14)
+    bool backlight_pdo;   // RPDO4 500h + node: backlight level and colour (PK1000 section 15)
+    bool j1939;           // the switch to J1939 (object protocol_j1939) and back (PK1000 49)
+    // After a node-id change the keypad answers from the new id (PK1000 section 23) or from the
+    // old one, then boots up with the new one (PKP section 13 h).
+    bool replies_from_new_id;
+
+    // Colour planes an LED object of 4 bytes (PKP 6001h/6002h) carries: those that fit 32 bits.
+    [[nodiscard]] constexpr unsigned object_planes() const noexcept {
+        const unsigned fit = 32u / stride;
+        return fit < planes ? fit : planes;
+    }
+};
+
+namespace detail {
+inline constexpr model_info model_table[] = {
+    {model::pk1000, dictionary::pk1000, 10, 28, 2, 32, true, true, true, true},
+    {model::pkp2200, dictionary::pkp_li, 4, 4, 3, 4, false, false, false, false},
+    {model::pkp2400, dictionary::pkp_li, 8, 8, 3, 8, false, false, false, false},
+    {model::pkp2600, dictionary::pkp_li, 12, 12, 3, 12, false, false, false, false},
+};
+constexpr bool models_in_enum_order() noexcept {
+    for (std::size_t i = 0; i < std::size(model_table); ++i)
+        if (static_cast<std::size_t>(model_table[i].id) != i) return false;
+    return true;
+}
+static_assert(models_in_enum_order());
+}  // namespace detail
+
+inline constexpr std::size_t model_count = std::size(detail::model_table);
+
+// The row of a model; errc::value_out_of_range for a value outside the enum.
+[[nodiscard]] constexpr result<model_info> info(model m) noexcept {
+    const auto i = static_cast<std::size_t>(m);
+    if (i >= model_count) return errc::value_out_of_range;
+    return detail::model_table[i];
+}
+
+// --- the LED-map and key-map rule ---------------------------------------------------------------
+
+namespace detail {
+constexpr std::uint64_t low_bits(unsigned n) noexcept {
+    return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+}
+}  // namespace detail
+
+// The first `planes` planes of l as the model's bit string. LEDs the model lacks are dropped:
+// callers that must refuse them compare with unpack_leds (the codec does).
+[[nodiscard]] constexpr std::uint64_t pack_leds(const model_info& m, const leds& l,
+                                                unsigned planes) noexcept {
+    std::uint64_t v = 0;
+    for (unsigned c = 0; c < planes; ++c)
+        v |= (l.of(static_cast<plane>(c)).mask() & detail::low_bits(m.leds)) << (c * m.stride);
+    return v;
+}
+
+// The map in a bit string of the model; errc::reserved_not_zero for a set bit that names no LED.
+[[nodiscard]] constexpr result<leds> unpack_leds(const model_info& m, std::uint64_t v,
+                                                 unsigned planes) noexcept {
+    leds l;
+    std::uint64_t used = 0;
+    for (unsigned c = 0; c < planes; ++c) {
+        const auto mask = detail::low_bits(m.leds) << (c * m.stride);
+        used |= mask;
+        l.of(static_cast<plane>(c)) = led_set::from_mask((v & mask) >> (c * m.stride));
+    }
+    if ((v & ~used) != 0) return errc::reserved_not_zero;
+    return l;
+}
+
+// Keys 1..N as bits 0..N-1; errc::reserved_not_zero for a bit above the model's keys.
+[[nodiscard]] constexpr result<key_set> unpack_keys(const model_info& m, std::uint64_t v) noexcept {
+    if ((v >> m.keys) != 0) return errc::reserved_not_zero;
+    return key_set::from_mask(v);
+}
+
+// --- names ----------------------------------------------------------------------------------
+
+template <>
+struct enum_names<model> {
+    static constexpr enum_name_entry<model> entries[] = {
+        {model::pk1000, "pk1000"},
+        {model::pkp2200, "pkp2200"},
+        {model::pkp2400, "pkp2400"},
+        {model::pkp2600, "pkp2600"},
+    };
+};
+
+// How the manuals name each keypad, and the model string it reports in 100Bh where a manual
+// shows one (PK1000 section 35 "PK1000"; PKP section 22 "PKU2400").
+struct model_names {
+    model id;
+    std::string_view manual;    // "PKP-2400-LI"
+    std::string_view reported;  // 100Bh model id, "" where no manual shows it
+};
+
+inline constexpr model_names model_name_table[] = {
+    {model::pk1000, "PK1000", "PK1000"},
+    {model::pkp2200, "PKP-2200-LI", ""},
+    {model::pkp2400, "PKP-2400-LI", "PKU2400"},
+    {model::pkp2600, "PKP-2600", ""},
+};
+
+namespace detail {
+// Lower case, without '-', '_' and spaces: "PKP-2400-LI" -> "pkp2400li".
+constexpr bool same_name(std::string_view a, std::string_view b) noexcept {
+    auto next = [](std::string_view s, std::size_t& i) -> int {
+        while (i < s.size() && (s[i] == '-' || s[i] == '_' || s[i] == ' ')) ++i;
+        if (i == s.size()) return -1;
+        const char c = s[i++];
+        return c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c;
+    };
+    std::size_t i = 0, j = 0;
+    for (;;) {
+        const int x = next(a, i), y = next(b, j);
+        if (x != y) return false;
+        if (x < 0) return true;
+    }
+}
+}  // namespace detail
+
+// A model from any of its names, case and '-' / '_' ignored: "pkp2400", "PKP-2400",
+// "PKP-2400-LI", the reported "PKU2400". errc::value_out_of_range for any other text.
+[[nodiscard]] constexpr result<model> parse_model(std::string_view text) noexcept {
+    for (const auto& n : enum_names<model>::entries)
+        if (detail::same_name(n.name, text)) return n.value;
+    for (const auto& n : model_name_table)
+        if (detail::same_name(n.manual, text) ||
+            (!n.reported.empty() && detail::same_name(n.reported, text)))
+            return n.id;
+    return errc::value_out_of_range;
+}
+
+// The model a keypad's reported model string (100Bh, PKP 6100h sub 2) names, if a manual shows it.
+[[nodiscard]] constexpr result<model> model_from_report(std::string_view reported) noexcept {
+    for (const auto& n : model_name_table)
+        if (!n.reported.empty() && n.reported == reported) return n.id;
+    return errc::value_out_of_range;
+}
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_KEYPAD_MODELS_HPP

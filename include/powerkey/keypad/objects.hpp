@@ -1,0 +1,594 @@
+// powerkey: the object dictionaries as data. One `object` enum names every entry of every keypad
+// by its meaning (the same name wherever it appears: `led_brightness` is 2003h sub 1 on the
+// PK1000 and 6201h sub 1 on the PKP); each object has one value kind, which decides its type and
+// field names; and each dictionary is a table of rows: address, size, access, range, and the
+// default value the manual gives. A keypad of a known dictionary is a row in models.hpp.
+//
+//   dictionary   keypads                            manual
+//   pk1000       PK1000 (2000h.., J1939 switch)     PK1000_CANopen_UM_rev1.13, sections 16-49
+//   pkp_li       PKP-2200/2400/2600 (6000h.., 6500h) PKP-2200-2400-LI_CANopen_UM_rev1.1, 13-32
+#ifndef POWERKEY_KEYPAD_OBJECTS_HPP
+#define POWERKEY_KEYPAD_OBJECTS_HPP
+
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/detail/lookup.hpp>
+#include <powerkey/keypad/values.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace powerkey {
+
+// Every object of every dictionary, by meaning. The comments give the address per dictionary.
+enum class object : std::uint8_t {
+    // keys and LEDs
+    keys,             // pk1000 2000h/1 (16), pkp_li 6000h (14)
+    led_on,           // pkp_li 6001h (15): the whole map, the model's planes that fit 32 bits
+    led_blink,        // pkp_li 6002h (16)
+    led_on_red,       // pk1000 2001h/1 (17): one plane
+    led_on_green,     // pk1000 2001h/2
+    led_blink_red,    // pk1000 2002h/1 (18)
+    led_blink_green,  // pk1000 2002h/2
+    // brightness and backlight
+    led_brightness,            // pk1000 2003h/1 (19 a), pkp_li 6201h/1 (30)
+    backlight_level,           // pk1000 2003h/2 (19 b), pkp_li 6201h/2 (30)
+    backlight_colour,          // pk1000 2003h/3 (19 c)
+    default_backlight_colour,  // pk1000 2003h/4 (19 d)
+    default_led_brightness,    // pk1000 2003h/5 (19 e)
+    default_backlight_level,   // pk1000 2003h/6 (19 f)
+    brightness_count,          // pkp_li 6201h/0
+    // settings
+    baud_rate,          // pk1000 2010h (20)
+    boot_up,            // pk1000 2011h (21): send the boot-up message at power on
+    active_on_startup,  // pk1000 2012h (22): operational at power on without NMT start
+    node_id,            // pk1000 2013h (23)
+    startup_show,       // pk1000 2014h (24)
+    led_power,          // pk1000 2015h (25): LED supply; off = low power
+    demo_mode,          // pk1000 2100h (26)
+    protocol_j1939,     // pk1000 20FFh/1 (27, 49): 1 switches the keypad to J1939
+    protocol_rs485,     // pk1000 20FFh/2 (27)
+    command_module,     // pkp_li 6500h/1 (13): write only, commands.hpp
+    // heartbeat
+    consumer_heartbeat_count,  // pk1000 1016h/0 (28)
+    consumer_heartbeat,        // pk1000 1016h/1
+    heartbeat_time,            // pk1000 1017h (29), pkp_li 1017h (17): producer period
+    // identification
+    device_type,            // 1000h (pk1000 30, pkp_li 18)
+    error_register,         // pk1000 1001h (31): not implemented, the keypad aborts a read
+    device_name,            // 1008h string
+    hardware_version,       // 1009h string
+    software_version,       // 100Ah string
+    model_name,             // 100Bh string
+    serial_number_string,   // pk1000 2200h (48), pkp_li 6300h (31): string
+    device_model,           // pkp_li 6100h/2 (29): string
+    firmware_spec_count,    // pkp_li 6100h/0
+    identity_count,         // 1018h/0
+    vendor_id,              // 1018h/1
+    product_code,           // pkp_li 1018h/2
+    revision_number,        // pkp_li 1018h/3: byte 4 app, 5 com lib, 6 hw lib revision
+    serial_number,          // pk1000 1018h/4, pkp_li 6100h/1
+    firmware_checksum,      // pkp_li 1018h/4
+    bootloader_present,     // pkp_li 6301h (32)
+    key_led_count_count,    // pkp_li 6302h/0
+    total_keys,             // pkp_li 6302h/1
+    external_keys,          // pkp_li 6302h/2
+    total_leds,             // pkp_li 6302h/3
+    external_leds,          // pkp_li 6302h/4
+    restore_count,          // pk1000 1011h/0 (36)
+    restore_defaults,       // pk1000 1011h/1: write "load"; a read gives the restore flags
+    // PDO communication and mapping parameters
+    rpdo1_count,
+    rpdo1_cob_id,
+    rpdo1_transmission_type,
+    rpdo1_inhibit_time,
+    rpdo2_count,
+    rpdo2_cob_id,
+    rpdo2_transmission_type,
+    rpdo2_inhibit_time,
+    rpdo3_count,
+    rpdo3_cob_id,
+    rpdo3_transmission_type,
+    rpdo4_count,
+    rpdo4_cob_id,
+    rpdo4_transmission_type,
+    rpdo1_mapping_count,
+    rpdo1_mapping_1,
+    rpdo1_mapping_2,
+    rpdo2_mapping_count,
+    rpdo2_mapping_1,
+    rpdo2_mapping_2,
+    rpdo3_mapping_count,
+    rpdo3_mapping_1,
+    rpdo4_mapping_count,
+    rpdo4_mapping_1,
+    rpdo4_mapping_2,
+    tpdo1_count,
+    tpdo1_cob_id,
+    tpdo1_transmission_type,
+    tpdo1_inhibit_time,
+    tpdo1_event_timer,
+    tpdo1_mapping_count,
+    tpdo1_mapping_1,
+};
+
+// What an object's value is: its C++ type and the field names it shows (messages.hpp).
+enum class value_kind : std::uint8_t {
+    number,              // "value": an unsigned number (counts, identity words, times, types)
+    flag,                // "enabled": 00h off, 01h on
+    brightness,          // "level": 00h..3Fh
+    colour,              // "colour": backlight_colour
+    baud,                // "baud_rate": baud_rate
+    show,                // "startup_show": startup_show
+    node,                // "node_id": 01h..7Fh
+    period,              // "period_ms": 0 = off, else the row's range
+    keys,                // "keys": key bits 0..N-1
+    led_plane,           // "red" / "green" / "blue": one plane of an LED map
+    led_map,             // "red", "green", "blue": the planes of the model's rule that fit
+    consumer_heartbeat,  // "period_ms", "producer": 1016h sub 1
+    cob_id,              // "invalid", "no_rtr", "can_id": a PDO COB-ID (CiA 301 7.5.2.35)
+    pdo_mapping,         // "index", "subindex", "bits": a PDO mapping entry
+    device_type,         // "profile", "digital_input" ..: 1000h (CiA 401 I/O functionality)
+    string,              // "size", "bytes": up to 4 bytes expedited, more by segments
+    restore,             // "value": writes carry "load", reads the restore flags
+    none,                // no value: the keypad aborts a read (1001h)
+    commands,            // the command module: commands.hpp
+};
+
+enum class access : std::uint8_t { read_only, write_only, read_write };
+
+// The "load" signature of a restore (1011h sub 1, PK1000 section 36), little endian.
+inline constexpr std::uint32_t load_signature = 0x6461'6F6C;
+
+// The value kind of every object, and for an LED plane object the plane it holds.
+struct object_kind {
+    object id;
+    value_kind kind;
+    plane holds = plane::red;  // led_plane only
+};
+
+namespace detail {
+using vk = value_kind;
+using obj = object;
+inline constexpr object_kind object_kinds[] = {
+    {obj::keys, vk::keys},
+    {obj::led_on, vk::led_map},
+    {obj::led_blink, vk::led_map},
+    {obj::led_on_red, vk::led_plane, plane::red},
+    {obj::led_on_green, vk::led_plane, plane::green},
+    {obj::led_blink_red, vk::led_plane, plane::red},
+    {obj::led_blink_green, vk::led_plane, plane::green},
+    {obj::led_brightness, vk::brightness},
+    {obj::backlight_level, vk::brightness},
+    {obj::backlight_colour, vk::colour},
+    {obj::default_backlight_colour, vk::colour},
+    {obj::default_led_brightness, vk::brightness},
+    {obj::default_backlight_level, vk::brightness},
+    {obj::brightness_count, vk::number},
+    {obj::baud_rate, vk::baud},
+    {obj::boot_up, vk::flag},
+    {obj::active_on_startup, vk::flag},
+    {obj::node_id, vk::node},
+    {obj::startup_show, vk::show},
+    {obj::led_power, vk::flag},
+    {obj::demo_mode, vk::flag},
+    {obj::protocol_j1939, vk::flag},
+    {obj::protocol_rs485, vk::flag},
+    {obj::command_module, vk::commands},
+    {obj::consumer_heartbeat_count, vk::number},
+    {obj::consumer_heartbeat, vk::consumer_heartbeat},
+    {obj::heartbeat_time, vk::period},
+    {obj::device_type, vk::device_type},
+    {obj::error_register, vk::none},
+    {obj::device_name, vk::string},
+    {obj::hardware_version, vk::string},
+    {obj::software_version, vk::string},
+    {obj::model_name, vk::string},
+    {obj::serial_number_string, vk::string},
+    {obj::device_model, vk::string},
+    {obj::firmware_spec_count, vk::number},
+    {obj::identity_count, vk::number},
+    {obj::vendor_id, vk::number},
+    {obj::product_code, vk::number},
+    {obj::revision_number, vk::number},
+    {obj::serial_number, vk::number},
+    {obj::firmware_checksum, vk::number},
+    {obj::bootloader_present, vk::number},
+    {obj::key_led_count_count, vk::number},
+    {obj::total_keys, vk::number},
+    {obj::external_keys, vk::number},
+    {obj::total_leds, vk::number},
+    {obj::external_leds, vk::number},
+    {obj::restore_count, vk::number},
+    {obj::restore_defaults, vk::restore},
+    {obj::rpdo1_count, vk::number},
+    {obj::rpdo1_cob_id, vk::cob_id},
+    {obj::rpdo1_transmission_type, vk::number},
+    {obj::rpdo1_inhibit_time, vk::number},
+    {obj::rpdo2_count, vk::number},
+    {obj::rpdo2_cob_id, vk::cob_id},
+    {obj::rpdo2_transmission_type, vk::number},
+    {obj::rpdo2_inhibit_time, vk::number},
+    {obj::rpdo3_count, vk::number},
+    {obj::rpdo3_cob_id, vk::cob_id},
+    {obj::rpdo3_transmission_type, vk::number},
+    {obj::rpdo4_count, vk::number},
+    {obj::rpdo4_cob_id, vk::cob_id},
+    {obj::rpdo4_transmission_type, vk::number},
+    {obj::rpdo1_mapping_count, vk::number},
+    {obj::rpdo1_mapping_1, vk::pdo_mapping},
+    {obj::rpdo1_mapping_2, vk::pdo_mapping},
+    {obj::rpdo2_mapping_count, vk::number},
+    {obj::rpdo2_mapping_1, vk::pdo_mapping},
+    {obj::rpdo2_mapping_2, vk::pdo_mapping},
+    {obj::rpdo3_mapping_count, vk::number},
+    {obj::rpdo3_mapping_1, vk::pdo_mapping},
+    {obj::rpdo4_mapping_count, vk::number},
+    {obj::rpdo4_mapping_1, vk::pdo_mapping},
+    {obj::rpdo4_mapping_2, vk::pdo_mapping},
+    {obj::tpdo1_count, vk::number},
+    {obj::tpdo1_cob_id, vk::cob_id},
+    {obj::tpdo1_transmission_type, vk::number},
+    {obj::tpdo1_inhibit_time, vk::number},
+    {obj::tpdo1_event_timer, vk::period},
+    {obj::tpdo1_mapping_count, vk::number},
+    {obj::tpdo1_mapping_1, vk::pdo_mapping},
+};
+constexpr bool kinds_in_enum_order() noexcept {
+    for (std::size_t i = 0; i < std::size(object_kinds); ++i)
+        if (static_cast<std::size_t>(object_kinds[i].id) != i) return false;
+    return true;
+}
+static_assert(kinds_in_enum_order());
+static_assert(std::size(object_kinds) == static_cast<std::size_t>(object::tpdo1_mapping_1) + 1);
+}  // namespace detail
+
+inline constexpr std::size_t object_count = std::size(detail::object_kinds);
+
+// The kind of an object's value; `none` for a value outside the enum.
+[[nodiscard]] constexpr object_kind kind_of(object id) noexcept {
+    const auto i = static_cast<std::size_t>(id);
+    return i < object_count ? detail::object_kinds[i] : object_kind{id, value_kind::none};
+}
+
+// One entry of a dictionary.
+struct object_row {
+    object id;
+    canopen::sdo_address address;
+    std::uint8_t size;  // expedited bytes: 1, 2 or 4; 0 for a string (1..4 expedited, or segmented)
+    powerkey::access access;
+    std::uint32_t min = 0;  // valid values: min..max, or `also` (FEh event-driven, 0 = off ...)
+    std::uint32_t max = 0xFFFF'FFFF;
+    std::uint32_t also = 0xFFFF'FFFF;
+    std::uint32_t initial = 0;  // the value the manual gives at delivery (for a number kind)
+
+    [[nodiscard]] constexpr bool readable() const noexcept {
+        return access != powerkey::access::write_only;
+    }
+    [[nodiscard]] constexpr bool writable() const noexcept {
+        return access != powerkey::access::read_only;
+    }
+    // The row's range, for the kinds whose value is one number.
+    [[nodiscard]] constexpr bool in_range(std::uint32_t v) const noexcept {
+        return (v >= min && v <= max) || v == also;
+    }
+};
+
+enum class dictionary : std::uint8_t { pk1000, pkp_li };
+
+namespace detail {
+constexpr auto ro = access::read_only;
+constexpr auto rw = access::read_write;
+constexpr auto wo = access::write_only;
+constexpr std::uint32_t any = 0xFFFF'FFFF;
+constexpr std::uint32_t none_else = 0xFFFF'FFFF;
+
+// PK1000_CANopen_UM_rev1.13: sections 16-48, defaults from section 3 and the example replies.
+inline constexpr object_row pk1000_rows[] = {
+    {obj::keys, {0x2000, 1}, 2, ro},
+    {obj::led_on_red, {0x2001, 1}, 4, rw},
+    {obj::led_on_green, {0x2001, 2}, 4, rw},
+    {obj::led_blink_red, {0x2002, 1}, 4, rw},
+    {obj::led_blink_green, {0x2002, 2}, 4, rw},
+    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
+    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
+    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
+    {obj::led_power, {0x2015, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::demo_mode, {0x2100, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::protocol_j1939, {0x20FF, 1}, 2, rw, 0, 1, none_else, 0},
+    {obj::protocol_rs485, {0x20FF, 2}, 2, rw, 0, 1, none_else, 0},
+    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},  // E-PK-8
+    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
+    {obj::error_register, {0x1001, 0}, 1, ro},
+    {obj::device_name, {0x1008, 0}, 0, ro},
+    {obj::hardware_version, {0x1009, 0}, 0, ro},
+    {obj::software_version, {0x100A, 0}, 0, ro},
+    {obj::model_name, {0x100B, 0}, 0, ro},
+    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::restore_defaults, {0x1011, 1}, 4, rw},
+    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
+    {obj::serial_number, {0x1018, 4}, 4, ro},
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x4000'0215},
+    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x4000'0315},
+    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},  // E-PK-9
+    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x4000'0415},
+    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x4000'0515},
+    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0120},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0220},
+    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0120},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0220},  // E-PK-5
+    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
+    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
+    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
+    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x4000'0195},
+    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},  // E-PK-11
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},
+    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-PK-12
+    {obj::serial_number_string, {0x2200, 0}, 0, ro},
+};
+
+// PKP-2200-2400-LI_CANopen_UM_rev1.1: sections 13-32; the values of the example replies.
+inline constexpr object_row pkp_li_rows[] = {
+    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x0003'0191},
+    {obj::device_name, {0x1008, 0}, 0, ro},
+    {obj::hardware_version, {0x1009, 0}, 0, ro},
+    {obj::software_version, {0x100A, 0}, 0, ro},
+    {obj::model_name, {0x100B, 0}, 0, ro},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},  // E-PKP-7
+    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x35A},
+    {obj::product_code, {0x1018, 2}, 4, ro},
+    {obj::revision_number, {0x1018, 3}, 4, ro, 0, any, none_else, 0x0012'1610},
+    {obj::firmware_checksum, {0x1018, 4}, 4, ro, 0, any, none_else, 0x002C'E5DE},
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},  // E-PKP-6
+    {obj::rpdo1_cob_id, {0x1400, 1}, 2, ro, 0, any, none_else, 0x200},  // E-PKP-5
+    {obj::rpdo1_inhibit_time, {0x1400, 3}, 2, ro},
+    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 2, ro, 0, any, none_else, 0x300},
+    {obj::rpdo2_inhibit_time, {0x1401, 3}, 2, ro},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x6001'0020},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x6002'0020},
+    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::tpdo1_cob_id, {0x1800, 1}, 2, ro, 0, any, none_else, 0x180},
+    {obj::tpdo1_transmission_type, {0x1800, 2}, 2, ro, 0, any, none_else, 0xFD},
+    {obj::tpdo1_inhibit_time, {0x1800, 3}, 2, ro},
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, ro, 0, 0xFFFF, none_else, 0},
+    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x6000'0020},
+    {obj::keys, {0x6000, 0}, 4, ro},
+    {obj::led_on, {0x6001, 0}, 4, rw},
+    {obj::led_blink, {0x6002, 0}, 4, rw},
+    {obj::firmware_spec_count, {0x6100, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::serial_number, {0x6100, 1}, 4, ro},
+    {obj::device_model, {0x6100, 2}, 0, ro},
+    {obj::brightness_count, {0x6201, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::led_brightness, {0x6201, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::backlight_level, {0x6201, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::serial_number_string, {0x6300, 0}, 0, ro},
+    {obj::bootloader_present, {0x6301, 0}, 1, ro, 0, 1, none_else, 0},
+    {obj::key_led_count_count, {0x6302, 0}, 1, ro, 0, any, none_else, 2},  // E-PKP-6
+    {obj::total_keys, {0x6302, 1}, 1, ro},
+    {obj::external_keys, {0x6302, 2}, 1, ro},
+    {obj::total_leds, {0x6302, 3}, 1, ro},
+    {obj::external_leds, {0x6302, 4}, 1, ro},
+    {obj::command_module, {0x6500, 1}, 4, wo},
+};
+
+// A dictionary's rows, the hash table of their addresses, and the row of each object.
+template <std::size_t N>
+struct dictionary_index {
+    address_table<N, 8> by_address;
+    std::array<std::uint8_t, object_count> by_object{};  // row + 1, 0: the object is not there
+};
+
+template <std::size_t N>
+constexpr dictionary_index<N> index_of(const object_row (&rows)[N]) noexcept {
+    std::array<std::uint32_t, N> keys{};
+    for (std::size_t i = 0; i < N; ++i) keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
+    dictionary_index<N> d{address_table<N, 8>(keys), {}};
+    for (std::size_t i = 0; i < N; ++i)
+        d.by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
+    return d;
+}
+
+inline constexpr auto pk1000_index = index_of(pk1000_rows);
+inline constexpr auto pkp_li_index = index_of(pkp_li_rows);
+static_assert(pk1000_index.by_address.max_probes() <= 2);
+static_assert(pkp_li_index.by_address.max_probes() <= 2);
+
+// Every object at most once per dictionary, every address once (the hash table needs it).
+template <std::size_t N>
+constexpr bool objects_distinct(const object_row (&rows)[N]) noexcept {
+    for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (rows[i].id == rows[j].id || rows[i].address == rows[j].address) return false;
+    return true;
+}
+static_assert(objects_distinct(pk1000_rows));
+static_assert(objects_distinct(pkp_li_rows));
+}  // namespace detail
+
+// The rows of a dictionary, in manual order.
+[[nodiscard]] constexpr std::span<const object_row> rows_of(dictionary d) noexcept {
+    if (d == dictionary::pkp_li) return detail::pkp_li_rows;
+    return detail::pk1000_rows;
+}
+
+// The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
+// (A copy, not a pointer: a null test on the address of a static object is not a constant
+// expression under UBSan.)
+[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d,
+                                                           canopen::sdo_address a) noexcept {
+    const auto key = detail::address_key(a.index, a.subindex);
+    if (d == dictionary::pkp_li) {
+        const auto r = detail::pkp_li_index.by_address.find(key);
+        if (!r) return std::nullopt;
+        return detail::pkp_li_rows[*r];
+    }
+    const auto r = detail::pk1000_index.by_address.find(key);
+    if (!r) return std::nullopt;
+    return detail::pk1000_rows[*r];
+}
+
+// The row of an object in a dictionary; nullopt when the dictionary does not have it.
+[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d, object o) noexcept {
+    const auto i = static_cast<std::size_t>(o);
+    if (i >= object_count) return std::nullopt;
+    const auto r = d == dictionary::pkp_li ? detail::pkp_li_index.by_object[i]
+                                           : detail::pk1000_index.by_object[i];
+    if (r == 0) return std::nullopt;
+    return d == dictionary::pkp_li ? detail::pkp_li_rows[r - 1u] : detail::pk1000_rows[r - 1u];
+}
+
+// --- names ----------------------------------------------------------------------------------
+
+template <>
+struct enum_names<object> {
+    using o = object;
+    static constexpr enum_name_entry<o> entries[] = {
+        {o::keys, "keys"},
+        {o::led_on, "led_on"},
+        {o::led_blink, "led_blink"},
+        {o::led_on_red, "led_on_red"},
+        {o::led_on_green, "led_on_green"},
+        {o::led_blink_red, "led_blink_red"},
+        {o::led_blink_green, "led_blink_green"},
+        {o::led_brightness, "led_brightness"},
+        {o::backlight_level, "backlight_level"},
+        {o::backlight_colour, "backlight_colour"},
+        {o::default_backlight_colour, "default_backlight_colour"},
+        {o::default_led_brightness, "default_led_brightness"},
+        {o::default_backlight_level, "default_backlight_level"},
+        {o::brightness_count, "brightness_count"},
+        {o::baud_rate, "baud_rate"},
+        {o::boot_up, "boot_up"},
+        {o::active_on_startup, "active_on_startup"},
+        {o::node_id, "node_id"},
+        {o::startup_show, "startup_show"},
+        {o::led_power, "led_power"},
+        {o::demo_mode, "demo_mode"},
+        {o::protocol_j1939, "protocol_j1939"},
+        {o::protocol_rs485, "protocol_rs485"},
+        {o::command_module, "command_module"},
+        {o::consumer_heartbeat_count, "consumer_heartbeat_count"},
+        {o::consumer_heartbeat, "consumer_heartbeat"},
+        {o::heartbeat_time, "heartbeat_time"},
+        {o::device_type, "device_type"},
+        {o::error_register, "error_register"},
+        {o::device_name, "device_name"},
+        {o::hardware_version, "hardware_version"},
+        {o::software_version, "software_version"},
+        {o::model_name, "model_name"},
+        {o::serial_number_string, "serial_number_string"},
+        {o::device_model, "device_model"},
+        {o::firmware_spec_count, "firmware_spec_count"},
+        {o::identity_count, "identity_count"},
+        {o::vendor_id, "vendor_id"},
+        {o::product_code, "product_code"},
+        {o::revision_number, "revision_number"},
+        {o::serial_number, "serial_number"},
+        {o::firmware_checksum, "firmware_checksum"},
+        {o::bootloader_present, "bootloader_present"},
+        {o::key_led_count_count, "key_led_count_count"},
+        {o::total_keys, "total_keys"},
+        {o::external_keys, "external_keys"},
+        {o::total_leds, "total_leds"},
+        {o::external_leds, "external_leds"},
+        {o::restore_count, "restore_count"},
+        {o::restore_defaults, "restore_defaults"},
+        {o::rpdo1_count, "rpdo1_count"},
+        {o::rpdo1_cob_id, "rpdo1_cob_id"},
+        {o::rpdo1_transmission_type, "rpdo1_transmission_type"},
+        {o::rpdo1_inhibit_time, "rpdo1_inhibit_time"},
+        {o::rpdo2_count, "rpdo2_count"},
+        {o::rpdo2_cob_id, "rpdo2_cob_id"},
+        {o::rpdo2_transmission_type, "rpdo2_transmission_type"},
+        {o::rpdo2_inhibit_time, "rpdo2_inhibit_time"},
+        {o::rpdo3_count, "rpdo3_count"},
+        {o::rpdo3_cob_id, "rpdo3_cob_id"},
+        {o::rpdo3_transmission_type, "rpdo3_transmission_type"},
+        {o::rpdo4_count, "rpdo4_count"},
+        {o::rpdo4_cob_id, "rpdo4_cob_id"},
+        {o::rpdo4_transmission_type, "rpdo4_transmission_type"},
+        {o::rpdo1_mapping_count, "rpdo1_mapping_count"},
+        {o::rpdo1_mapping_1, "rpdo1_mapping_1"},
+        {o::rpdo1_mapping_2, "rpdo1_mapping_2"},
+        {o::rpdo2_mapping_count, "rpdo2_mapping_count"},
+        {o::rpdo2_mapping_1, "rpdo2_mapping_1"},
+        {o::rpdo2_mapping_2, "rpdo2_mapping_2"},
+        {o::rpdo3_mapping_count, "rpdo3_mapping_count"},
+        {o::rpdo3_mapping_1, "rpdo3_mapping_1"},
+        {o::rpdo4_mapping_count, "rpdo4_mapping_count"},
+        {o::rpdo4_mapping_1, "rpdo4_mapping_1"},
+        {o::rpdo4_mapping_2, "rpdo4_mapping_2"},
+        {o::tpdo1_count, "tpdo1_count"},
+        {o::tpdo1_cob_id, "tpdo1_cob_id"},
+        {o::tpdo1_transmission_type, "tpdo1_transmission_type"},
+        {o::tpdo1_inhibit_time, "tpdo1_inhibit_time"},
+        {o::tpdo1_event_timer, "tpdo1_event_timer"},
+        {o::tpdo1_mapping_count, "tpdo1_mapping_count"},
+        {o::tpdo1_mapping_1, "tpdo1_mapping_1"},
+    };
+};
+
+template <>
+struct enum_names<access> {
+    static constexpr enum_name_entry<access> entries[] = {{access::read_only, "read_only"},
+                                                          {access::write_only, "write_only"},
+                                                          {access::read_write, "read_write"}};
+};
+
+template <>
+struct enum_names<dictionary> {
+    static constexpr enum_name_entry<dictionary> entries[] = {{dictionary::pk1000, "pk1000"},
+                                                              {dictionary::pkp_li, "pkp_li"}};
+};
+
+template <>
+struct enum_names<value_kind> {
+    using k = value_kind;
+    static constexpr enum_name_entry<k> entries[] = {
+        {k::number, "number"},           {k::flag, "flag"},
+        {k::brightness, "brightness"},             {k::colour, "colour"},
+        {k::baud, "baud"},               {k::show, "show"},
+        {k::node, "node"},               {k::period, "period"},
+        {k::keys, "keys"},               {k::led_plane, "led_plane"},
+        {k::led_map, "led_map"},         {k::consumer_heartbeat, "consumer_heartbeat"},
+        {k::cob_id, "cob_id"},           {k::pdo_mapping, "pdo_mapping"},
+        {k::device_type, "device_type"}, {k::string, "string"},
+        {k::restore, "restore"},         {k::none, "none"},
+        {k::commands, "commands"},
+    };
+};
+
+}  // namespace powerkey
+
+#endif  // POWERKEY_KEYPAD_OBJECTS_HPP
