@@ -107,6 +107,26 @@ private:
     payload data_{};
 };
 
+// Whether an identifier a CAN driver hands over is 11-bit or 29-bit.
+enum class id_format : std::uint8_t { standard, extended };
+
+// A frame from what a CAN driver hands over, in one call: the identifier as a number, its format
+// and the data bytes. Errors: value_out_of_range (an identifier above 7FFh, or above 1FFFFFFFh
+// for an extended one), wrong_length (more than 8 bytes).
+//   if (const auto f = can::make_frame(rx.id, {rx.data, rx.dlc})) handle(*f);
+[[nodiscard]] constexpr result<frame> make_frame(std::uint32_t id,
+                                                 std::span<const std::uint8_t> data,
+                                                 id_format format = id_format::standard) noexcept {
+    if (format == id_format::extended) {
+        const auto e = extended_id::make(id);
+        if (!e) return e.error();
+        return frame::make(*e, data);
+    }
+    const auto s = standard_id::make(id);
+    if (!s) return s.error();
+    return frame::make(*s, data);
+}
+
 }  // namespace powerkey::can
 
 #endif  // POWERKEY_CAN_FRAME_HPP
