@@ -93,3 +93,33 @@ TEST_CASE("frames built from bytes") {
     CHECK(can::standard_id::make(0x800).error() == errc::value_out_of_range);
     CHECK(can::extended_id::make(0x2000'0000u).error() == errc::value_out_of_range);
 }
+
+// What a CAN driver hands over (an id, a format and bytes) to a frame in one call.
+constexpr std::array<std::uint8_t, 5> key_bytes{0x04, 0x00, 0x00, 0x00, 0x2A};
+static_assert(can::make_frame(0x195, key_bytes).value() == candump("195#040000002A"));
+static_assert(can::make_frame(0x18EF2100, std::array<std::uint8_t, 8>{0x04, 0x1B, 0x80, 0x00, 0xFF,
+                                                                      0xFF, 0xFF, 0xFF},
+                              can::id_format::extended)
+                  .value() == candump("18EF2100#041B8000FFFFFFFF"));
+static_assert(can::make_frame(0x080, {}).value() == candump("080#"));
+static_assert(can::make_frame(0x615, key_bytes, can::id_format::extended).value() ==
+              candump("00000615#040000002A"));
+static_assert(can::make_frame(0x800, key_bytes) == errc::value_out_of_range);
+static_assert(can::make_frame(0x2000'0000, key_bytes, can::id_format::extended) ==
+              errc::value_out_of_range);
+static_assert(can::make_frame(0x615, std::array<std::uint8_t, 9>{}) == errc::wrong_length);
+
+TEST_CASE("make_frame: a driver's id and bytes in one call") {
+    const std::uint8_t rx[8] = {0x2F, 0x01, 0x62, 0x01, 0x10, 0x00, 0x00, 0x00};
+    const auto f = can::make_frame(0x615, {rx, 8});
+    REQUIRE(f.has_value());
+    CHECK(*f == candump("615#2F01620110000000"));
+    const auto short_one = can::make_frame(0x715, {rx, 1});
+    REQUIRE(short_one.has_value());
+    CHECK(*short_one == candump("715#2F"));
+    CHECK(can::make_frame(0x7FF, {rx, 0}).has_value());
+    CHECK(can::make_frame(0x800, {rx, 0}).error() == errc::value_out_of_range);
+    CHECK(can::make_frame(0x1FFF'FFFF, {rx, 8}, can::id_format::extended).has_value());
+    const std::uint8_t nine[9]{};
+    CHECK(can::make_frame(0x615, {nine, 9}).error() == errc::wrong_length);
+}

@@ -8,6 +8,7 @@
 #include <powerkey/canopen/nmt.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
+#include <powerkey/names.hpp>
 
 #include <string_view>
 
@@ -52,7 +53,18 @@ constexpr bool cob_rows_hold() {
     return true;
 }
 static_assert(cob_rows_hold());
-static_assert(classify(can::candump("18EF2100#041B8000FFFFFFFF")).fn == function::other);
+// Every 29-bit identifier is J1939 (where the keypads' protocol switch lives), with no node.
+static_assert(classify(can::candump("18EF2100#041B8000FFFFFFFF")) == cob_info{function::j1939, 0});
+static_assert(classify(can::candump("00000615#00")) == cob_info{function::j1939, 0});
+static_assert(classify(can::candump("615#00")) == cob_info{function::sdo_rx, 0x15});
+
+// Which frames concern a keypad: NMT, SYNC and J1939 every node, the per-node ids only their own.
+static_assert(concerns({function::nmt, 0}, keypad));
+static_assert(concerns({function::sync, 0}, keypad));
+static_assert(concerns({function::j1939, 0}, keypad));
+static_assert(concerns({function::sdo_rx, 0x15}, keypad));
+static_assert(!concerns({function::sdo_rx, 0x16}, keypad));
+static_assert(!concerns({function::other, 0}, keypad));
 
 // --- NMT ---------------------------------------------------------------------------------------
 struct nmt_row {
@@ -172,6 +184,9 @@ static_assert(sdo_rows_encode());
 // A client abort as a message of its own keeps its direction: 600h + node.
 static_assert(encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
               can::candump("615#8000200100000405"));
+// And the keypad's abort: 580h + node.
+static_assert(encode(keypad, sdo_abort_response{{{0x2001, 0}, sdo_abort_code::object_does_not_exist}}) ==
+              can::candump("595#8001200000000206"));
 static_assert(expedited_data::u16(500).value() == 500);
 static_assert(expedited_data::u32(0x000B0191).value() == 0x000B0191);
 static_assert(expedited_data{3, {1, 2, 3, 0xFF}}.value() == 0x030201);
@@ -287,7 +302,10 @@ TEST_CASE("NMT rows both ways") {
         REQUIRE(m.has_value());
         CHECK(*m == r.expected);
     }
-    CHECK(to_string(nmt_command::legacy_stop) == "stop");
+    // 00h has a name of its own now, so that every name reads back to one value.
+    CHECK(to_string(nmt_command::legacy_stop) == "legacy_stop");
+    CHECK(from_string<nmt_command>("legacy_stop").value() == nmt_command::legacy_stop);
+    CHECK(from_string<nmt_command>("stop").value() == nmt_command::stop);
     CHECK(to_string(nmt_command::enter_pre_operational) == "pre_operational");
 }
 
