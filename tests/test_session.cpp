@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
+#include <powerkey/names.hpp>
 #include <powerkey/session.hpp>
 
 #include <iterator>
@@ -155,4 +156,71 @@ TEST_CASE("the session notices the switch to J1939 and back") {
     CHECK(s.protocol() == bus_protocol::canopen);
     // RS485 (sub 2) is no protocol switch.
     CHECK_FALSE(s.step(can::candump("615#2BFF200200000000")).new_protocol.has_value());
+}
+
+TEST_CASE("a PKP keypad has no J1939: the switch frame is refused and nothing changes") {
+    for (model m : {model::pkp2200, model::pkp2400, model::pkp2600}) {
+        CAPTURE(to_string(m));
+        session<> s(m, canopen::default_node_id);
+        const auto back = s.step(can::candump("18EF2100#041B8000FFFFFFFF"));
+        CHECK(back.cls == canopen::cob_info{canopen::function::j1939, 0});
+        CHECK(back.decoded == errc::wrong_id_format);
+        CHECK_FALSE(back.new_protocol.has_value());
+        CHECK(back.sdo == sdo_pairing::none);
+        CHECK(s.protocol() == bus_protocol::canopen);
+        // Nor is 20FFh a PKP object: the write decodes to nothing and switches nothing.
+        const auto to_j1939 = s.step(can::candump("615#2BFF200101000000"));
+        CHECK(to_j1939.decoded == errc::unknown_object);
+        CHECK_FALSE(to_j1939.new_protocol.has_value());
+        CHECK(s.protocol() == bus_protocol::canopen);
+    }
+}
+
+TEST_CASE("the PKP node change: the reply from the old id, the boot-up from the new one") {
+    session<> s(model::pkp2400, canopen::default_node_id);
+    const auto request = s.step(can::candump("615#2300650170180000"));
+    REQUIRE(request.decoded.has_value());
+    CHECK(node_id_change(*request.decoded) == canopen::node_id::make(0x18).value());
+    CHECK_FALSE(request.new_node.has_value());
+    CHECK(s.node() == canopen::default_node_id);  // the reply still comes from 15h
+    const auto reply = s.step(can::candump("595#6000650100000000"));
+    CHECK(reply.cls == canopen::cob_info{canopen::function::sdo_tx, 0x15});
+    REQUIRE(reply.decoded.has_value());
+    CHECK(*reply.decoded == message{sdo_write_reply{object::command_module}});
+    REQUIRE(reply.new_node.has_value());
+    CHECK(reply.new_node->value() == 0x18);
+    CHECK(s.node().value() == 0x18);
+    const auto boot = s.step(can::candump("718#00"));
+    CHECK(boot.cls == canopen::cob_info{canopen::function::heartbeat, 0x18});
+    REQUIRE(boot.decoded.has_value());
+    CHECK(nmt_state_of(*boot.decoded) == canopen::nmt_state::boot_up);
+    // The old id is gone.
+    CHECK(s.step(can::candump("715#05")).decoded == errc::wrong_id);
+}
+
+TEST_CASE("the PK1000 node change: the reply already comes from the new id") {
+    session<> s(model::pk1000, canopen::default_node_id);
+    const auto request = s.step(can::candump("615#2F1320003A000000"));
+    REQUIRE(request.decoded.has_value());
+    CHECK(*request.decoded == message{sdo_write{object::node_id, number_value(0x3A)}});
+    REQUIRE(request.new_node.has_value());
+    CHECK(request.new_node->value() == 0x3A);
+    const auto reply = s.step(can::candump("5BA#6013200000000000"));
+    CHECK(reply.sdo == sdo_pairing::reply);
+    CHECK(reply.request == canopen::sdo_address{0x2013, 0});
+    CHECK(*reply.decoded == message{sdo_write_reply{object::node_id}});
+    CHECK(s.node().value() == 0x3A);
+}
+
+TEST_CASE("the session names the function and node of every frame") {
+    session<> s(model::pk1000, canopen::default_node_id);
+    CHECK(s.step(can::candump("000#0115")).cls == canopen::cob_info{canopen::function::nmt, 0});
+    CHECK(s.step(can::candump("195#010000002A")).cls ==
+          canopen::cob_info{canopen::function::tpdo1, 0x15});
+    const auto other = s.step(can::candump("196#010000002A"));
+    CHECK(other.cls == canopen::cob_info{canopen::function::tpdo1, 0x16});
+    CHECK(other.decoded == errc::wrong_id);
+    const auto keys = s.step(can::candump("195#010000002A"));
+    REQUIRE(keys.decoded.has_value());
+    CHECK(pressed_keys(*keys.decoded) == key_set{1});
 }
