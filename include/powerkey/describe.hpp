@@ -7,7 +7,7 @@
 // (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field as `name: value`. Values: key and
 // LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex, enumerators by name; numbers in
 // hex with h (node ids, COB-IDs, indexes, levels, words: 15h, 0215h, 2003h, 3Fh), except counts
-// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused).
+// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused, priority).
 #ifndef POWERKEY_DESCRIBE_HPP
 #define POWERKEY_DESCRIBE_HPP
 
@@ -86,8 +86,8 @@ constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
 }
 
 // Field names whose numbers are counts or times, printed in decimal; all others print in hex.
-constexpr std::string_view decimal_fields[] = {"tick", "period_ms", "period_10ms", "size",
-                                               "bits", "key",       "subindex",    "unused"};
+constexpr std::string_view decimal_fields[] = {"tick", "period_ms", "period_10ms", "size",    "bits",
+                                               "key",  "subindex",  "unused",      "priority"};
 
 constexpr void put_number(text_writer& w, std::string_view name, std::uint64_t v,
                           int width) noexcept {

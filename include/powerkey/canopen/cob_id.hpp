@@ -82,28 +82,22 @@ struct cob_info {
     if (v == 0x000) return {function::nmt, 0};
     if (v == 0x080) return {function::sync, 0};
     const auto node = static_cast<std::uint8_t>(v & 0x7F);
-    if (node == 0) return {function::other, 0};
-    // Bits 10..7 are the function code (580h is code 11). A switch, not a scan of the bases:
-    // every decoder starts here, and this is a table lookup (bench/: issue 7).
-    function f = function::other;
-    switch (v >> 7) {
-        case 0x3: f = function::tpdo1; break;
-        case 0x4: f = function::rpdo1; break;
-        case 0x6: f = function::rpdo2; break;
-        case 0x8: f = function::rpdo3; break;
-        case 0xA: f = function::rpdo4; break;
-        case 0xB: f = function::sdo_tx; break;
-        case 0xC: f = function::sdo_rx; break;
-        case 0xE: f = function::heartbeat; break;
-        default: return {function::other, 0};
-    }
+    // Bits 10..7 are the function code (580h is code 11): one table lookup, not a scan of the
+    // bases (every decoder starts here).
+    constexpr function by_code[16] = {
+        function::other, function::other,  function::other,  function::tpdo1,
+        function::rpdo1, function::other,  function::rpdo2,  function::other,
+        function::rpdo3, function::other,  function::rpdo4,  function::sdo_tx,
+        function::sdo_rx, function::other, function::heartbeat, function::other};
+    const function f = by_code[(v >> 7) & 0xF];
+    if (node == 0 || f == function::other) return {function::other, 0};
     return {f, node};
 }
 
 // The same for any frame: every 29-bit identifier is `j1939` (node 0).
 [[nodiscard]] constexpr cob_info classify(const can::frame& f) noexcept {
     if (f.is_extended()) return {function::j1939, 0};
-    return classify(can::standard_id::make(f.raw_id()).value());
+    return classify(can::standard_id::make(f.raw_id() & 0x7FF).value());
 }
 
 // True when the frame is addressed to or sent by the keypad `node`: NMT and SYNC (every node

@@ -431,72 +431,106 @@ constexpr sdo_abort abort_of(const can::frame& f) noexcept {
 }
 }  // namespace detail
 
-// A frame from the client to the keypad `node`. Errors: wrong_id_format, wrong_id (not
-// 600h + node), wrong_length (not 8 bytes), unknown_command (a specifier the keypads do not use:
-// segmented or block download, expedited download without size), reserved_not_zero (an upload or
-// segment request with reserved bits or bytes set, e.g. 41h for 40h).
-[[nodiscard]] constexpr result<sdo_request> decode_sdo_request(const can::frame& f,
-                                                               node_id node) noexcept {
+// A frame from the client to the keypad `node`, handed to `on` as the struct it is
+// (sdo_download_request, sdo_upload_request, sdo_segment_request or sdo_abort); `on` returns
+// an R, and so does every refusal. decode_sdo_request below is this with R a variant; the
+// keypad codec uses it to build its own message with no variant in between. Errors:
+// wrong_id_format, wrong_id (not 600h + node), wrong_length (not 8 bytes), unknown_command (a
+// specifier the keypads do not use: segmented or block download, expedited download without
+// size), reserved_not_zero (an upload or segment request with reserved bits or bytes set, e.g.
+// 41h for 40h).
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_request_data(const can::frame& f, F&& on) noexcept;
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_request(const can::frame& f, node_id node, F&& on) noexcept {
     if (const auto e = powerkey::detail::check_frame(f, cob_id(function::sdo_rx, node), 8);
         e != errc{})
         return e;
+    return visit_sdo_request_data<R>(f, on);
+}
+
+// The same for a frame whose identifier the caller has already checked (the keypad codec
+// classifies every frame first): only the length and the data are checked here.
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_request_data(const can::frame& f, F&& on) noexcept {
+    if (f.size() != 8) return errc::wrong_length;
     const std::uint8_t c = f[0];
     switch (c >> 5) {
         case 1:  // initiate download: only expedited with size indicated (e = s = 1)
             if ((c & 0x13) != 0x03) return errc::unknown_command;
-            return sdo_request{
-                sdo_download_request{detail::address_of(f), detail::expedited_of(f)}};
+            return on(sdo_download_request{detail::address_of(f), detail::expedited_of(f)});
         case 2:  // initiate upload
             if (c != 0x40 || !powerkey::detail::all_zero(f.bytes(), 4, 8))
                 return errc::reserved_not_zero;
-            return sdo_request{sdo_upload_request{detail::address_of(f)}};
+            return on(sdo_upload_request{detail::address_of(f)});
         case 3:  // upload segment
             if ((c & 0x0F) != 0 || !powerkey::detail::all_zero(f.bytes(), 1, 8))
                 return errc::reserved_not_zero;
-            return sdo_request{sdo_segment_request{(c & 0x10) != 0}};
+            return on(sdo_segment_request{(c & 0x10) != 0});
         case 4:  // abort
             if (c != 0x80) return errc::reserved_not_zero;
-            return sdo_request{detail::abort_of(f)};
+            return on(detail::abort_of(f));
         default: return errc::unknown_command;
     }
 }
 
-// A frame from the keypad `node` to the client. Errors: wrong_id_format, wrong_id (not
-// 580h + node), wrong_length (not 8 bytes), unknown_command (download segment, block transfer,
-// expedited upload without size), reserved_not_zero (reserved bits or bytes set in a download
-// response or abort).
-[[nodiscard]] constexpr result<sdo_response> decode_sdo_response(const can::frame& f,
-                                                                 node_id node) noexcept {
+// A frame from the keypad `node` to the client, handed to `on` as sdo_segment_response,
+// sdo_upload_response, sdo_upload_initiate_response, sdo_download_response or sdo_abort.
+// Errors: wrong_id_format, wrong_id (not 580h + node), wrong_length (not 8 bytes),
+// unknown_command (download segment, block transfer, expedited upload without size),
+// reserved_not_zero (reserved bits or bytes set in a download response or abort).
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_response_data(const can::frame& f, F&& on) noexcept;
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_response(const can::frame& f, node_id node, F&& on) noexcept {
     if (const auto e = powerkey::detail::check_frame(f, cob_id(function::sdo_tx, node), 8);
         e != errc{})
         return e;
+    return visit_sdo_response_data<R>(f, on);
+}
+
+// The same for a frame whose identifier the caller has already checked.
+template <class R, class F>
+[[nodiscard]] constexpr R visit_sdo_response_data(const can::frame& f, F&& on) noexcept {
+    if (f.size() != 8) return errc::wrong_length;
     const std::uint8_t c = f[0];
     switch (c >> 5) {
         case 0:  // upload segment
-            return sdo_response{sdo_segment_response{(c & 0x10) != 0,
-                                                     segment_unused::make((c >> 1) & 7).value(),
-                                                     (c & 1) != 0,
-                                                     {f[1], f[2], f[3], f[4], f[5], f[6], f[7]}}};
+            return on(sdo_segment_response{(c & 0x10) != 0,
+                                           segment_unused::make((c >> 1) & 7).value(),
+                                           (c & 1) != 0,
+                                           {f[1], f[2], f[3], f[4], f[5], f[6], f[7]}});
         case 2:  // initiate upload
             if ((c & 0x10) != 0) return errc::reserved_not_zero;
             if ((c & 0x02) != 0) {  // expedited
                 if ((c & 0x01) == 0) return errc::unknown_command;
-                return sdo_response{
-                    sdo_upload_response{detail::address_of(f), detail::expedited_of(f)}};
+                return on(sdo_upload_response{detail::address_of(f), detail::expedited_of(f)});
             }
             if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
-            return sdo_response{
-                sdo_upload_initiate_response{detail::address_of(f), (c & 0x01) != 0,
-                                             static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4))}};
+            return on(sdo_upload_initiate_response{
+                detail::address_of(f), (c & 0x01) != 0,
+                static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4))});
         case 3:  // initiate download response
             if (c != 0x60 || !powerkey::detail::all_zero(f.bytes(), 4, 8))
                 return errc::reserved_not_zero;
-            return sdo_response{sdo_download_response{detail::address_of(f)}};
+            return on(sdo_download_response{detail::address_of(f)});
         case 4:  // abort
             if (c != 0x80) return errc::reserved_not_zero;
-            return sdo_response{detail::abort_of(f)};
+            return on(detail::abort_of(f));
         default: return errc::unknown_command;
     }
+}
+
+// The same as a variant of the structs.
+[[nodiscard]] constexpr result<sdo_request> decode_sdo_request(const can::frame& f,
+                                                               node_id node) noexcept {
+    return visit_sdo_request<result<sdo_request>>(
+        f, node, [](const auto& m) -> result<sdo_request> { return sdo_request{m}; });
+}
+[[nodiscard]] constexpr result<sdo_response> decode_sdo_response(const can::frame& f,
+                                                                 node_id node) noexcept {
+    return visit_sdo_response<result<sdo_response>>(
+        f, node, [](const auto& m) -> result<sdo_response> { return sdo_response{m}; });
 }
 
 }  // namespace powerkey::canopen

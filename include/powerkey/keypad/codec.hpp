@@ -216,63 +216,69 @@ constexpr canopen::expedited_data write_command(const command& c) noexcept {
 
 // --- SDO frames ---------------------------------------------------------------------------------
 
-constexpr result<message> decode_request(const model_info& m, const can::frame& f,
-                                         canopen::node_id node) noexcept {
-    const auto r = canopen::decode_sdo_request(f, node);
-    if (!r) return r.error();
-    if (const auto* s = std::get_if<canopen::sdo_segment_request>(&*r)) return message{*s};
-    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r))
-        return message{canopen::sdo_abort_request{*a}};
-    if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
-        const auto row = find_row(m.dictionary, u->address);
-        if (!row) return errc::unknown_object;
-        if (!row->readable()) return errc::unknown_command;
-        return message{sdo_read{row->id}};
-    }
-    const auto& d = std::get<canopen::sdo_download_request>(*r);
-    const auto row = find_row(m.dictionary, d.address);
-    if (!row) return errc::unknown_object;
-    if (!row->writable()) return errc::unknown_command;
-    if (kind_of(row->id).kind == value_kind::commands) return lift(read_command(m, d.value));
-    const auto v = read_value(m, *row, d.value, true);
-    if (!v) return v.error();
-    return message{sdo_write{row->id, *v}};
+constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
+    return canopen::visit_sdo_request_data<result<message>>(
+        f, [&m](const auto& r) -> result<message> {
+            using T = std::remove_cvref_t<decltype(r)>;
+            if constexpr (std::is_same_v<T, canopen::sdo_segment_request>) {
+                return message{r};
+            } else if constexpr (std::is_same_v<T, canopen::sdo_abort>) {
+                return message{canopen::sdo_abort_request{r}};
+            } else {
+                const auto i = row_index(m.dictionary, r.address);
+                if (i == no_row) return errc::unknown_object;
+                const object_row* row = &row_at(m.dictionary, i);
+                if constexpr (std::is_same_v<T, canopen::sdo_upload_request>) {
+                    if (!row->readable()) return errc::unknown_command;
+                    return message{sdo_read{row->id}};
+                } else {
+                    if (!row->writable()) return errc::unknown_command;
+                    if (kind_of(row->id).kind == value_kind::commands)
+                        return lift(read_command(m, r.value));
+                    const auto v = read_value(m, *row, r.value, true);
+                    if (!v) return v.error();
+                    return message{sdo_write{row->id, *v}};
+                }
+            }
+        });
 }
 
-constexpr result<message> decode_response(const model_info& m, const can::frame& f,
-                                          canopen::node_id node) noexcept {
-    const auto r = canopen::decode_sdo_response(f, node);
-    if (!r) return r.error();
-    if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) return message{*s};
-    if (const auto* a = std::get_if<canopen::sdo_abort>(&*r))
-        return message{canopen::sdo_abort_response{*a}};
-    if (const auto* w = std::get_if<canopen::sdo_download_response>(&*r)) {
-        const auto row = find_row(m.dictionary, w->address);
-        if (!row) return errc::unknown_object;
-        if (!row->writable()) return errc::unknown_command;
-        return message{sdo_write_reply{row->id}};
-    }
-    if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
-        const auto row = find_row(m.dictionary, i->address);
-        if (!row || kind_of(row->id).kind != value_kind::string) return errc::unknown_object;
-        return message{*i};
-    }
-    const auto& u = std::get<canopen::sdo_upload_response>(*r);
-    const auto row = find_row(m.dictionary, u.address);
-    if (!row) return errc::unknown_object;
-    if (!row->readable()) return errc::unknown_command;
-    const auto v = read_value(m, *row, u.value, false);
-    if (!v) return v.error();
-    return message{sdo_read_reply{row->id, *v}};
+constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
+    return canopen::visit_sdo_response_data<result<message>>(
+        f, [&m](const auto& r) -> result<message> {
+            using T = std::remove_cvref_t<decltype(r)>;
+            if constexpr (std::is_same_v<T, canopen::sdo_segment_response>) {
+                return message{r};
+            } else if constexpr (std::is_same_v<T, canopen::sdo_abort>) {
+                return message{canopen::sdo_abort_response{r}};
+            } else {
+                const auto i = row_index(m.dictionary, r.address);
+                if (i == no_row) return errc::unknown_object;
+                const object_row* row = &row_at(m.dictionary, i);
+                if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>) {
+                    if (kind_of(row->id).kind != value_kind::string) return errc::unknown_object;
+                    return message{r};
+                } else if constexpr (std::is_same_v<T, canopen::sdo_download_response>) {
+                    if (!row->writable()) return errc::unknown_command;
+                    return message{sdo_write_reply{row->id}};
+                } else {
+                    if (!row->readable()) return errc::unknown_command;
+                    const auto v = read_value(m, *row, r.value, false);
+                    if (!v) return v.error();
+                    return message{sdo_read_reply{row->id, *v}};
+                }
+            }
+        });
 }
 
 // --- PDO frames ---------------------------------------------------------------------------------
 
+// The identifier is the caller's (decode classified it): only the length and data are checked.
 constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
-                                     const can::frame& f, canopen::node_id node) noexcept {
+                                     const can::frame& f) noexcept {
     switch (fn) {
         case canopen::function::tpdo1: {
-            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 5); e != errc{}) return e;
+            if (f.size() != 5) return errc::wrong_length;
             if (f[2] != 0 || f[3] != 0) return errc::reserved_not_zero;
             const auto keys = unpack_keys(m, load_le<2>(f.bytes(), 0));
             if (!keys) return keys.error();
@@ -280,7 +286,7 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
         }
         case canopen::function::rpdo1:
         case canopen::function::rpdo2: {
-            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            if (f.size() != 8) return errc::wrong_length;
             const auto l = unpack_leds(m, load_le<8>(f.bytes(), 0), m.planes);
             if (!l) return l.error();
             if (fn == canopen::function::rpdo1) return message{led_on{*l}};
@@ -288,7 +294,7 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
         }
         case canopen::function::rpdo3: {
             if (!m.brightness_pdo) return errc::wrong_id;
-            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            if (f.size() != 8) return errc::wrong_length;
             if (!all_zero(f.bytes(), 1, 8)) return errc::reserved_not_zero;
             const auto l = level::make(f[0]);
             if (!l) return l.error();
@@ -296,7 +302,7 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
         }
         case canopen::function::rpdo4: {
             if (!m.backlight_pdo) return errc::wrong_id;
-            if (const auto e = check_frame(f, canopen::cob_id(fn, node), 8); e != errc{}) return e;
+            if (f.size() != 8) return errc::wrong_length;
             if (!all_zero(f.bytes(), 2, 8)) return errc::reserved_not_zero;
             const auto l = level::make(f[0]);
             if (!l) return l.error();
@@ -388,25 +394,28 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
 [[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node,
                                                model m) noexcept {
-    const auto mi = info(m);
-    if (!mi) return mi.error();
-    const auto c = canopen::classify(f);
-    switch (c.fn) {
-        case canopen::function::nmt: return detail::lift(canopen::decode_nmt(f));
-        case canopen::function::sync: return detail::lift(canopen::decode_sync(f));
-        case canopen::function::j1939:
-            if (!mi->j1939) return errc::wrong_id_format;
-            return detail::lift(j1939::decode_switch_to_canopen(f));
-        case canopen::function::other: return errc::wrong_id;
-        default: break;
+    if (!detail::is_model(m)) return errc::value_out_of_range;
+    const model_info& mi = detail::row_of(m);
+    if (f.is_extended()) {
+        if (!mi.j1939) return errc::wrong_id_format;
+        return detail::lift(j1939::decode_switch_to_canopen(f));
     }
-    if (c.node != node.value()) return errc::wrong_id;
-    switch (c.fn) {
-        case canopen::function::sdo_rx: return detail::decode_request(*mi, f, node);
-        case canopen::function::sdo_tx: return detail::decode_response(*mi, f, node);
-        case canopen::function::heartbeat:
-            return detail::lift(canopen::decode_heartbeat(f, node));
-        default: return detail::decode_pdo(*mi, c.fn, f, node);
+    // One switch on the function code (bits 10..7) after the node (bits 6..0): the same
+    // classification as canopen::classify, written into the dispatch (every frame passes here).
+    const std::uint32_t id = f.raw_id();
+    if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
+    if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
+    if ((id & 0x7F) != node.value()) return errc::wrong_id;
+    switch (id >> 7) {
+        case 0x3: return detail::decode_pdo(mi, canopen::function::tpdo1, f);
+        case 0x4: return detail::decode_pdo(mi, canopen::function::rpdo1, f);
+        case 0x6: return detail::decode_pdo(mi, canopen::function::rpdo2, f);
+        case 0x8: return detail::decode_pdo(mi, canopen::function::rpdo3, f);
+        case 0xA: return detail::decode_pdo(mi, canopen::function::rpdo4, f);
+        case 0xB: return detail::decode_response(mi, f);
+        case 0xC: return detail::decode_request(mi, f);
+        case 0xE: return detail::lift(canopen::decode_heartbeat(f, node));
+        default: return errc::wrong_id;
     }
 }
 

@@ -83,11 +83,21 @@ inline constexpr startup_show command_shows[] = {startup_show::complete, startup
                                                  startup_show::disabled};
 }  // namespace detail
 
+namespace detail {
+// Row + 1 of each command byte below 80h, 0 for none: one load instead of a search.
+inline constexpr auto command_index = [] {
+    std::array<std::uint8_t, 0x80> t{};
+    for (std::size_t i = 0; i < std::size(command_table); ++i)
+        t[static_cast<std::size_t>(command_table[i].code)] = static_cast<std::uint8_t>(i + 1);
+    return t;
+}();
+}  // namespace detail
+
 // The row of a command byte; nullopt for a byte no command has.
 [[nodiscard]] constexpr std::optional<command_row> find_command(std::uint8_t code) noexcept {
-    for (const auto& r : detail::command_table)
-        if (static_cast<std::uint8_t>(r.code) == code) return r;
-    return std::nullopt;
+    if (code >= detail::command_index.size() || detail::command_index[code] == 0)
+        return std::nullopt;
+    return detail::command_table[detail::command_index[code] - 1u];
 }
 
 // One command. `code` says which; its row says which of the other members it carries (the rest

@@ -67,6 +67,14 @@ inline constexpr std::size_t model_count = std::size(detail::model_table);
     return detail::model_table[i];
 }
 
+namespace detail {
+// The row of a model the caller has checked is one (no copy: the decoders' hot path).
+constexpr const model_info& row_of(model m) noexcept {
+    return model_table[static_cast<std::size_t>(m)];
+}
+constexpr bool is_model(model m) noexcept { return static_cast<std::size_t>(m) < model_count; }
+}  // namespace detail
+
 // --- the LED-map and key-map rule ---------------------------------------------------------------
 
 namespace detail {
@@ -86,14 +94,21 @@ constexpr std::uint64_t low_bits(unsigned n) noexcept {
 }
 
 // The map in a bit string of the model; errc::reserved_not_zero for a set bit that names no LED.
+// The planes written out rather than looped: this runs for every LED PDO (docs/performance.md).
 [[nodiscard]] constexpr result<leds> unpack_leds(const model_info& m, std::uint64_t v,
                                                  unsigned planes) noexcept {
+    const std::uint64_t one = detail::low_bits(m.leds);
+    const unsigned s = m.stride;
+    std::uint64_t used = one;
     leds l;
-    std::uint64_t used = 0;
-    for (unsigned c = 0; c < planes; ++c) {
-        const auto mask = detail::low_bits(m.leds) << (c * m.stride);
-        used |= mask;
-        l.of(static_cast<plane>(c)) = led_set::from_mask((v & mask) >> (c * m.stride));
+    l.red = led_set::from_mask(v & one);
+    if (planes > 1) {
+        used |= one << s;
+        l.green = led_set::from_mask((v >> s) & one);
+    }
+    if (planes > 2) {
+        used |= one << (2 * s);
+        l.blue = led_set::from_mask((v >> (2 * s)) & one);
     }
     if ((v & ~used) != 0) return errc::reserved_not_zero;
     return l;

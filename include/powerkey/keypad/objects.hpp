@@ -442,30 +442,43 @@ static_assert(objects_distinct(pkp_li_rows));
     return detail::pk1000_rows;
 }
 
+namespace detail {
+inline constexpr std::uint8_t no_row = 0xFF;
+// The index of the row at an address in a dictionary's table, no_row when there is none.
+constexpr std::uint8_t row_index(dictionary d, canopen::sdo_address a) noexcept {
+    const auto key = address_key(a.index, a.subindex);
+    const auto r = d == dictionary::pkp_li ? pkp_li_index.by_address.find(key)
+                                           : pk1000_index.by_address.find(key);
+    return r ? static_cast<std::uint8_t>(*r) : no_row;
+}
+constexpr std::uint8_t row_index(dictionary d, object o) noexcept {
+    const auto i = static_cast<std::size_t>(o);
+    if (i >= object_count) return no_row;
+    const auto r = d == dictionary::pkp_li ? pkp_li_index.by_object[i] : pk1000_index.by_object[i];
+    return static_cast<std::uint8_t>(r - 1u);  // 0 (absent) wraps to no_row
+}
+// Row i of a dictionary, i < its size.
+constexpr const object_row& row_at(dictionary d, std::uint8_t i) noexcept {
+    return d == dictionary::pkp_li ? pkp_li_rows[i] : pk1000_rows[i];
+}
+static_assert(std::size(pk1000_rows) < no_row && std::size(pkp_li_rows) < no_row);
+}  // namespace detail
+
 // The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
 // (A copy, not a pointer: a null test on the address of a static object is not a constant
 // expression under UBSan.)
 [[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d,
                                                            canopen::sdo_address a) noexcept {
-    const auto key = detail::address_key(a.index, a.subindex);
-    if (d == dictionary::pkp_li) {
-        const auto r = detail::pkp_li_index.by_address.find(key);
-        if (!r) return std::nullopt;
-        return detail::pkp_li_rows[*r];
-    }
-    const auto r = detail::pk1000_index.by_address.find(key);
-    if (!r) return std::nullopt;
-    return detail::pk1000_rows[*r];
+    const auto i = detail::row_index(d, a);
+    if (i == detail::no_row) return std::nullopt;
+    return detail::row_at(d, i);
 }
 
 // The row of an object in a dictionary; nullopt when the dictionary does not have it.
 [[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d, object o) noexcept {
-    const auto i = static_cast<std::size_t>(o);
-    if (i >= object_count) return std::nullopt;
-    const auto r = d == dictionary::pkp_li ? detail::pkp_li_index.by_object[i]
-                                           : detail::pk1000_index.by_object[i];
-    if (r == 0) return std::nullopt;
-    return d == dictionary::pkp_li ? detail::pkp_li_rows[r - 1u] : detail::pk1000_rows[r - 1u];
+    const auto i = detail::row_index(d, o);
+    if (i == detail::no_row) return std::nullopt;
+    return detail::row_at(d, i);
 }
 
 // --- names ----------------------------------------------------------------------------------
