@@ -4,6 +4,7 @@
 #define POWERKEY_INDEX_SET_HPP
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -55,6 +56,33 @@ public:
         s.bits_ = static_cast<storage>(N == 64 ? m : (m & ((std::uint64_t{1} << N) - 1)));
         return s;
     }
+
+    // The members in increasing order: `for (unsigned k : pressed) ...`.
+    class iterator {
+    public:
+        using value_type = unsigned;
+        using difference_type = std::ptrdiff_t;
+        constexpr iterator() noexcept = default;
+        constexpr explicit iterator(std::uint64_t rest) noexcept : rest_(rest) {}
+        constexpr unsigned operator*() const noexcept {
+            return static_cast<unsigned>(std::countr_zero(rest_)) + 1u;
+        }
+        constexpr iterator& operator++() noexcept {
+            rest_ &= rest_ - 1;
+            return *this;
+        }
+        constexpr iterator operator++(int) noexcept {
+            iterator old = *this;
+            ++*this;
+            return old;
+        }
+        friend constexpr bool operator==(iterator, iterator) noexcept = default;
+
+    private:
+        std::uint64_t rest_ = 0;
+    };
+    [[nodiscard]] constexpr iterator begin() const noexcept { return iterator(bits_); }
+    [[nodiscard]] constexpr iterator end() const noexcept { return iterator(0); }
 
     friend constexpr bool operator==(const index_set&, const index_set&) noexcept = default;
 
