@@ -1,0 +1,97 @@
+// powerkey: what every behaviour role (virtual keypad, controller, checker) is stepped with.
+// Roles own no clock and do no I/O: the caller passes the current time to each call and drains
+// the frames a role wants to send from its fixed-capacity outbox.
+#ifndef POWERKEY_BEHAVIOUR_CLOCK_HPP
+#define POWERKEY_BEHAVIOUR_CLOCK_HPP
+
+#include <powerkey/can/frame.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+namespace powerkey::behaviour {
+
+// A point in time in milliseconds from a free-running 32-bit counter (a firmware tick, or the
+// candump timestamp in ms). The counter wraps after 49.7 days: compare points with before() /
+// elapsed(), which are right across the wrap as long as the two points are < 2^31 ms apart.
+struct millis {
+    std::uint32_t value = 0;
+
+    friend constexpr bool operator==(millis, millis) noexcept = default;
+};
+
+// A span of time in milliseconds.
+struct duration_ms {
+    std::uint32_t value = 0;
+
+    friend constexpr bool operator==(duration_ms, duration_ms) noexcept = default;
+};
+
+// t + d (wraps like the counter).
+[[nodiscard]] constexpr millis operator+(millis t, duration_ms d) noexcept {
+    return millis{static_cast<std::uint32_t>(t.value + d.value)};
+}
+// Time from `since` to `now` (wrap-safe).
+[[nodiscard]] constexpr duration_ms elapsed(millis since, millis now) noexcept {
+    return duration_ms{static_cast<std::uint32_t>(now.value - since.value)};
+}
+// Whether a comes strictly before b (wrap-safe: b - a taken as a signed 32-bit difference).
+[[nodiscard]] constexpr bool before(millis a, millis b) noexcept {
+    const auto diff = static_cast<std::uint32_t>(b.value - a.value);
+    return diff != 0 && diff < 0x8000'0000u;
+}
+// Whether `deadline` has come at `now` (now == deadline counts).
+[[nodiscard]] constexpr bool reached(millis deadline, millis now) noexcept {
+    return !before(now, deadline);
+}
+
+// A fixed-capacity FIFO of frames: a role's outbox. No heap; push() on a full queue refuses
+// (returns false) and counts the frame in dropped(), so a caller that drains too slowly sees it.
+template <std::size_t N>
+class frame_queue {
+    static_assert(N > 0, "a frame_queue holds at least one frame");
+
+public:
+    [[nodiscard]] constexpr bool push(const can::frame& f) noexcept {
+        if (full()) {
+            ++dropped_;
+            return false;
+        }
+        items_[(head_ + size_) % N] = f;
+        ++size_;
+        return true;
+    }
+    // The oldest frame, removed; nullopt when empty.
+    [[nodiscard]] constexpr std::optional<can::frame> pop() noexcept {
+        if (size_ == 0) return std::nullopt;
+        const can::frame f = items_[head_];
+        head_ = (head_ + 1) % N;
+        --size_;
+        return f;
+    }
+    // The oldest frame, left in place.
+    [[nodiscard]] constexpr std::optional<can::frame> front() const noexcept {
+        if (size_ == 0) return std::nullopt;
+        return items_[head_];
+    }
+    constexpr void clear() noexcept { head_ = size_ = 0; }
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
+    [[nodiscard]] constexpr bool empty() const noexcept { return size_ == 0; }
+    [[nodiscard]] constexpr bool full() const noexcept { return size_ == N; }
+    [[nodiscard]] static constexpr std::size_t capacity() noexcept { return N; }
+    // Frames refused by push() because the queue was full, since construction.
+    [[nodiscard]] constexpr std::size_t dropped() const noexcept { return dropped_; }
+
+private:
+    std::array<can::frame, N> items_{};
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    std::size_t dropped_ = 0;
+};
+
+}  // namespace powerkey::behaviour
+
+#endif  // POWERKEY_BEHAVIOUR_CLOCK_HPP
