@@ -16,6 +16,9 @@ enum class function : std::uint8_t {
     nmt,        // 000h
     sync,       // 080h
     tpdo1,      // 180h + node: keypad -> host (key state)
+    tpdo2,      // 280h + node: keypad -> host (PKP-3500-MT encoder 1)
+    tpdo3,      // 380h + node: keypad -> host (PKP-3500-MT encoder 2)
+    tpdo4,      // 480h + node: keypad -> host (PKP-3500-MT analog inputs)
     rpdo1,      // 200h + node: host -> keypad (LED on)
     rpdo2,      // 300h + node: host -> keypad (LED blink)
     rpdo3,      // 400h + node: host -> keypad (LED brightness)
@@ -34,6 +37,7 @@ struct powerkey::enum_names<powerkey::canopen::function> {
     using f = canopen::function;
     static constexpr enum_name_entry<f> entries[] = {
         {f::nmt, "nmt"},         {f::sync, "sync"},     {f::tpdo1, "tpdo1"},
+        {f::tpdo2, "tpdo2"},     {f::tpdo3, "tpdo3"},   {f::tpdo4, "tpdo4"},
         {f::rpdo1, "rpdo1"},     {f::rpdo2, "rpdo2"},   {f::rpdo3, "rpdo3"},
         {f::rpdo4, "rpdo4"},     {f::sdo_tx, "sdo_tx"}, {f::sdo_rx, "sdo_rx"},
         {f::heartbeat, "heartbeat"}, {f::j1939, "j1939"}, {f::other, "other"},
@@ -47,6 +51,9 @@ namespace detail {
 constexpr std::uint16_t per_node_base(function f) noexcept {
     switch (f) {
         case function::tpdo1: return 0x180;
+        case function::tpdo2: return 0x280;
+        case function::tpdo3: return 0x380;
+        case function::tpdo4: return 0x480;
         case function::rpdo1: return 0x200;
         case function::rpdo2: return 0x300;
         case function::rpdo3: return 0x400;
@@ -86,8 +93,8 @@ struct cob_info {
     // bases (every decoder starts here).
     constexpr function by_code[16] = {
         function::other, function::other,  function::other,  function::tpdo1,
-        function::rpdo1, function::other,  function::rpdo2,  function::other,
-        function::rpdo3, function::other,  function::rpdo4,  function::sdo_tx,
+        function::rpdo1, function::tpdo2,  function::rpdo2,  function::tpdo3,
+        function::rpdo3, function::tpdo4,  function::rpdo4,  function::sdo_tx,
         function::sdo_rx, function::other, function::heartbeat, function::other};
     const function f = by_code[(v >> 7) & 0xF];
     if (node == 0 || f == function::other) return {function::other, 0};
