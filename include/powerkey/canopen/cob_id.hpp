@@ -1,5 +1,5 @@
 // powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it.
-//   NMT 000h, SYNC 080h, TPDO1 180h+n, RPDO1..4 200h/300h/400h/500h+n,
+//   NMT 000h, SYNC 080h, TPDO1..4 180h/280h/380h/480h+n, RPDO1..4 200h/300h/400h/500h+n,
 //   SDO server->client 580h+n, SDO client->server 600h+n, NMT error control 700h+n.
 #ifndef POWERKEY_CANOPEN_COB_ID_HPP
 #define POWERKEY_CANOPEN_COB_ID_HPP
