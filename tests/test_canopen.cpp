@@ -29,6 +29,9 @@ static_assert(cob_id(function::sdo_rx, keypad).value() == 0x615);
 static_assert(cob_id(function::heartbeat, keypad).value() == 0x715);
 static_assert(cob_id(function::sdo_rx, 0x7F).value() == 0x67F);
 static_assert(cob_id(function::tpdo1, 1).value() == 0x181);
+static_assert(cob_id(function::tpdo2, keypad).value() == 0x295);
+static_assert(cob_id(function::tpdo3, keypad).value() == 0x395);
+static_assert(cob_id(function::tpdo4, keypad).value() == 0x495);
 
 struct cob_row {
     std::uint16_t id;
@@ -43,7 +46,8 @@ constexpr cob_row cob_rows[] = {
     {0x181, {function::tpdo1, 1}},     {0x77F, {function::heartbeat, 0x7F}},
     {0x095, {function::other, 0}},  // EMCY 080h + node: not used by the keypads
     {0x100, {function::other, 0}},     {0x280, {function::other, 0}},
-    {0x295, {function::other, 0}},  // TPDO2 is not used by the keypads
+    {0x295, {function::tpdo2, 0x15}},  // TPDO2..4: the PKP-3500-MT's encoders and inputs
+    {0x395, {function::tpdo3, 0x15}},  {0x495, {function::tpdo4, 0x15}},
     {0x5FF, {function::sdo_tx, 0x7F}}, {0x600, {function::other, 0}},
     {0x7E5, {function::other, 0}},  // LSS: past 77Fh, the last heartbeat COB-ID
 };
