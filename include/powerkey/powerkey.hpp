@@ -12,6 +12,8 @@
 #include <powerkey/session.hpp>
 #include <powerkey/version.hpp>
 
+#include <powerkey/behaviour/virtual_keypad.hpp>
+
 #include <powerkey/can/candump.hpp>
 #include <powerkey/can/frame.hpp>
 

@@ -1,0 +1,875 @@
+// powerkey: a virtual keypad, the device side of every model, for testing controllers without a
+// keypad. It owns no clock and does no I/O: the caller steps it with the frames the controller
+// sends and the current time, and drains what the keypad sends from its outbox.
+//
+//   behaviour::virtual_keypad<> k(model::pk1000);      // node 15h, the manual's defaults
+//   k.power_on(t);                                      // boot-up 715#00 (section 8)
+//   k.receive(frame, t);  k.advance(t);  k.press(3, t);
+//   while (const auto f = k.transmit()) send(*f);
+//
+// What it does, each with the manual section it comes from (PK1000 = PK1000_CANopen_UM_rev1.13,
+// PKP = PKP-2200-2400-LI_CANopen_UM_rev1.1), and what is inferred, is listed in docs/behaviour.md.
+// Allocation-free, exception-free, constexpr: a whole session can run in a static_assert.
+#ifndef POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
+#define POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
+
+#include <powerkey/behaviour/clock.hpp>
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/detail/bytes.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/values.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+
+namespace powerkey::behaviour {
+
+// --- the strings each keypad reports ------------------------------------------------------------
+
+// A string object as the keypad sends it: the bytes exactly as the manual prints them (NUL
+// padding and all, E-CORE-5), and what the initiate reply announces. Strings of up to 4 bytes go
+// expedited (43h), longer ones segmented: 41h with `announced` in bytes 4..7, or 40h ("size not
+// indicated") with `announced` still in byte 4 where the manual prints that (E-CORE-3).
+struct keypad_string {
+    std::uint8_t models;  // bit m for model m (models.hpp order)
+    object id;
+    std::string_view bytes;
+    std::uint32_t announced;
+    bool size_indicated;
+    std::string_view section;  // where the manual prints it; "inferred" where it does not
+};
+
+namespace detail {
+inline constexpr std::uint8_t pk1000_bit = 1, pkp2200_bit = 2, pkp2400_bit = 4, pkp2600_bit = 8,
+                              pkp_bits = 14;
+// Every byte of a literal but its terminator, NULs inside included.
+template <std::size_t N>
+constexpr std::string_view bytes_of(const char (&s)[N]) noexcept {
+    return {s, N - 1};
+}
+}  // namespace detail
+
+inline constexpr keypad_string keypad_strings[] = {
+    {detail::pk1000_bit, object::device_name, detail::bytes_of("BlinkMarine"), 11, true, "PK1000 32"},
+    {detail::pk1000_bit, object::hardware_version, detail::bytes_of("V_03"), 4, true, "PK1000 33"},
+    {detail::pk1000_bit, object::software_version, detail::bytes_of("V2.8"), 4, true, "PK1000 34"},
+    // 7 bytes announced and sent: "PK1000" and a NUL (E-CORE-5)
+    {detail::pk1000_bit, object::model_name, detail::bytes_of("PK1000\0"), 7, true, "PK1000 35"},
+    {detail::pk1000_bit, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true, "PK1000 48 (E-CORE-1)"},
+    {detail::pkp_bits, object::device_name, detail::bytes_of("BlinkMarine"), 11, true, "PKP 19"},
+    {detail::pkp_bits, object::hardware_version, detail::bytes_of("Rev 1.0\0D\0"), 10, true, "PKP 20 (E-CORE-5)"},
+    {detail::pkp_bits, object::software_version, detail::bytes_of("Rev 1.0\0R\0"), 10, true, "PKP 21 (E-CORE-5)"},
+    // 7 announced, 8 sent: the keypad goes on after the announced size (E-CORE-2)
+    {detail::pkp2400_bit, object::model_name, detail::bytes_of("PKU2400\0"), 7, true, "PKP 22 (E-CORE-2)"},
+    {detail::pkp2200_bit, object::model_name, detail::bytes_of("PKU2200\0"), 7, true, "inferred from PKP 22"},
+    {detail::pkp2600_bit, object::model_name, detail::bytes_of("PKU2600\0"), 7, true, "inferred from PKP 22"},
+    // 40h, size not indicated, 08h in byte 4 (E-CORE-3)
+    {detail::pkp2400_bit, object::device_model, detail::bytes_of("PKU2400\0"), 8, false, "PKP 29 (E-CORE-3)"},
+    {detail::pkp2200_bit, object::device_model, detail::bytes_of("PKU2200\0"), 8, false, "inferred from PKP 29"},
+    {detail::pkp2600_bit, object::device_model, detail::bytes_of("PKU2600\0"), 8, false, "inferred from PKP 29"},
+    // 6 announced, 8 sent (E-CORE-4)
+    {detail::pkp_bits, object::serial_number_string, detail::bytes_of("000000\0\0"), 6, true, "PKP 31 (E-CORE-4)"},
+};
+
+// The string object `o` of model m reports; nullopt when it has none.
+[[nodiscard]] constexpr std::optional<keypad_string> string_of(model m, object o) noexcept {
+    const auto bit = static_cast<std::uint8_t>(1u << static_cast<unsigned>(m));
+    for (const auto& s : keypad_strings)
+        if ((s.models & bit) != 0 && s.id == o) return s;
+    return std::nullopt;
+}
+
+// --- the keypad ---------------------------------------------------------------------------------
+
+// Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
+// switched to J1939 (PK1000 49), where it hears only the switch back.
+enum class run_state : std::uint8_t { off, pre_operational, operational, stopped, j1939 };
+
+struct keypad_options {
+    // A real keypad drops an SDO request that arrives while it is still answering another: no
+    // reply, no abort (issue 12, from field logs; neither manual says so). On by default; off, the
+    // later request is answered after the earlier one.
+    bool drop_sdo_while_busy = true;
+    // How long the keypad takes to answer an SDO request, in ms (inferred: the manuals give no
+    // figure; 1 ms is what a 125 kbit/s keypad shows). The reply leaves at receive time + this,
+    // released by advance(); 0 answers at once.
+    std::uint32_t sdo_response_ms = 1;
+};
+
+// The backlight as the keypad shows it (PK1000 15, 19 b/c; PKP 13 b/c, 30).
+struct backlight_state {
+    powerkey::level level = 0;
+    backlight_colour colour = backlight_colour::amber;
+    friend constexpr bool operator==(const backlight_state&, const backlight_state&) noexcept = default;
+};
+
+template <std::size_t Outbox = 16>
+class virtual_keypad {
+public:
+    // A keypad of model m, unpowered, with the manual's default settings (PK1000 3, PKP 3) and
+    // node id `node` (default 15h) as its stored node id.
+    constexpr explicit virtual_keypad(model m,
+                                      canopen::node_id node = canopen::default_node_id,
+                                      keypad_options options = {}) noexcept
+        : model_(powerkey::detail::is_model(m) ? m : model::pk1000),
+          info_(powerkey::detail::row_of(model_)),
+          options_(options) {
+        factory_defaults();
+        value_[idx(object::node_id)] = node.value();
+        node_ = node;
+    }
+
+    // --- power and faults -------------------------------------------------------------------
+
+    // Power on: boot with the stored settings (see boot()).
+    constexpr void power_on(millis t) noexcept {
+        now_ = t;
+        boot(t);
+    }
+    // Power off: the keypad hears and sends nothing; what it was sending is lost.
+    constexpr void power_off() noexcept {
+        state_ = run_state::off;
+        pending_.reset();
+        upload_ = {};
+        outbox_.clear();
+    }
+    // A power cycle at t (fault injection: the keypad reboots mid-session).
+    constexpr void power_cycle(millis t) noexcept {
+        power_off();
+        power_on(t);
+    }
+    // Silence (fault injection): from t for d the keypad transmits nothing (frames it would send
+    // are lost); timers keep running, received frames are still handled.
+    constexpr void silence(millis t, duration_ms d) noexcept {
+        silent_until_ = t + d;
+        silent_ = true;
+    }
+    // Lost frames (fault injection): the next n frames sent to the keypad are not received.
+    constexpr void drop_received(std::uint32_t n) noexcept { drop_rx_ = n; }
+    // Lost frames (fault injection): the next n frames the keypad sends are lost.
+    constexpr void drop_transmitted(std::uint32_t n) noexcept { drop_tx_ = n; }
+
+    // --- stepping ---------------------------------------------------------------------------
+
+    // A frame on the bus at time t (any frame: the keypad picks out what concerns it).
+    constexpr void receive(const can::frame& f, millis t) noexcept {
+        advance(t);
+        if (state_ == run_state::off) return;
+        if (drop_rx_ > 0) {
+            --drop_rx_;
+            return;
+        }
+        if (state_ == run_state::j1939) {
+            on_j1939(f, t);
+            return;
+        }
+        if (f.is_extended()) return;
+        const std::uint32_t id = f.raw_id();
+        if (id == 0x000) return on_nmt(f, t);
+        if (id == 0x080) return on_sync(f, t);
+        if ((id & 0x780) == 0x700) return on_heartbeat(f, t);
+        if ((id & 0x7F) != node_.value()) return;
+        switch (id & 0x780) {
+            case 0x200:
+            case 0x300:
+            case 0x400:
+            case 0x500: return on_rpdo(f, t);
+            case 0x600: return on_sdo(f, t);
+            default: return;
+        }
+    }
+
+    // Runs the timers up to t: a due SDO reply, the heartbeat producer (1017h), the heartbeat
+    // consumer (1016h), the periodic key state (1800h/5, PKP 13 f). Call it at least every few
+    // milliseconds, or whenever the caller wakes; receive() and press() call it too.
+    constexpr void advance(millis t) noexcept {
+        if (silent_ && reached(silent_until_, t)) silent_ = false;
+        now_ = t;
+        if (state_ == run_state::off || state_ == run_state::j1939) return;
+        release_reply(t);
+        // heartbeat producer (PK1000 29, PKP 9/17): every heartbeat_time ms, the NMT state
+        const std::uint32_t hb = value(object::heartbeat_time);
+        if (hb != 0) {
+            while (reached(next_heartbeat_, t)) {
+                send_heartbeat(nmt_byte());
+                next_heartbeat_ = next_heartbeat_ + duration_ms{hb};
+            }
+        }
+        // heartbeat consumer (PK1000 28): monitoring starts with the first heartbeat; on a loss
+        // the keypad turns off every LED and the backlight and goes pre-operational, until a
+        // new NMT start (NOTE 2).
+        if (monitoring_ && reached(consumer_deadline_, t)) {
+            monitoring_ = false;
+            on_ = {};
+            blink_ = {};
+            backlight_.level = 0;
+            if (state_ == run_state::operational) state_ = run_state::pre_operational;
+        }
+        // periodic key state: the event timer (PK1000 46 b) or PKP command 12h (PKP 13 f)
+        const std::uint32_t period = periodic_ms();
+        if (state_ == run_state::operational && period != 0) {
+            while (reached(next_periodic_, t)) {
+                send_keys(next_periodic_);
+                next_periodic_ = next_periodic_ + duration_ms{period};
+            }
+        }
+    }
+
+    // Scripted keys: press or release key k (1..the model's keys) at t. False for a key the
+    // model lacks. A change sends the key state when the keypad is operational and event-driven
+    // (PK1000 11, 46: transmission type FEh; PKP 10).
+    constexpr bool press(unsigned k, millis t) noexcept {
+        if (k < 1 || k > info_.keys) return false;
+        key_set s = keys_;
+        s.insert(k);
+        set_keys(s, t);
+        return true;
+    }
+    constexpr bool release(unsigned k, millis t) noexcept {
+        if (k < 1 || k > info_.keys) return false;
+        key_set s = keys_;
+        s.erase(k);
+        set_keys(s, t);
+        return true;
+    }
+    // All keys at once (keys the model lacks are left out).
+    constexpr void set_keys(key_set s, millis t) noexcept {
+        advance(t);
+        s = key_set::from_mask(s.mask() & ((std::uint64_t{1} << info_.keys) - 1));
+        if (s == keys_) return;
+        keys_ = s;
+        if (state_ == run_state::operational && event_driven()) send_keys(t);
+    }
+
+    // The next frame the keypad sends, oldest first; nullopt when it has nothing to send.
+    [[nodiscard]] constexpr std::optional<can::frame> transmit() noexcept { return outbox_.pop(); }
+
+    // --- what it shows ----------------------------------------------------------------------
+
+    [[nodiscard]] constexpr run_state state() const noexcept { return state_; }
+    [[nodiscard]] constexpr model which() const noexcept { return model_; }
+    // The node id it answers on now (changes with 2013h at once on the PK1000, section 23; with
+    // PKP command 70h at the reboot that follows, PKP 13 h).
+    [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
+    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
+    // LED maps: on, blink (both: alternate blink) (PK1000 12, 13, 17, 18; PKP 11-13 a, 15, 16).
+    [[nodiscard]] constexpr const leds& led_on() const noexcept { return on_; }
+    [[nodiscard]] constexpr const leds& led_blink() const noexcept { return blink_; }
+    // Key LED brightness 00h..3Fh (PK1000 14, 19 a; PKP 13 b, 30).
+    [[nodiscard]] constexpr powerkey::level brightness() const noexcept { return brightness_; }
+    [[nodiscard]] constexpr backlight_state backlight() const noexcept { return backlight_; }
+    // The bit rate it runs at: the stored 2010h / command 11h value as of the last reset.
+    [[nodiscard]] constexpr baud_rate baud() const noexcept { return baud_; }
+    // The tick timer of the key-state PDO at t: +1 every 100 ms since power on (PK1000 11).
+    [[nodiscard]] constexpr std::uint8_t tick(millis t) const noexcept {
+        return static_cast<std::uint8_t>(elapsed(boot_time_, t).value / 100u);
+    }
+    // The number an SDO read of o would give now (for number-like objects; LED maps, keys and
+    // strings have their own accessors); nullopt for an object the model's dictionary lacks.
+    [[nodiscard]] constexpr std::optional<std::uint32_t> read(object o) const noexcept {
+        const auto row = find_row(info_.dictionary, o);
+        if (!row) return std::nullopt;
+        return current(*row);
+    }
+    // Frames the outbox could not hold (the caller drained too slowly).
+    [[nodiscard]] constexpr std::size_t overflowed() const noexcept { return outbox_.dropped(); }
+    [[nodiscard]] static constexpr std::size_t outbox_capacity() noexcept { return Outbox; }
+
+private:
+    // --- stored settings ----------------------------------------------------------------------
+
+    // Every object's value, by object (not by row: the PKP keeps settings its dictionary does not
+    // show, such as boot-up or active on start-up, set by command). Everything written is stored
+    // and survives a reset or power cycle (inferred: the keypads have no 1010h "store"; the
+    // manuals call the written settings effective after a reset), except the run-time state
+    // below (LED maps, levels, keys), which a reset sets from the stored start-up defaults.
+    static constexpr std::size_t idx(object o) noexcept { return static_cast<std::size_t>(o); }
+    constexpr std::uint32_t value(object o) const noexcept { return value_[idx(o)]; }
+
+    constexpr void factory_defaults() noexcept {
+        for (auto& v : value_) v = 0;
+        // defaults common to both manuals (section 3); the PK1000 rows carry them
+        for (const auto& r : rows_of(dictionary::pk1000)) value_[idx(r.id)] = r.initial;
+        for (const auto& r : rows_of(info_.dictionary)) value_[idx(r.id)] = r.initial;
+        value_[idx(object::node_id)] = canopen::default_node_id.value();
+        if (info_.dictionary == dictionary::pkp_li) {
+            // PKP 32: the key and LED counts of the model
+            value_[idx(object::total_keys)] = info_.keys;
+            value_[idx(object::total_leds)] = info_.leds;
+            value_[idx(object::tpdo1_event_timer)] = 0;  // PKP 3: periodic transmission off
+        }
+    }
+
+    // The value a read of row r gives now.
+    constexpr std::uint32_t current(const object_row& r) const noexcept {
+        switch (r.id) {
+            case object::keys: return static_cast<std::uint32_t>(keys_.mask());
+            case object::led_on: return map_bits(on_);
+            case object::led_blink: return map_bits(blink_);
+            case object::led_on_red: return static_cast<std::uint32_t>(on_.red.mask());
+            case object::led_on_green: return static_cast<std::uint32_t>(on_.green.mask());
+            case object::led_blink_red: return static_cast<std::uint32_t>(blink_.red.mask());
+            case object::led_blink_green: return static_cast<std::uint32_t>(blink_.green.mask());
+            case object::led_brightness: return brightness_.value();
+            case object::backlight_level: return backlight_.level.value();
+            case object::backlight_colour: return static_cast<std::uint32_t>(backlight_.colour);
+            case object::node_id: return node_.value();
+            case object::rpdo1_cob_id:
+            case object::rpdo2_cob_id:
+            case object::rpdo3_cob_id:
+            case object::rpdo4_cob_id:
+            case object::tpdo1_cob_id:
+                // PK1000 38-41, 46: 4000 0000h + the identifier in use; the PKP prints the
+                // function base without the node (E-PKP-5), which is what its rows hold.
+                if (info_.dictionary == dictionary::pk1000)
+                    return (r.initial & 0xFFFF'FF80u) | node_.value();
+                return r.initial;
+            default: return value(r.id);
+        }
+    }
+    constexpr std::uint32_t map_bits(const leds& l) const noexcept {
+        return static_cast<std::uint32_t>(pack_leds(info_, l, info_.object_planes()) &
+                                          0xFFFF'FFFFu);
+    }
+
+    // --- boot and NMT -------------------------------------------------------------------------
+
+    // Boot (power on, reset node, PKP node change): the stored settings take effect (node id,
+    // baud rate, a restore of the defaults written to 1011h), the run-time state starts from
+    // the stored start-up values (PK1000 19 d-f, PKP 13 i-k), the boot-up message goes out
+    // unless 2011h / command 13h turned it off (PK1000 8, 21; PKP 8, 13 g), and the keypad is
+    // pre-operational, or operational when 2012h / command 10h says so (PK1000 22; PKP 13 d).
+    constexpr void boot(millis t) noexcept {
+        if (restore_pending_) {
+            factory_defaults();
+            restore_pending_ = false;
+        }
+        node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
+        baud_ = static_cast<baud_rate>(value(object::baud_rate) & 7u);
+        on_ = {};
+        blink_ = {};
+        brightness_ = powerkey::level::make(value(object::default_led_brightness)).value_or(powerkey::level{0x3F});
+        backlight_.level =
+            powerkey::level::make(value(object::default_backlight_level)).value_or(powerkey::level{0});
+        backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
+        keys_ = {};
+        rpdo_buffer_ = {};
+        sync_count_ = 0;
+        monitoring_ = false;
+        pending_.reset();
+        upload_ = {};
+        boot_time_ = t;
+        if (value(object::protocol_j1939) != 0 && info_.j1939) {
+            state_ = run_state::j1939;
+            return;
+        }
+        state_ = value(object::active_on_startup) != 0 ? run_state::operational
+                                                       : run_state::pre_operational;
+        restart_timers(t);
+        // "If a CANopen device starts with a heartbeat producer time unequal to 0 the boot-up
+        // message is regarded as first heartbeat message" (PK1000 29, PKP 9).
+        if (value(object::boot_up) != 0) send_heartbeat(0x00);
+    }
+    // Reset communication (CiA 301 7.3.2.2.1): the pending node id and baud rate take effect and
+    // the boot-up goes out; the application (LEDs, levels) keeps its state (inferred: the manuals
+    // do not print 82h).
+    constexpr void reset_communication(millis t) noexcept {
+        node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
+        baud_ = static_cast<baud_rate>(value(object::baud_rate) & 7u);
+        rpdo_buffer_ = {};
+        sync_count_ = 0;
+        monitoring_ = false;
+        pending_.reset();
+        upload_ = {};
+        state_ = run_state::pre_operational;
+        restart_timers(t);
+        if (value(object::boot_up) != 0) send_heartbeat(0x00);
+    }
+    constexpr void restart_timers(millis t) noexcept {
+        next_heartbeat_ = t + duration_ms{value(object::heartbeat_time)};
+        const std::uint32_t p = periodic_ms();
+        next_periodic_ = t + duration_ms{p};
+    }
+
+    // NMT (PK1000 4-7, PKP 4-7): start, stop (02h, and 00h "old sw compatibility"), enter
+    // pre-operational, reset node, reset communication; to this node or to all (00h).
+    constexpr void on_nmt(const can::frame& f, millis t) noexcept {
+        const auto m = canopen::decode_nmt(f);
+        if (!m) return;
+        if (m->target.value() != 0 && m->target.value() != node_.value()) return;
+        switch (m->command) {
+            case canopen::nmt_command::start:
+                if (state_ != run_state::operational) {
+                    state_ = run_state::operational;
+                    next_periodic_ = t + duration_ms{periodic_ms()};
+                }
+                break;
+            case canopen::nmt_command::stop:
+            case canopen::nmt_command::legacy_stop:
+                state_ = run_state::stopped;
+                pending_.reset();
+                upload_ = {};
+                break;
+            case canopen::nmt_command::enter_pre_operational:
+                state_ = run_state::pre_operational;
+                break;
+            case canopen::nmt_command::reset_node: boot(t); break;
+            case canopen::nmt_command::reset_communication: reset_communication(t); break;
+        }
+    }
+    constexpr std::uint8_t nmt_byte() const noexcept {
+        switch (state_) {
+            case run_state::operational: return 0x05;
+            case run_state::stopped: return 0x04;
+            default: return 0x7F;
+        }
+    }
+
+    // Heartbeat consumer (PK1000 28): 1016h sub 1 = period (bits 0..15) and producer (16..23).
+    constexpr void on_heartbeat(const can::frame& f, millis t) noexcept {
+        if (info_.dictionary != dictionary::pk1000 || f.size() != 1) return;
+        const std::uint32_t c = value(object::consumer_heartbeat);
+        const std::uint32_t period = c & 0xFFFFu;
+        const std::uint32_t producer = (c >> 16) & 0x7Fu;
+        if (period == 0 || (f.raw_id() & 0x7Fu) != producer || f[0] == 0x00) return;
+        monitoring_ = true;
+        consumer_deadline_ = t + duration_ms{period};
+    }
+
+    // --- PDOs ---------------------------------------------------------------------------------
+
+    constexpr bool event_driven() const noexcept {
+        // PK1000 46 a: FEh event-driven, 01h..F0h every n-th SYNC. The PKP's 1800h/2 reads FDh
+        // but it sends on every change (PKP 10).
+        return info_.dictionary != dictionary::pk1000 ||
+               value(object::tpdo1_transmission_type) >= 0xFE;
+    }
+    constexpr std::uint32_t periodic_ms() const noexcept {
+        return event_driven() ? value(object::tpdo1_event_timer) : 0;
+    }
+    // The key-state PDO (PK1000 11, PKP 10): key bits little-endian in bytes 0..3, the tick
+    // timer in byte 4.
+    constexpr void send_keys(millis t) noexcept {
+        can::payload p{};
+        powerkey::detail::store_le<4>(p, 0, static_cast<std::uint32_t>(keys_.mask()));
+        p[4] = tick(t);
+        send(0x180, 5, p);
+        if (periodic_ms() != 0) next_periodic_ = t + duration_ms{periodic_ms()};
+    }
+
+    // SYNC (PK1000 10, 38, 39, 46): buffered RPDOs are applied; a synchronous TPDO goes out
+    // every n-th SYNC. PDOs only when operational.
+    constexpr void on_sync(const can::frame& f, millis t) noexcept {
+        if (f.size() != 0 || state_ != run_state::operational) return;
+        for (auto& b : rpdo_buffer_) {
+            if (b) apply_rpdo(*b);
+            b.reset();
+        }
+        if (!event_driven()) {
+            const std::uint32_t n = value(object::tpdo1_transmission_type);
+            if (++sync_count_ >= n) {
+                sync_count_ = 0;
+                send_keys(t);
+            }
+        }
+    }
+
+    // RPDOs (PK1000 12-15, PKP 11-12): only when operational (PK1000 11 "the keypad must be
+    // activated"); 1400h/1401h types 00h..F0h hold the PDO until the next SYNC (PK1000 10, 38).
+    constexpr void on_rpdo(const can::frame& f, millis) noexcept {
+        if (state_ != run_state::operational) return;
+        const auto m = powerkey::decode(f, node_, model_);
+        if (!m) return;  // a PDO the keypad cannot read is ignored
+        const std::uint32_t fn = f.raw_id() & 0x780;
+        if (info_.dictionary == dictionary::pk1000 && (fn == 0x200 || fn == 0x300)) {
+            const auto type = value(fn == 0x200 ? object::rpdo1_transmission_type
+                                                : object::rpdo2_transmission_type);
+            if (type <= 0xF0) {
+                rpdo_buffer_[fn == 0x200 ? 0 : 1] = *m;
+                return;
+            }
+        }
+        apply_rpdo(*m);
+    }
+    constexpr void apply_rpdo(const message& m) noexcept {
+        if (const auto* on = std::get_if<powerkey::led_on>(&m)) on_ = merge(on_, on->map);
+        if (const auto* bl = std::get_if<powerkey::led_blink>(&m)) blink_ = merge(blink_, bl->map);
+        if (const auto* b = std::get_if<powerkey::led_brightness>(&m)) brightness_ = b->level;
+        if (const auto* b = std::get_if<powerkey::backlight>(&m)) {
+            backlight_.level = b->level;
+            if (b->colour != backlight_colour::keep) backlight_.colour = b->colour;  // PK1000 15
+        }
+    }
+    // An LED PDO sets every plane the model has.
+    constexpr leds merge(const leds&, const leds& in) const noexcept {
+        leds out = in;
+        if (info_.planes < 3) out.blue = {};
+        return out;
+    }
+
+    // --- SDO server (CiA 301 7.2.4; PK1000 16-48, PKP 13-32) ---------------------------------
+
+    struct upload_state {
+        bool active = false;
+        canopen::sdo_address address{};
+        std::string_view bytes{};
+        std::size_t offset = 0;
+        bool toggle = false;
+    };
+    enum class after_reply : std::uint8_t { none, to_j1939, reboot };
+
+    constexpr void on_sdo(const can::frame& f, millis t) noexcept {
+        if (state_ == run_state::stopped) return;  // CiA 301: no SDO when stopped
+        if (f.size() != 8) return;
+        if (pending_) {
+            if (options_.drop_sdo_while_busy) return;  // busy: dropped, no reply, no abort
+        }
+        const std::uint8_t b0 = f[0];
+        const canopen::sdo_address a{
+            static_cast<std::uint16_t>(f[1] | (f[2] << 8)), f[3]};
+        switch (b0 >> 5) {
+            case 2: return upload(a, t);
+            case 1: return download(f, a, t);
+            case 3: return segment(f, t);
+            case 4: upload_ = {}; return;  // the client aborts: nothing to answer
+            default: return abort(a, canopen::sdo_abort_code::invalid_command_specifier, t);
+        }
+    }
+
+    // The abort for an address the dictionary lacks: the index exists -> no such sub-index.
+    constexpr canopen::sdo_abort_code missing(canopen::sdo_address a) const noexcept {
+        for (const auto& r : rows_of(info_.dictionary))
+            if (r.address.index == a.index) return canopen::sdo_abort_code::subindex_does_not_exist;
+        return canopen::sdo_abort_code::object_does_not_exist;
+    }
+
+    constexpr void upload(canopen::sdo_address a, millis t) noexcept {
+        upload_ = {};
+        const auto row = find_row(info_.dictionary, a);
+        if (!row) return abort(a, missing(a), t);
+        // 1001h: "not yet implemented in the device" (PK1000 31): object does not exist
+        if (kind_of(row->id).kind == value_kind::none)
+            return abort(a, canopen::sdo_abort_code::object_does_not_exist, t);
+        if (!row->readable()) return abort(a, canopen::sdo_abort_code::write_only, t);
+        can::payload p{};
+        p[1] = static_cast<std::uint8_t>(a.index & 0xFF);
+        p[2] = static_cast<std::uint8_t>(a.index >> 8);
+        p[3] = a.subindex;
+        if (row->size == 0) {
+            const auto s = string_of(model_, row->id);
+            if (!s) return abort(a, canopen::sdo_abort_code::no_data, t);
+            if (s->bytes.size() <= 4) {  // expedited (PK1000 33, 34)
+                p[0] = static_cast<std::uint8_t>(0x43 | ((4 - s->bytes.size()) << 2));
+                for (std::size_t i = 0; i < s->bytes.size(); ++i)
+                    p[4 + i] = static_cast<std::uint8_t>(s->bytes[i]);
+                return reply(p, t);
+            }
+            p[0] = s->size_indicated ? 0x41 : 0x40;
+            powerkey::detail::store_le<4>(p, 4, s->announced);
+            upload_ = {true, a, s->bytes, 0, false};
+            return reply(p, t);
+        }
+        // expedited, the row's size: 4Fh one byte, 4Bh two, 43h four
+        p[0] = static_cast<std::uint8_t>(0x43 | ((4u - row->size) << 2));
+        powerkey::detail::store_le(p, 4, row->size, current(*row));
+        reply(p, t);
+    }
+
+    constexpr void segment(const can::frame& f, millis t) noexcept {
+        if (!upload_.active) return abort({}, canopen::sdo_abort_code::invalid_command_specifier, t);
+        const bool toggle = (f[0] & 0x10) != 0;
+        if (toggle != upload_.toggle) {
+            const auto a = upload_.address;
+            upload_ = {};
+            return abort(a, canopen::sdo_abort_code::toggle_bit_not_alternated, t);
+        }
+        const std::size_t left = upload_.bytes.size() - upload_.offset;
+        const std::size_t n = left < 7 ? left : 7;
+        const bool last = left <= 7;
+        can::payload p{};
+        p[0] = static_cast<std::uint8_t>((toggle ? 0x10 : 0) | ((7 - n) << 1) | (last ? 1 : 0));
+        for (std::size_t i = 0; i < n; ++i)
+            p[1 + i] = static_cast<std::uint8_t>(upload_.bytes[upload_.offset + i]);
+        upload_.offset += n;
+        upload_.toggle = !upload_.toggle;
+        if (last) upload_ = {};
+        reply(p, t);
+    }
+
+    constexpr void download(const can::frame& f, canopen::sdo_address a, millis t) noexcept {
+        upload_ = {};
+        const std::uint8_t b0 = f[0];
+        const auto row = find_row(info_.dictionary, a);
+        if (!row) return abort(a, missing(a), t);
+        if (!row->writable()) return abort(a, canopen::sdo_abort_code::read_only, t);
+        if ((b0 & 0x02) == 0)  // segmented download: no object here takes one
+            return abort(a, canopen::sdo_abort_code::unsupported_access, t);
+        const unsigned n = (b0 & 0x01) != 0 ? 4u - ((b0 >> 2) & 3u) : row->size;
+        if (n != row->size) return abort(a, canopen::sdo_abort_code::length_mismatch, t);
+        const std::uint32_t v =
+            static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
+        after_reply then = after_reply::none;
+        if (const auto code = check_and_apply(*row, f, v, then, t))
+            return abort(a, *code, t);
+        can::payload p{};
+        p[0] = 0x60;
+        p[1] = f[1];
+        p[2] = f[2];
+        p[3] = f[3];
+        if (row->id == object::node_id && info_.replies_from_new_id) {
+            // PK1000 23: the acknowledgement already comes from the new id
+            node_ = canopen::node_id::make(v).value();
+        }
+        reply(p, t, then);
+    }
+
+    // Checks a written value against its row and applies it; the abort code when refused.
+    constexpr std::optional<canopen::sdo_abort_code> check_and_apply(const object_row& r,
+                                                                     const can::frame& f,
+                                                                     std::uint32_t v,
+                                                                     after_reply& then,
+                                                                     millis t) noexcept {
+        using code = canopen::sdo_abort_code;
+        const value_kind kind = kind_of(r.id).kind;
+        switch (kind) {
+            case value_kind::led_plane: {  // PK1000 17, 18: one plane, LEDs 1..28
+                if ((v >> info_.leds) != 0) return code::invalid_value;
+                leds& l = r.id == object::led_on_red || r.id == object::led_on_green ? on_ : blink_;
+                l.of(kind_of(r.id).holds) = led_set::from_mask(v);
+                return std::nullopt;
+            }
+            case value_kind::led_map: {  // PKP 15, 16: the planes that fit 32 bits
+                const auto m = unpack_leds(info_, v, info_.object_planes());
+                if (!m) return code::invalid_value;
+                leds& l = r.id == object::led_on ? on_ : blink_;
+                for (unsigned c = 0; c < info_.object_planes(); ++c)
+                    l.of(static_cast<plane>(c)) = m->of(static_cast<plane>(c));
+                return std::nullopt;
+            }
+            case value_kind::consumer_heartbeat: {  // PK1000 28: period 0 (off) or >= 10 ms
+                const std::uint32_t period = v & 0xFFFFu, producer = (v >> 16) & 0xFFu;
+                if ((v >> 24) != 0 || producer < 1 || producer > 0x7F) return code::invalid_value;
+                if (period != 0 && period < 10) return code::value_too_low;
+                value_[idx(r.id)] = v;
+                monitoring_ = false;  // starts again with the next heartbeat
+                return std::nullopt;
+            }
+            case value_kind::restore:  // PK1000 36: only "load"; effective after the reset
+                if (v != load_signature) return code::cannot_store;
+                restore_pending_ = true;
+                return std::nullopt;
+            case value_kind::commands: return command(f, then, t);
+            case value_kind::period:  // 0 = off, else the row's range (E-PK-8, E-PKP-7)
+                if (v != 0 && v < r.min) return code::value_too_low;
+                if (v > r.max) return code::value_too_high;
+                break;
+            default:
+                if (!r.in_range(v)) return v < r.min ? code::value_too_low : code::value_too_high;
+                break;
+        }
+        value_[idx(r.id)] = v;
+        switch (r.id) {
+            // the run-time levels (PK1000 19 a-c, PKP 30)
+            case object::led_brightness: brightness_ = powerkey::level::make(v).value(); break;
+            case object::backlight_level: backlight_.level = powerkey::level::make(v).value(); break;
+            case object::backlight_colour: backlight_.colour = static_cast<backlight_colour>(v); break;
+            case object::heartbeat_time: next_heartbeat_ = t + duration_ms{v}; break;
+            case object::tpdo1_event_timer:
+            case object::tpdo1_transmission_type:
+                next_periodic_ = t + duration_ms{periodic_ms()};
+                sync_count_ = 0;
+                break;
+            case object::protocol_j1939:  // PK1000 49: the keypad answers, then speaks J1939
+                if (v == 1 && info_.j1939) then = after_reply::to_j1939;
+                break;
+            default: break;
+        }
+        return std::nullopt;
+    }
+
+    // The PKP command module, 6500h sub 1 (PKP 13 a-m).
+    constexpr std::optional<canopen::sdo_abort_code> command(const can::frame& f,
+                                                             after_reply& then,
+                                                             millis) noexcept {
+        const auto m = powerkey::decode(f, node_, model_);
+        const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
+        if (c == nullptr) return canopen::sdo_abort_code::invalid_value;
+        switch (c->code) {
+            case command_code::set_led_state: set_led_state(c->key, c->state); break;
+            case command_code::set_led_brightness: brightness_ = c->level; break;
+            case command_code::set_backlight_level: backlight_.level = c->level; break;
+            case command_code::set_backlight_colour: backlight_.colour = c->colour; break;
+            case command_code::set_active_on_startup:
+                value_[idx(object::active_on_startup)] = c->enabled ? 1 : 0;
+                break;
+            case command_code::set_baud_rate:
+                value_[idx(object::baud_rate)] = static_cast<std::uint32_t>(c->baud);
+                break;
+            case command_code::set_periodic_transmission:  // PKP 13 f: period x 10 ms
+                value_[idx(object::tpdo1_event_timer)] =
+                    c->enabled ? std::uint32_t{c->period_10ms} * 10u : 0u;
+                next_periodic_ = now_ + duration_ms{periodic_ms()};
+                break;
+            case command_code::set_boot_up: value_[idx(object::boot_up)] = c->enabled ? 1 : 0; break;
+            case command_code::set_startup_show:
+                value_[idx(object::startup_show)] = static_cast<std::uint32_t>(c->show);
+                break;
+            case command_code::set_node_id:  // PKP 13 h: reply from the old id, then boot-up
+                value_[idx(object::node_id)] = c->node_id.value();
+                then = after_reply::reboot;
+                break;
+            case command_code::set_demo_mode:
+                value_[idx(object::demo_mode)] = c->enabled ? 1 : 0;
+                break;
+            case command_code::set_default_backlight_level:
+                value_[idx(object::default_backlight_level)] = c->level.value();
+                break;
+            case command_code::set_default_led_brightness:
+                value_[idx(object::default_led_brightness)] = c->level.value();
+                break;
+            case command_code::set_default_backlight_colour:
+                value_[idx(object::default_backlight_colour)] = static_cast<std::uint32_t>(c->colour);
+                break;
+        }
+        return std::nullopt;
+    }
+    // PKP 13 a: one key's LED. x on / x blink / x alternate blink set the plane in the on map,
+    // the blink map, or both (both = alternate blink, PKP 12). The two-colour states are
+    // inferred from the PKP 12 "alternate" example: both colours blink, the first shown on.
+    constexpr void set_led_state(unsigned k, led_state s) noexcept {
+        for (unsigned c = 0; c < 3; ++c) {
+            on_.of(static_cast<plane>(c)).erase(k);
+            blink_.of(static_cast<plane>(c)).erase(k);
+        }
+        const auto v = static_cast<unsigned>(s);
+        if (v >= 1 && v <= 9) {
+            const auto p = static_cast<plane>((v - 1) / 3);
+            const unsigned how = (v - 1) % 3;  // 0 on, 1 blink, 2 alternate blink
+            if (how != 1) on_.of(p).insert(k);
+            if (how != 0) blink_.of(p).insert(k);
+            return;
+        }
+        if (s == led_state::red_green_blink || s == led_state::amber_red_blink ||
+            s == led_state::green_amber_blink) {
+            blink_.red.insert(k);
+            blink_.green.insert(k);
+            if (s != led_state::amber_red_blink) on_.green.insert(k);
+            if (s != led_state::red_green_blink) on_.red.insert(k);
+        }
+    }
+
+    // The J1939 side (PK1000 49): only the switch back to CANopen is heard; the keypad then
+    // boots in CANopen (inferred: the manual shows the frame only).
+    constexpr void on_j1939(const can::frame& f, millis t) noexcept {
+        if (!f.is_extended()) return;
+        const auto m = powerkey::decode(f, node_, model_);
+        if (!m || !std::holds_alternative<j1939::switch_to_canopen>(*m)) return;
+        value_[idx(object::protocol_j1939)] = 0;
+        boot(t);
+    }
+
+    // --- sending ------------------------------------------------------------------------------
+
+    constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
+        can::payload p{};
+        p[0] = 0x80;
+        p[1] = static_cast<std::uint8_t>(a.index & 0xFF);
+        p[2] = static_cast<std::uint8_t>(a.index >> 8);
+        p[3] = a.subindex;
+        powerkey::detail::store_le<4>(p, 4, static_cast<std::uint32_t>(c));
+        reply(p, t);
+    }
+    // An SDO reply leaves sdo_response_ms after the request (released by advance()).
+    constexpr void reply(const can::payload& p, millis t, after_reply then = after_reply::none) noexcept {
+        pending_ = pending_reply{p, t + duration_ms{options_.sdo_response_ms}, then, node_};
+        release_reply(t);
+    }
+    constexpr void release_reply(millis t) noexcept {
+        if (!pending_ || !reached(pending_->due, t)) return;
+        const pending_reply r = *pending_;
+        pending_.reset();
+        send_from(r.from, 0x580, 8, r.payload);
+        if (r.then == after_reply::to_j1939) {
+            state_ = run_state::j1939;
+            upload_ = {};
+        } else if (r.then == after_reply::reboot) {
+            boot(r.due);
+        }
+    }
+    constexpr void send_heartbeat(std::uint8_t state) noexcept {
+        can::payload p{};
+        p[0] = state;
+        send(0x700, 1, p);
+    }
+    constexpr void send(std::uint16_t base, std::uint8_t n, const can::payload& p) noexcept {
+        send_from(node_, base, n, p);
+    }
+    constexpr void send_from(canopen::node_id from, std::uint16_t base, std::uint8_t n,
+                             const can::payload& p) noexcept {
+        if (silent_) return;
+        if (drop_tx_ > 0) {
+            --drop_tx_;
+            return;
+        }
+        const auto id = can::standard_id::make(base + from.value()).value();
+        (void)outbox_.push(can::frame(id, can::dlc::make(n).value(), p));
+    }
+
+    struct pending_reply {
+        can::payload payload;
+        millis due;
+        after_reply then;
+        canopen::node_id from;
+    };
+
+    model model_;
+    model_info info_;
+    keypad_options options_;
+    std::array<std::uint32_t, object_count> value_{};
+    bool restore_pending_ = false;
+
+    run_state state_ = run_state::off;
+    canopen::node_id node_ = canopen::default_node_id;
+    baud_rate baud_ = baud_rate::kbit_125;
+    key_set keys_{};
+    leds on_{};
+    leds blink_{};
+    powerkey::level brightness_ = 0x3F;
+    backlight_state backlight_{};
+
+    millis now_{};
+    millis boot_time_{};
+    millis next_heartbeat_{};
+    millis next_periodic_{};
+    millis consumer_deadline_{};
+    bool monitoring_ = false;
+    std::array<std::optional<message>, 2> rpdo_buffer_{};
+    std::uint32_t sync_count_ = 0;
+
+    std::optional<pending_reply> pending_{};
+    upload_state upload_{};
+
+    bool silent_ = false;
+    millis silent_until_{};
+    std::uint32_t drop_rx_ = 0;
+    std::uint32_t drop_tx_ = 0;
+
+    frame_queue<Outbox> outbox_{};
+};
+
+}  // namespace powerkey::behaviour
+
+#endif  // POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
