@@ -44,6 +44,23 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 
 // --- SDO values ---------------------------------------------------------------------------------
 
+// The expedited size of row r's value: its own, the model's plane bytes for a per-colour LED
+// plane of size 0, or what a string piece carries (`carried`).
+constexpr std::uint8_t row_size(const model_info& m, const object_row& r, object_kind k,
+                                std::uint8_t carried) noexcept {
+    if (r.size != 0) return r.size;
+    if (k.kind == value_kind::led_plane) return static_cast<std::uint8_t>(m.stride / 8);
+    return carried;
+}
+
+// Bits [offset, offset + width) of the model's LED string, as a map; errc::reserved_not_zero for
+// a bit that names no LED.
+constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw, object_kind k) noexcept {
+    const std::uint64_t mask = (std::uint64_t{1} << k.width) - 1;
+    if ((raw & ~mask) != 0) return errc::reserved_not_zero;
+    return unpack_leds(m, std::uint64_t{raw} << k.offset, m.planes);
+}
+
 // The value of row r carried by d; `write` for a download (a restore must carry "load").
 // Errors: size_mismatch (not the row's size), reserved_not_zero (bytes past the size, bits that
 // name no key or LED, reserved bits of a COB-ID, device type or consumer heartbeat),
@@ -51,7 +68,7 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 constexpr result<object_value> read_value(const model_info& m, const object_row& r,
                                           const canopen::expedited_data& d, bool write) noexcept {
     const auto k = kind_of(r.id);
-    const std::uint8_t size = r.size == 0 ? d.size.value() : r.size;
+    const std::uint8_t size = row_size(m, r, k, d.size.value());
     if (d.size.value() != size) return errc::size_mismatch;
     if (!all_zero(d.bytes, size, 4)) return errc::reserved_not_zero;
     const std::uint32_t raw = d.value();
@@ -75,10 +92,17 @@ constexpr result<object_value> read_value(const model_info& m, const object_row&
             return v;
         }
         case value_kind::led_plane:
-            if ((std::uint64_t{raw} >> m.leds) != 0) return errc::reserved_not_zero;
+            if ((raw & ~m.led_mask) != 0) return errc::reserved_not_zero;
             v.raw = 0;
             v.map.of(k.holds) = led_set::from_mask(raw);
             return v;
+        case value_kind::led_part: {
+            const auto l = unpack_part(m, raw, k);
+            if (!l) return l.error();
+            return object_value{0, *l, 0};
+        }
+        case value_kind::ring:
+        case value_kind::direction_counter: return v;
         case value_kind::led_map: {
             const auto l = unpack_leds(m, raw, m.object_planes());
             if (!l) return l.error();
@@ -115,8 +139,10 @@ constexpr canopen::expedited_data write_value(const model_info& m, const object_
     std::uint64_t raw = v.raw;
     if (k.kind == value_kind::led_plane) raw = v.map.of(k.holds).mask();
     if (k.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
-    std::uint8_t size = r.size;
-    if (r.size == 0) size = v.size >= 1 && v.size <= 4 ? v.size : 4;
+    if (k.kind == value_kind::led_part)
+        raw = (pack_leds(m, v.map, m.planes) >> k.offset) & ((std::uint64_t{1} << k.width) - 1);
+    const std::uint8_t size =
+        row_size(m, r, k, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
     canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
     store_le<4>(d.bytes, 0, raw);
     return d;
@@ -292,7 +318,33 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
             if (fn == canopen::function::rpdo1) return message{led_on{*l}};
             return message{led_blink{*l}};
         }
+        case canopen::function::tpdo2:
+        case canopen::function::tpdo3: {
+            if (!m.encoders) return errc::wrong_id;
+            if (f.size() != 8) return errc::wrong_length;
+            if (!all_zero(f.bytes(), 4, 8)) return errc::reserved_not_zero;
+            if (f[3] == 1 || f[3] > 0x10) return errc::value_out_of_range;
+            return message{encoder_state{fn == canopen::function::tpdo2 ? std::uint8_t{1} : std::uint8_t{2},
+                                         (f[0] & 0x80) != 0, static_cast<std::uint8_t>(f[0] & 0x7F),
+                                         static_cast<std::uint16_t>(load_le<2>(f.bytes(), 1)), f[3]}};
+        }
+        case canopen::function::tpdo4: {
+            if (!m.encoders) return errc::wrong_id;
+            if (f.size() != 8) return errc::wrong_length;
+            analog_inputs a;
+            for (std::size_t i = 0; i < 4; ++i) {
+                const auto v = load_le<2>(f.bytes(), 2 * i);
+                if (v > 500) return errc::value_out_of_range;
+                a.mv[i] = static_cast<std::uint16_t>(v * 10);
+            }
+            return message{a};
+        }
         case canopen::function::rpdo3: {
+            if (m.encoder_leds_pdo) {
+                if (f.size() != 8) return errc::wrong_length;
+                if (!all_zero(f.bytes(), 4, 8)) return errc::reserved_not_zero;
+                return message{encoder_leds{led_set::from_mask(load_le<4>(f.bytes(), 0))}};
+            }
             if (!m.brightness_pdo) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
             if (!all_zero(f.bytes(), 1, 8)) return errc::reserved_not_zero;
@@ -303,7 +355,8 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
         case canopen::function::rpdo4: {
             if (!m.backlight_pdo) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
-            if (!all_zero(f.bytes(), 2, 8)) return errc::reserved_not_zero;
+            if (!all_zero(f.bytes(), 2, 8) || (!m.backlight_colour && f[1] != 0))
+                return errc::reserved_not_zero;
             const auto l = level::make(f[0]);
             if (!l) return l.error();
             if (f[1] > 0x09) return errc::value_out_of_range;
@@ -340,6 +393,18 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
                                  node, 8, pack_leds(m, v.map, m.planes));
             } else if constexpr (std::is_same_v<T, led_brightness>) {
                 return pdo_frame(function::rpdo3, node, 8, v.level.value());
+            } else if constexpr (std::is_same_v<T, encoder_leds>) {
+                return pdo_frame(function::rpdo3, node, 8, v.leds.mask());
+            } else if constexpr (std::is_same_v<T, encoder_state>) {
+                return pdo_frame(v.encoder == 2 ? function::tpdo3 : function::tpdo2, node, 8,
+                                 (v.counterclockwise ? 0x80u : 0u) | (v.ticks & 0x7Fu) |
+                                     (std::uint64_t{v.counter} << 8) |
+                                     (std::uint64_t{v.top} << 24));
+            } else if constexpr (std::is_same_v<T, analog_inputs>) {
+                std::uint64_t bits = 0;
+                for (std::size_t i = 0; i < 4; ++i)
+                    bits |= std::uint64_t{static_cast<std::uint16_t>(v.mv[i] / 10)} << (16 * i);
+                return pdo_frame(function::tpdo4, node, 8, bits);
             } else if constexpr (std::is_same_v<T, backlight>) {
                 return pdo_frame(function::rpdo4, node, 8,
                                  v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(
@@ -409,8 +474,11 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
     switch (id >> 7) {
         case 0x3: return detail::decode_pdo(mi, canopen::function::tpdo1, f);
         case 0x4: return detail::decode_pdo(mi, canopen::function::rpdo1, f);
+        case 0x5: return detail::decode_pdo(mi, canopen::function::tpdo2, f);
         case 0x6: return detail::decode_pdo(mi, canopen::function::rpdo2, f);
+        case 0x7: return detail::decode_pdo(mi, canopen::function::tpdo3, f);
         case 0x8: return detail::decode_pdo(mi, canopen::function::rpdo3, f);
+        case 0x9: return detail::decode_pdo(mi, canopen::function::tpdo4, f);
         case 0xA: return detail::decode_pdo(mi, canopen::function::rpdo4, f);
         case 0xB: return detail::decode_response(mi, f);
         case 0xC: return detail::decode_request(mi, f);

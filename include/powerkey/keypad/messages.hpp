@@ -4,7 +4,8 @@
 //                     key_state, led_on, led_blink, led_brightness, backlight,
 //                     sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
 //                     sdo_upload_initiate_response, sdo_segment_request, sdo_segment_response,
-//                     sdo_abort_request, sdo_abort_response>
+//                     sdo_abort_request, sdo_abort_response,
+//                     encoder_state, analog_inputs, encoder_leds>      (the PKP-3500-MT's)
 //
 // Each struct follows the kind/fields convention (fields.hpp): a stable `kind` and `fields(self,
 // f)`, which names every field the frame carries. The names are the same for every model: the
@@ -15,7 +16,8 @@
 //   keys "keys"                    led_plane "red" | "green" | "blue"        led_map all three
 //   consumer_heartbeat "period_ms", "producer"     cob_id "invalid", "no_rtr", "can_id"
 //   pdo_mapping "index", "subindex", "bits"        device_type "profile", "digital_input", ...
-//   string "size", "bytes"
+//   string "size", "bytes"          led_part "red", "green", "blue"   ring "leds"
+//   direction_counter "counterclockwise", "ticks"
 #ifndef POWERKEY_KEYPAD_MESSAGES_HPP
 #define POWERKEY_KEYPAD_MESSAGES_HPP
 
@@ -110,6 +112,54 @@ struct backlight {
     friend constexpr bool operator==(const backlight&, const backlight&) noexcept = default;
 };
 
+// TPDO2 280h + node (encoder 1) and TPDO3 380h + node (encoder 2), PKP-3500-MT sections 12, 13:
+//   byte 0 X YYYYYYY (X 1 = counterclockwise, Y ticks since the last message) | counter LSB MSB |
+//   TOP (00h none, 02h..10h) | 00h x 4
+struct encoder_state {
+    static constexpr std::string_view kind = "encoder_state";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("encoder", self.encoder);
+        f("counterclockwise", self.counterclockwise);
+        f("ticks", self.ticks);
+        f("counter", self.counter);
+        f("top", self.top);
+    }
+    std::uint8_t encoder = 1;  // 1 (TPDO2) or 2 (TPDO3)
+    bool counterclockwise = false;
+    std::uint8_t ticks = 0;     // 0..127 since the last message
+    std::uint16_t counter = 0;  // the tick counter, 0..65535 (or 0..TOP)
+    std::uint8_t top = 0;       // 00h (none) or 02h..10h
+    friend constexpr bool operator==(const encoder_state&, const encoder_state&) noexcept = default;
+};
+
+// TPDO4 480h + node, PKP-3500-MT section 14: the four 0..5 V inputs, each 16 bits little endian,
+// 0000h..01F4h in units of 10 mV. The fields are in millivolts (0..5000, multiples of 10).
+struct analog_inputs {
+    static constexpr std::string_view kind = "analog_inputs";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("in0_mv", self.mv[0]);
+        f("in1_mv", self.mv[1]);
+        f("in2_mv", self.mv[2]);
+        f("in3_mv", self.mv[3]);
+    }
+    std::array<std::uint16_t, 4> mv{};
+    friend constexpr bool operator==(const analog_inputs&, const analog_inputs&) noexcept = default;
+};
+
+// RPDO3 400h + node on the PKP-3500-MT (section 17): the encoder ring LEDs, 1..16 encoder 1,
+// 17..32 encoder 2, as a 32-bit string in bytes 0..3 | 00h x 4.
+struct encoder_leds {
+    static constexpr std::string_view kind = "encoder_leds";
+    template <class Self, class F>
+    static constexpr void fields(Self& self, F&& f) {
+        f("leds", self.leds);
+    }
+    led_set leds;
+    friend constexpr bool operator==(const encoder_leds&, const encoder_leds&) noexcept = default;
+};
+
 // --- SDO reads and writes of the object dictionary ----------------------------------------------
 
 // The value of an object, stored as it travels: `raw` the little-endian number of the expedited
@@ -177,7 +227,17 @@ constexpr void value_fields(object id, V& v, F& f) {
             f(k.holds == plane::red ? "red" : k.holds == plane::green ? "green" : "blue",
               v.map.of(k.holds));
             break;
-        case value_kind::led_map: map_fields(v.map, f); break;
+        case value_kind::led_map:
+        case value_kind::led_part: map_fields(v.map, f); break;
+        case value_kind::ring:
+            raw_field<led_set>(
+                v, f, "leds", [](const auto& s) { return led_set::from_mask(s.raw); },
+                [](auto& s, led_set x) { s.raw = static_cast<u32>(x.mask()); });
+            break;
+        case value_kind::direction_counter:
+            bits("counterclockwise", 7, 1, std::type_identity<bool>{});
+            bits("ticks", 0, 7, std::type_identity<std::uint8_t>{});
+            break;
         case value_kind::consumer_heartbeat:
             bits("period_ms", 0, 16, std::type_identity<std::uint16_t>{});
             checked("producer", 16, 8, std::type_identity<canopen::node_id>{});
@@ -275,7 +335,7 @@ using message =
                  sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
                  canopen::sdo_upload_initiate_response, canopen::sdo_segment_request,
                  canopen::sdo_segment_response, canopen::sdo_abort_request,
-                 canopen::sdo_abort_response>;
+                 canopen::sdo_abort_response, encoder_state, analog_inputs, encoder_leds>;
 
 // --- building values ----------------------------------------------------------------------------
 // The value of an object of each kind, for code that writes one: sdo_write{object::node_id,

@@ -5,7 +5,9 @@
 // The LED-map rule, for every keypad: LED (plane c, number k), c = 0 red, 1 green, 2 blue, is
 // bit c * stride + (k - 1) of a little-endian bit string (byte i / 8, bit i % 8). PK1000 sections
 // 12, 13 (stride 32: red in bytes 0..3, green in 4..7); PKP sections 11, 12, 15, 16 and
-// docs/pkp.md for the 12-key PKP-2600 (stride = key count).
+// docs/pkp.md for the 12-key PKP-2600 (stride = key count); docs/si-family.md for the SI family
+// (the PKP-3500-MT's stride is 16 and keys 1 and 11, the encoder pushes, have no LED; the
+// PKP-2200/2300/2400-SI's stride of 8 is inferred).
 #ifndef POWERKEY_KEYPAD_MODELS_HPP
 #define POWERKEY_KEYPAD_MODELS_HPP
 
@@ -20,18 +22,36 @@
 
 namespace powerkey {
 
-enum class model : std::uint8_t { pk1000, pkp2200, pkp2400, pkp2600 };
+enum class model : std::uint8_t {
+    pk1000,
+    pkp2200,
+    pkp2400,
+    pkp2600,
+    // The SI family (docs/si-family.md)
+    pkp2600si,
+    pkp3500mt,
+    pkp3500si,
+    pkp2500si,
+    pkp1500li,
+    pkp2200si,
+    pkp2300si,
+    pkp2400si,
+};
 
 struct model_info {
     powerkey::model id;
     powerkey::dictionary dictionary;
     std::uint8_t keys;    // keys 1..keys
-    std::uint8_t leds;    // LEDs 1..leds in each colour plane
+    std::uint8_t leds;    // LEDs 1..leds in each colour plane (some may be missing: led_mask)
     std::uint8_t planes;  // colour planes: 2 red and green, 3 RGB
     std::uint8_t stride;  // bits from one plane to the next in an LED map
-    bool brightness_pdo;  // RPDO3 400h + node: LED brightness (PK1000 section 14)
-    bool backlight_pdo;   // RPDO4 500h + node: backlight level and colour (PK1000 section 15)
-    bool j1939;           // the switch to J1939 (object protocol_j1939) and back (PK1000 49)
+    std::uint32_t led_mask;  // the LEDs of one plane: bit k-1 for LED k (PKP-3500-MT: no 1, 11)
+    bool brightness_pdo;     // RPDO3 400h + node: LED brightness (PK1000 section 14)
+    bool encoder_leds_pdo;   // RPDO3 400h + node: the encoder LED rings (PKP-3500-MT 17)
+    bool backlight_pdo;      // RPDO4 500h + node: backlight level (PK1000 section 15)
+    bool backlight_colour;   // ... and colour in byte 1 (a level-only keypad needs byte 1 00h)
+    bool encoders;           // TPDO2/3 encoder states, TPDO4 analog inputs (PKP-3500-MT 12-14)
+    bool j1939;              // the switch to J1939 (object protocol_j1939) and back (PK1000 49)
     // After a node-id change the keypad answers from the new id (PK1000 section 23) or from the
     // old one, then boots up with the new one (PKP section 13 h).
     bool replies_from_new_id;
@@ -44,11 +64,32 @@ struct model_info {
 };
 
 namespace detail {
+using dict = dictionary;
+//                                             keys leds planes stride led_mask     brightness
+//                                                                                  rings
+//                                                                                  backlight colour
+//                                                                                  encoders j1939 new-id
 inline constexpr model_info model_table[] = {
-    {model::pk1000, dictionary::pk1000, 10, 28, 2, 32, true, true, true, true},
-    {model::pkp2200, dictionary::pkp_li, 4, 4, 3, 4, false, false, false, false},
-    {model::pkp2400, dictionary::pkp_li, 8, 8, 3, 8, false, false, false, false},
-    {model::pkp2600, dictionary::pkp_li, 12, 12, 3, 12, false, false, false, false},
+    {model::pk1000, dict::pk1000, 10, 28, 2, 32, 0x0FFF'FFFF, true, false, true, true, false, true, true},
+    {model::pkp2200, dict::pkp_li, 4, 4, 3, 4, 0xF, false, false, false, false, false, false, false},
+    {model::pkp2400, dict::pkp_li, 8, 8, 3, 8, 0xFF, false, false, false, false, false, false, false},
+    {model::pkp2600, dict::pkp_li, 12, 12, 3, 12, 0xFFF, false, false, false, false, false, false,
+     false},
+    {model::pkp2600si, dict::si_packed, 12, 12, 3, 12, 0xFFF, true, false, true, true, false, true,
+     true},
+    {model::pkp3500mt, dict::si_mt, 15, 15, 3, 16, 0x7BFE, false, true, true, true, true, true, true},
+    {model::pkp3500si, dict::si_per_colour, 15, 15, 3, 16, 0x7FFF, true, false, true, false, false,
+     true, true},
+    {model::pkp2500si, dict::si_per_colour, 10, 10, 3, 16, 0x3FF, true, false, true, false, false,
+     true, true},
+    {model::pkp1500li, dict::si_per_colour, 5, 5, 3, 8, 0x1F, false, false, true, false, false, true,
+     true},
+    {model::pkp2200si, dict::si_per_colour, 4, 4, 3, 8, 0xF, false, false, true, false, false, true,
+     true},
+    {model::pkp2300si, dict::si_per_colour, 6, 6, 3, 8, 0x3F, false, false, true, false, false, true,
+     true},
+    {model::pkp2400si, dict::si_per_colour, 8, 8, 3, 8, 0xFF, false, false, true, false, false, true,
+     true},
 };
 constexpr bool models_in_enum_order() noexcept {
     for (std::size_t i = 0; i < std::size(model_table); ++i)
@@ -89,7 +130,7 @@ constexpr std::uint64_t low_bits(unsigned n) noexcept {
                                                 unsigned planes) noexcept {
     std::uint64_t v = 0;
     for (unsigned c = 0; c < planes; ++c)
-        v |= (l.of(static_cast<plane>(c)).mask() & detail::low_bits(m.leds)) << (c * m.stride);
+        v |= (l.of(static_cast<plane>(c)).mask() & m.led_mask) << (c * m.stride);
     return v;
 }
 
@@ -97,7 +138,7 @@ constexpr std::uint64_t low_bits(unsigned n) noexcept {
 // The planes written out rather than looped: this runs for every LED PDO (docs/performance.md).
 [[nodiscard]] constexpr result<leds> unpack_leds(const model_info& m, std::uint64_t v,
                                                  unsigned planes) noexcept {
-    const std::uint64_t one = detail::low_bits(m.leds);
+    const std::uint64_t one = m.led_mask;
     const unsigned s = m.stride;
     std::uint64_t used = one;
     leds l;
@@ -125,15 +166,18 @@ constexpr std::uint64_t low_bits(unsigned n) noexcept {
 template <>
 struct enum_names<model> {
     static constexpr enum_name_entry<model> entries[] = {
-        {model::pk1000, "pk1000"},
-        {model::pkp2200, "pkp2200"},
-        {model::pkp2400, "pkp2400"},
-        {model::pkp2600, "pkp2600"},
+        {model::pk1000, "pk1000"},       {model::pkp2200, "pkp2200"},
+        {model::pkp2400, "pkp2400"},     {model::pkp2600, "pkp2600"},
+        {model::pkp2600si, "pkp2600si"}, {model::pkp3500mt, "pkp3500mt"},
+        {model::pkp3500si, "pkp3500si"}, {model::pkp2500si, "pkp2500si"},
+        {model::pkp1500li, "pkp1500li"}, {model::pkp2200si, "pkp2200si"},
+        {model::pkp2300si, "pkp2300si"}, {model::pkp2400si, "pkp2400si"},
     };
 };
 
 // How the manuals name each keypad, and the model string it reports in 100Bh where a manual
-// shows one (PK1000 section 35 "PK1000"; PKP section 22 "PKU2400").
+// shows one (PK1000 section 35 "PK1000"; PKP section 22 "PKU2400"; PKP2600SI manual section 33
+// "PKP2600SI"; PKP3500-MT manual section 39 "PKP3500MT"; docs/si-family.md for the others).
 struct model_names {
     model id;
     std::string_view manual;    // "PKP-2400-LI"
@@ -145,6 +189,14 @@ inline constexpr model_names model_name_table[] = {
     {model::pkp2200, "PKP-2200-LI", ""},
     {model::pkp2400, "PKP-2400-LI", "PKU2400"},
     {model::pkp2600, "PKP-2600", ""},
+    {model::pkp2600si, "PKP-2600-SI", "PKP2600SI"},
+    {model::pkp3500mt, "PKP-3500-MT", "PKP3500MT"},
+    {model::pkp3500si, "PKP-3500-SI", "PKP3500SI"},
+    {model::pkp2500si, "PKP-2500-SI", ""},
+    {model::pkp1500li, "PKP-1500-LI", "PKP1500LI"},
+    {model::pkp2200si, "PKP-2200-SI", ""},
+    {model::pkp2300si, "PKP-2300-SI", ""},
+    {model::pkp2400si, "PKP-2400-SI", ""},
 };
 
 namespace detail {

@@ -113,6 +113,53 @@ enum class object : std::uint8_t {
     tpdo1_event_timer,
     tpdo1_mapping_count,
     tpdo1_mapping_1,
+    // The SI family (docs/si-family.md): "2600SI n" is the PKP2600SI manual's section n, "MT n"
+    // the PKP3500-MT manual's.
+    led_on_blue,             // 2001h/3 (MT 20 a): one plane
+    led_blink_blue,          // 2002h/3 (MT 21 a)
+    led_on_r1_12_g1_4,       // 2001h/1 (2600SI 17): bits 0..15 of the LED-on string
+    led_on_g5_12,            // 2001h/2: bits 16..23
+    led_on_b1_12,            // 2001h/3: bits 24..35
+    led_blink_r1_12_g1_4,    // 2002h/1 (2600SI 18)
+    led_blink_g5_12,         // 2002h/2
+    led_blink_b1_12,         // 2002h/3
+    led_on_encoder,          // 2001h/4 (MT 20 c): the encoder rings, LEDs 1..32
+    led_blink_encoder,       // 2002h/4 (MT 21 c)
+    encoder1_direction_counter,  // 2000h/2 (MT 19 b): bit 7 counterclockwise, bits 0..6 ticks
+    encoder1_tick_counter,       // 2000h/3 (MT 19 c): read the count, write the start-up count
+    encoder2_direction_counter,  // 2000h/4 (MT 19 d)
+    encoder2_tick_counter,       // 2000h/5 (MT 19 e)
+    encoder1_top_position,       // 2000h/6 (MT 19 f): 00h none, 02h..10h ticks
+    encoder2_top_position,       // 2000h/7 (MT 19 g)
+    digital_input_count,         // 2004h/0 (MT 23)
+    digital_inputs,              // 2004h/1: bit 0 IN0 .. bit 3 IN3
+    analog_input_count,          // 2005h/0 (MT 24)
+    analog_input_0,              // 2005h/1: 00h..FFh = 0..5 V
+    analog_input_1,              // 2005h/2
+    analog_input_2,              // 2005h/3
+    analog_input_3,              // 2005h/4
+    analog_input_period,         // 2006h (MT 25): 08h..C8h x 10 ms
+    rpdo1_mapping_3,
+    rpdo2_mapping_3,
+    tpdo2_count,  // 1801h (MT 51): encoder 1
+    tpdo2_cob_id,
+    tpdo2_transmission_type,
+    tpdo2_event_timer,
+    tpdo3_count,  // 1802h (MT 52): encoder 2
+    tpdo3_cob_id,
+    tpdo3_transmission_type,
+    tpdo3_event_timer,
+    tpdo4_count,  // 1803h (MT 53): analog inputs
+    tpdo4_cob_id,
+    tpdo4_transmission_type,
+    tpdo2_mapping_count,  // 1A01h (MT 55)
+    tpdo2_mapping_1,
+    tpdo2_mapping_2,
+    tpdo2_mapping_3,
+    tpdo3_mapping_count,  // 1A02h (MT 56)
+    tpdo3_mapping_1,
+    tpdo3_mapping_2,
+    tpdo3_mapping_3,
 };
 
 // What an object's value is: its C++ type and the field names it shows (messages.hpp).
@@ -134,6 +181,9 @@ enum class value_kind : std::uint8_t {
     device_type,         // "profile", "digital_input" ..: 1000h (CiA 401 I/O functionality)
     string,              // "size", "bytes": up to 4 bytes expedited, more by segments
     restore,             // "value": writes carry "load", reads the restore flags
+    led_part,            // "red", "green", "blue": bits [offset, offset + width) of the LED string
+    ring,                // "leds": the encoder ring LEDs 1..32
+    direction_counter,   // "counterclockwise", "ticks": an encoder's ticks since its last TPDO
     none,                // no value: the keypad aborts a read (1001h)
     commands,            // the command module: commands.hpp
 };
@@ -148,6 +198,8 @@ struct object_kind {
     object id;
     value_kind kind;
     plane holds = plane::red;  // led_plane only
+    std::uint8_t offset = 0;   // led_part: the first bit of the LED string it carries
+    std::uint8_t width = 0;    // led_part: how many bits
 };
 
 namespace detail {
@@ -236,6 +288,51 @@ inline constexpr object_kind object_kinds[] = {
     {obj::tpdo1_event_timer, vk::period},
     {obj::tpdo1_mapping_count, vk::number},
     {obj::tpdo1_mapping_1, vk::pdo_mapping},
+    {obj::led_on_blue, vk::led_plane, plane::blue},
+    {obj::led_blink_blue, vk::led_plane, plane::blue},
+    {obj::led_on_r1_12_g1_4, vk::led_part, plane::red, 0, 16},
+    {obj::led_on_g5_12, vk::led_part, plane::red, 16, 8},
+    {obj::led_on_b1_12, vk::led_part, plane::red, 24, 12},
+    {obj::led_blink_r1_12_g1_4, vk::led_part, plane::red, 0, 16},
+    {obj::led_blink_g5_12, vk::led_part, plane::red, 16, 8},
+    {obj::led_blink_b1_12, vk::led_part, plane::red, 24, 12},
+    {obj::led_on_encoder, vk::ring},
+    {obj::led_blink_encoder, vk::ring},
+    {obj::encoder1_direction_counter, vk::direction_counter},
+    {obj::encoder1_tick_counter, vk::number},
+    {obj::encoder2_direction_counter, vk::direction_counter},
+    {obj::encoder2_tick_counter, vk::number},
+    {obj::encoder1_top_position, vk::number},
+    {obj::encoder2_top_position, vk::number},
+    {obj::digital_input_count, vk::number},
+    {obj::digital_inputs, vk::number},
+    {obj::analog_input_count, vk::number},
+    {obj::analog_input_0, vk::number},
+    {obj::analog_input_1, vk::number},
+    {obj::analog_input_2, vk::number},
+    {obj::analog_input_3, vk::number},
+    {obj::analog_input_period, vk::number},
+    {obj::rpdo1_mapping_3, vk::pdo_mapping},
+    {obj::rpdo2_mapping_3, vk::pdo_mapping},
+    {obj::tpdo2_count, vk::number},
+    {obj::tpdo2_cob_id, vk::cob_id},
+    {obj::tpdo2_transmission_type, vk::number},
+    {obj::tpdo2_event_timer, vk::period},
+    {obj::tpdo3_count, vk::number},
+    {obj::tpdo3_cob_id, vk::cob_id},
+    {obj::tpdo3_transmission_type, vk::number},
+    {obj::tpdo3_event_timer, vk::period},
+    {obj::tpdo4_count, vk::number},
+    {obj::tpdo4_cob_id, vk::cob_id},
+    {obj::tpdo4_transmission_type, vk::number},
+    {obj::tpdo2_mapping_count, vk::number},
+    {obj::tpdo2_mapping_1, vk::pdo_mapping},
+    {obj::tpdo2_mapping_2, vk::pdo_mapping},
+    {obj::tpdo2_mapping_3, vk::pdo_mapping},
+    {obj::tpdo3_mapping_count, vk::number},
+    {obj::tpdo3_mapping_1, vk::pdo_mapping},
+    {obj::tpdo3_mapping_2, vk::pdo_mapping},
+    {obj::tpdo3_mapping_3, vk::pdo_mapping},
 };
 constexpr bool kinds_in_enum_order() noexcept {
     for (std::size_t i = 0; i < std::size(object_kinds); ++i)
@@ -243,7 +340,7 @@ constexpr bool kinds_in_enum_order() noexcept {
     return true;
 }
 static_assert(kinds_in_enum_order());
-static_assert(std::size(object_kinds) == static_cast<std::size_t>(object::tpdo1_mapping_1) + 1);
+static_assert(std::size(object_kinds) == static_cast<std::size_t>(object::tpdo3_mapping_3) + 1);
 }  // namespace detail
 
 inline constexpr std::size_t object_count = std::size(detail::object_kinds);
@@ -258,7 +355,9 @@ inline constexpr std::size_t object_count = std::size(detail::object_kinds);
 struct object_row {
     object id;
     canopen::sdo_address address;
-    std::uint8_t size;  // expedited bytes: 1, 2 or 4; 0 for a string (1..4 expedited, or segmented)
+    // Expedited bytes: 1, 2 or 4; 0 for a string (1..4 expedited, or segmented) and for an LED
+    // plane of the per-colour SI scheme (the model's stride / 8: 2 bytes with 16, 1 with 8).
+    std::uint8_t size;
     powerkey::access access;
     std::uint32_t min = 0;  // valid values: min..max, or `also` (FEh event-driven, 0 = off ...)
     std::uint32_t max = 0xFFFF'FFFF;
@@ -277,7 +376,13 @@ struct object_row {
     }
 };
 
-enum class dictionary : std::uint8_t { pk1000, pkp_li };
+enum class dictionary : std::uint8_t {
+    pk1000,         // PK1000
+    pkp_li,         // PKP-2200/2400/2600 LI: 6000h.., command module 6500h
+    si_packed,      // PKP-2600-SI: the PK1000's objects, 2001h/2002h cut from the RPDO string
+    si_mt,          // PKP-3500-MT: per-colour planes, encoders, inputs
+    si_per_colour,  // PKP-3500-SI, 2500-SI, 1500-LI, 2200/2300/2400-SI (partly inferred)
+};
 
 namespace detail {
 constexpr auto ro = access::read_only;
@@ -402,10 +507,267 @@ inline constexpr object_row pkp_li_rows[] = {
     {obj::command_module, {0x6500, 1}, 4, wo},
 };
 
+// The SI family: the PK1000's dictionary with RGB LEDs (docs/si-family.md, "Object
+// dictionary"; "2600SI n" and "MT n" are the sections of the PKP2600SI and PKP3500-MT manuals).
+// Writes the manuals show without a read (2100h, 20FFh, 1011h sub 1) are write-only here; the
+// COB-IDs read back without the CiA 301 bits 30/31; 1017h takes 000Ah..FEFFh (both manuals).
+
+// PKP-2600-SI: 2001h/2002h carry the RPDO bit string in three pieces (2600SI 17, 18).
+inline constexpr object_row si_packed_rows[] = {
+    {obj::keys, {0x2000, 1}, 2, ro},
+    {obj::led_on_r1_12_g1_4, {0x2001, 1}, 2, rw},
+    {obj::led_on_g5_12, {0x2001, 2}, 1, rw},
+    {obj::led_on_b1_12, {0x2001, 3}, 2, rw},
+    {obj::led_blink_r1_12_g1_4, {0x2002, 1}, 2, rw},
+    {obj::led_blink_g5_12, {0x2002, 2}, 1, rw},
+    {obj::led_blink_b1_12, {0x2002, 3}, 2, rw},
+    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
+    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
+    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
+    {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
+    {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
+    {obj::serial_number_string, {0x2200, 0}, 0, ro},
+    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
+    {obj::error_register, {0x1001, 0}, 1, ro},
+    {obj::device_name, {0x1008, 0}, 0, ro},
+    {obj::hardware_version, {0x1009, 0}, 0, ro},
+    {obj::software_version, {0x100A, 0}, 0, ro},
+    {obj::model_name, {0x100B, 0}, 0, ro},
+    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
+    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
+    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
+    {obj::serial_number, {0x1018, 4}, 4, ro},
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
+    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
+    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
+    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
+    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
+    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
+    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
+    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0110},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0208},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro, 0, any, none_else, 0x2001'0310},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0110},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0208},
+    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro, 0, any, none_else, 0x2002'0310},
+    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},  // E-SI-18
+};
+
+// PKP-3500-MT: per-colour planes of 16 bits, the encoder rings in sub 4, encoders and inputs.
+inline constexpr object_row si_mt_rows[] = {
+    {obj::keys, {0x2000, 1}, 2, ro},
+    {obj::encoder1_direction_counter, {0x2000, 2}, 1, ro},
+    {obj::encoder1_tick_counter, {0x2000, 3}, 2, rw, 0, 0xFFFF, none_else, 0},
+    {obj::encoder2_direction_counter, {0x2000, 4}, 1, ro},
+    {obj::encoder2_tick_counter, {0x2000, 5}, 2, rw, 0, 0xFFFF, none_else, 0},
+    {obj::encoder1_top_position, {0x2000, 6}, 1, rw, 2, 0x10, 0, 8},
+    {obj::encoder2_top_position, {0x2000, 7}, 1, rw, 2, 0x10, 0, 8},
+    {obj::led_on_red, {0x2001, 1}, 2, rw},
+    {obj::led_on_green, {0x2001, 2}, 2, rw},
+    {obj::led_on_blue, {0x2001, 3}, 2, rw},
+    {obj::led_on_encoder, {0x2001, 4}, 4, rw},
+    {obj::led_blink_red, {0x2002, 1}, 2, rw},
+    {obj::led_blink_green, {0x2002, 2}, 2, rw},
+    {obj::led_blink_blue, {0x2002, 3}, 2, rw},
+    {obj::led_blink_encoder, {0x2002, 4}, 4, rw},
+    {obj::digital_input_count, {0x2004, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::digital_inputs, {0x2004, 1}, 1, ro, 0, 0x0F},
+    {obj::analog_input_count, {0x2005, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::analog_input_0, {0x2005, 1}, 1, ro},
+    {obj::analog_input_1, {0x2005, 2}, 1, ro},
+    {obj::analog_input_2, {0x2005, 3}, 1, ro},
+    {obj::analog_input_3, {0x2005, 4}, 1, ro},
+    {obj::analog_input_period, {0x2006, 0}, 1, rw, 0x08, 0xC8, none_else, 0x08},
+    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
+    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
+    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
+    {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
+    {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
+    {obj::serial_number_string, {0x2200, 0}, 0, ro},
+    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
+    {obj::error_register, {0x1001, 0}, 1, ro},
+    {obj::device_name, {0x1008, 0}, 0, ro},
+    {obj::hardware_version, {0x1009, 0}, 0, ro},
+    {obj::software_version, {0x100A, 0}, 0, ro},
+    {obj::model_name, {0x100B, 0}, 0, ro},
+    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
+    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
+    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
+    {obj::serial_number, {0x1018, 4}, 4, ro},
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
+    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
+    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
+    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
+    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
+    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
+    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
+    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0110},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0210},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro, 0, any, none_else, 0x2001'0310},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0110},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0210},
+    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro, 0, any, none_else, 0x2002'0310},
+    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2001'0420},
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 0x32, 0xFEFF, none_else, 0},  // MT 50 a
+    {obj::tpdo2_count, {0x1801, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo2_cob_id, {0x1801, 1}, 4, ro, 0, any, none_else, 0x295},
+    {obj::tpdo2_transmission_type, {0x1801, 2}, 1, ro, 1, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo2_event_timer, {0x1801, 5}, 2, ro, 0, 0xFEFF, none_else, 0},
+    {obj::tpdo3_count, {0x1802, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo3_cob_id, {0x1802, 1}, 4, ro, 0, any, none_else, 0x395},
+    {obj::tpdo3_transmission_type, {0x1802, 2}, 1, ro, 1, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo3_event_timer, {0x1802, 5}, 2, ro, 0, 0xFEFF, none_else, 0},
+    {obj::tpdo4_count, {0x1803, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::tpdo4_cob_id, {0x1803, 1}, 4, ro, 0, any, none_else, 0x495},
+    {obj::tpdo4_transmission_type, {0x1803, 2}, 1, ro, 0, any, none_else, 0x08},  // E-SI-15
+    {obj::tpdo2_mapping_count, {0x1A01, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::tpdo2_mapping_1, {0x1A01, 1}, 4, ro, 0, any, none_else, 0x2000'0208},
+    {obj::tpdo2_mapping_2, {0x1A01, 2}, 4, ro, 0, any, none_else, 0x2000'0310},
+    {obj::tpdo2_mapping_3, {0x1A01, 3}, 4, ro, 0, any, none_else, 0x2000'0608},
+    {obj::tpdo3_mapping_count, {0x1A02, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::tpdo3_mapping_1, {0x1A02, 1}, 4, ro, 0, any, none_else, 0x2000'0408},
+    {obj::tpdo3_mapping_2, {0x1A02, 2}, 4, ro, 0, any, none_else, 0x2000'0510},
+    {obj::tpdo3_mapping_3, {0x1A02, 3}, 4, ro, 0, any, none_else, 0x2000'0708},
+};
+
+// PKP-3500-SI, 2500-SI, 1500-LI and the 2200/2300/2400-SI: per-colour planes of the model's
+// stride (2 bytes when 16, 1 when 8: size 0 below). Printed for the 2500-SI and 1500-LI;
+// inferred for the others (docs/si-family.md says which fact is which). The mapping entries'
+// values depend on the stride and are not given.
+inline constexpr object_row si_per_colour_rows[] = {
+    {obj::keys, {0x2000, 1}, 2, ro},
+    {obj::led_on_red, {0x2001, 1}, 0, rw},
+    {obj::led_on_green, {0x2001, 2}, 0, rw},
+    {obj::led_on_blue, {0x2001, 3}, 0, rw},
+    {obj::led_blink_red, {0x2002, 1}, 0, rw},
+    {obj::led_blink_green, {0x2002, 2}, 0, rw},
+    {obj::led_blink_blue, {0x2002, 3}, 0, rw},
+    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
+    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
+    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
+    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
+    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
+    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
+    {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
+    {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
+    {obj::serial_number_string, {0x2200, 0}, 0, ro},
+    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
+    {obj::error_register, {0x1001, 0}, 1, ro},
+    {obj::device_name, {0x1008, 0}, 0, ro},
+    {obj::hardware_version, {0x1009, 0}, 0, ro},
+    {obj::software_version, {0x100A, 0}, 0, ro},
+    {obj::model_name, {0x100B, 0}, 0, ro},
+    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
+    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
+    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
+    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
+    {obj::serial_number, {0x1018, 4}, 4, ro},
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
+    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
+    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
+    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
+    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
+    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
+    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
+    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
+    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
+    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
+    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro},
+    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
+    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},
+};
+
 // A dictionary's rows, the hash table of their addresses, and the row of each object.
+// 2^bits slots for N rows: at most 2 probes for every dictionary (checked below).
+template <std::size_t N>
+inline constexpr unsigned slot_bits = N > 64 ? 9 : 8;
+
 template <std::size_t N>
 struct dictionary_index {
-    address_table<N, 8> by_address;
+    address_table<N, slot_bits<N>> by_address;
     std::array<std::uint8_t, object_count> by_object{};  // row + 1, 0: the object is not there
 };
 
@@ -413,16 +775,22 @@ template <std::size_t N>
 constexpr dictionary_index<N> index_of(const object_row (&rows)[N]) noexcept {
     std::array<std::uint32_t, N> keys{};
     for (std::size_t i = 0; i < N; ++i) keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
-    dictionary_index<N> d{address_table<N, 8>(keys), {}};
+    dictionary_index<N> out{address_table<N, slot_bits<N>>(keys), {}};
     for (std::size_t i = 0; i < N; ++i)
-        d.by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
-    return d;
+        out.by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
+    return out;
 }
 
 inline constexpr auto pk1000_index = index_of(pk1000_rows);
 inline constexpr auto pkp_li_index = index_of(pkp_li_rows);
+inline constexpr auto si_packed_index = index_of(si_packed_rows);
+inline constexpr auto si_mt_index = index_of(si_mt_rows);
+inline constexpr auto si_per_colour_index = index_of(si_per_colour_rows);
 static_assert(pk1000_index.by_address.max_probes() <= 2);
 static_assert(pkp_li_index.by_address.max_probes() <= 2);
+static_assert(si_packed_index.by_address.max_probes() <= 2);
+static_assert(si_mt_index.by_address.max_probes() <= 2);
+static_assert(si_per_colour_index.by_address.max_probes() <= 2);
 
 // Every object at most once per dictionary, every address once (the hash table needs it).
 template <std::size_t N>
@@ -434,34 +802,56 @@ constexpr bool objects_distinct(const object_row (&rows)[N]) noexcept {
 }
 static_assert(objects_distinct(pk1000_rows));
 static_assert(objects_distinct(pkp_li_rows));
+static_assert(objects_distinct(si_packed_rows));
+static_assert(objects_distinct(si_mt_rows));
+static_assert(objects_distinct(si_per_colour_rows));
 }  // namespace detail
 
 // The rows of a dictionary, in manual order.
 [[nodiscard]] constexpr std::span<const object_row> rows_of(dictionary d) noexcept {
-    if (d == dictionary::pkp_li) return detail::pkp_li_rows;
+    switch (d) {
+        case dictionary::pkp_li: return detail::pkp_li_rows;
+        case dictionary::si_packed: return detail::si_packed_rows;
+        case dictionary::si_mt: return detail::si_mt_rows;
+        case dictionary::si_per_colour: return detail::si_per_colour_rows;
+        case dictionary::pk1000: break;
+    }
     return detail::pk1000_rows;
 }
 
 namespace detail {
 inline constexpr std::uint8_t no_row = 0xFF;
 // The index of the row at an address in a dictionary's table, no_row when there is none.
+// Calls f(index) with the dictionary's index, so that every lookup is one switch.
+template <class F>
+constexpr auto with_index(dictionary d, F&& f) noexcept {
+    switch (d) {
+        case dictionary::pkp_li: return f(pkp_li_index);
+        case dictionary::si_packed: return f(si_packed_index);
+        case dictionary::si_mt: return f(si_mt_index);
+        case dictionary::si_per_colour: return f(si_per_colour_index);
+        case dictionary::pk1000: break;
+    }
+    return f(pk1000_index);
+}
 constexpr std::uint8_t row_index(dictionary d, canopen::sdo_address a) noexcept {
     const auto key = address_key(a.index, a.subindex);
-    const auto r = d == dictionary::pkp_li ? pkp_li_index.by_address.find(key)
-                                           : pk1000_index.by_address.find(key);
-    return r ? static_cast<std::uint8_t>(*r) : no_row;
+    return with_index(d, [key](const auto& index) {
+        const auto r = index.by_address.find(key);
+        return r ? static_cast<std::uint8_t>(*r) : no_row;
+    });
 }
 constexpr std::uint8_t row_index(dictionary d, object o) noexcept {
     const auto i = static_cast<std::size_t>(o);
     if (i >= object_count) return no_row;
-    const auto r = d == dictionary::pkp_li ? pkp_li_index.by_object[i] : pk1000_index.by_object[i];
-    return static_cast<std::uint8_t>(r - 1u);  // 0 (absent) wraps to no_row
+    return with_index(d, [i](const auto& index) {
+        return static_cast<std::uint8_t>(index.by_object[i] - 1u);  // 0 (absent) wraps to no_row
+    });
 }
 // Row i of a dictionary, i < its size.
 constexpr const object_row& row_at(dictionary d, std::uint8_t i) noexcept {
-    return d == dictionary::pkp_li ? pkp_li_rows[i] : pk1000_rows[i];
+    return rows_of(d)[i];
 }
-static_assert(std::size(pk1000_rows) < no_row && std::size(pkp_li_rows) < no_row);
 }  // namespace detail
 
 // The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
@@ -569,6 +959,51 @@ struct enum_names<object> {
         {o::tpdo1_event_timer, "tpdo1_event_timer"},
         {o::tpdo1_mapping_count, "tpdo1_mapping_count"},
         {o::tpdo1_mapping_1, "tpdo1_mapping_1"},
+        {o::led_on_blue, "led_on_blue"},
+        {o::led_blink_blue, "led_blink_blue"},
+        {o::led_on_r1_12_g1_4, "led_on_r1_12_g1_4"},
+        {o::led_on_g5_12, "led_on_g5_12"},
+        {o::led_on_b1_12, "led_on_b1_12"},
+        {o::led_blink_r1_12_g1_4, "led_blink_r1_12_g1_4"},
+        {o::led_blink_g5_12, "led_blink_g5_12"},
+        {o::led_blink_b1_12, "led_blink_b1_12"},
+        {o::led_on_encoder, "led_on_encoder"},
+        {o::led_blink_encoder, "led_blink_encoder"},
+        {o::encoder1_direction_counter, "encoder1_direction_counter"},
+        {o::encoder1_tick_counter, "encoder1_tick_counter"},
+        {o::encoder2_direction_counter, "encoder2_direction_counter"},
+        {o::encoder2_tick_counter, "encoder2_tick_counter"},
+        {o::encoder1_top_position, "encoder1_top_position"},
+        {o::encoder2_top_position, "encoder2_top_position"},
+        {o::digital_input_count, "digital_input_count"},
+        {o::digital_inputs, "digital_inputs"},
+        {o::analog_input_count, "analog_input_count"},
+        {o::analog_input_0, "analog_input_0"},
+        {o::analog_input_1, "analog_input_1"},
+        {o::analog_input_2, "analog_input_2"},
+        {o::analog_input_3, "analog_input_3"},
+        {o::analog_input_period, "analog_input_period"},
+        {o::rpdo1_mapping_3, "rpdo1_mapping_3"},
+        {o::rpdo2_mapping_3, "rpdo2_mapping_3"},
+        {o::tpdo2_count, "tpdo2_count"},
+        {o::tpdo2_cob_id, "tpdo2_cob_id"},
+        {o::tpdo2_transmission_type, "tpdo2_transmission_type"},
+        {o::tpdo2_event_timer, "tpdo2_event_timer"},
+        {o::tpdo3_count, "tpdo3_count"},
+        {o::tpdo3_cob_id, "tpdo3_cob_id"},
+        {o::tpdo3_transmission_type, "tpdo3_transmission_type"},
+        {o::tpdo3_event_timer, "tpdo3_event_timer"},
+        {o::tpdo4_count, "tpdo4_count"},
+        {o::tpdo4_cob_id, "tpdo4_cob_id"},
+        {o::tpdo4_transmission_type, "tpdo4_transmission_type"},
+        {o::tpdo2_mapping_count, "tpdo2_mapping_count"},
+        {o::tpdo2_mapping_1, "tpdo2_mapping_1"},
+        {o::tpdo2_mapping_2, "tpdo2_mapping_2"},
+        {o::tpdo2_mapping_3, "tpdo2_mapping_3"},
+        {o::tpdo3_mapping_count, "tpdo3_mapping_count"},
+        {o::tpdo3_mapping_1, "tpdo3_mapping_1"},
+        {o::tpdo3_mapping_2, "tpdo3_mapping_2"},
+        {o::tpdo3_mapping_3, "tpdo3_mapping_3"},
     };
 };
 
@@ -598,6 +1033,8 @@ struct enum_names<value_kind> {
         {k::cob_id, "cob_id"},           {k::pdo_mapping, "pdo_mapping"},
         {k::device_type, "device_type"}, {k::string, "string"},
         {k::restore, "restore"},         {k::none, "none"},
+        {k::led_part, "led_part"},       {k::ring, "ring"},
+        {k::direction_counter, "direction_counter"},
         {k::commands, "commands"},
     };
 };

@@ -1,0 +1,534 @@
+// powerkey: a bus-log checker. It follows one keypad through a log with the session follower
+// (session.hpp: decoding for the current node id, SDO pairing, node changes, segmented uploads)
+// and reports what the host did that the keypad will not do as asked, or what the keypad did
+// that breaks its promises, each with the input line it happened on:
+//
+//   checker<> c({model::pkp2400, canopen::node_id{0x15}});
+//   for (const auto& [frame, time, line] : log)
+//       for (const problem& p : c.step(frame, time, line)) print(p);
+//   for (const problem& p : c.finish()) print(p);
+//   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
+//
+// Problem kinds (problem_kind), the manual behaviour each comes from in docs/controller.md:
+//   sdo_overlap          a request while another is outstanding: the keypad drops it
+//   sdo_no_reply         a request never answered within the SDO timeout
+//   sdo_abort            the keypad aborted a request: the CiA 301 meaning of its code
+//   pdo_not_operational  an RPDO to a keypad that is not operational: it ignores it
+//   heartbeat_silence    no heartbeat for longer than the configured period (1017h) allows
+//   key_state_silence    no key state for longer than the periodic transmission allows
+//   old_node_traffic     a frame to the keypad's old node id after it changed its node id
+//   segment_toggle       a segment request or response with the wrong toggle bit
+//   segment_size         a segmented upload whose bytes do not match the size it announced
+// No heap, no I/O: problems come back as small structs, explain() writes the text.
+#ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
+#define POWERKEY_BEHAVIOUR_CHECKER_HPP
+
+#include <powerkey/behaviour/clock.hpp>
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/describe.hpp>
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/result.hpp>
+#include <powerkey/session.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+
+namespace powerkey::behaviour {
+
+enum class problem_kind : std::uint8_t {
+    sdo_overlap,          // detail: line of the outstanding request, its index, its sub-index
+    sdo_no_reply,         // detail: index, sub-index, ms waited
+    sdo_abort,            // detail: abort code, index, sub-index
+    pdo_not_operational,  // detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0
+    heartbeat_silence,    // detail: ms silent so far, period ms (1017h), line of the last heartbeat
+    key_state_silence,    // detail: ms silent so far, period ms, line of the last key state
+    old_node_traffic,     // detail: COB-ID, old node id, new node id
+    segment_toggle,       // detail: toggle expected, toggle sent, 0 from the host / 1 the keypad
+    segment_size,         // detail: size announced, bytes received, index
+};
+
+struct problem {
+    std::uint32_t line = 0;
+    problem_kind kind = problem_kind::sdo_overlap;
+    std::array<std::uint32_t, 3> detail{};
+    friend constexpr bool operator==(const problem&, const problem&) noexcept = default;
+};
+
+struct checker_config {
+    model keypad_model = model::pk1000;
+    canopen::node_id node = canopen::default_node_id;
+    duration_ms sdo_timeout{1000};  // a request unanswered for longer is sdo_no_reply
+    // Silence allowed beyond a configured period, in percent of it (50: 1.5 periods).
+    std::uint32_t tolerance_percent = 50;
+    // Periods in force before the log starts (0: not known; the log's own writes set them).
+    duration_ms heartbeat_period{0};  // 1017h
+    duration_ms key_state_period{0};  // PK1000 1800h sub 5, PKP command 12h
+};
+
+template <std::size_t TextCapacity = 64>
+class checker {
+public:
+    static constexpr std::size_t max_problems_per_frame = 4;
+
+    constexpr explicit checker(const checker_config& c) noexcept
+        : cfg_(c), session_(c.keypad_model, c.node), hb_period_(c.heartbeat_period.value),
+          ks_period_(c.key_state_period.value) {}
+
+    // One frame of the log, received at `t`, from input line `line`: the problems it shows.
+    [[nodiscard]] constexpr std::span<const problem> step(const can::frame& f, millis t,
+                                                          std::uint32_t line) noexcept {
+        count_ = 0;
+        now_ = t;
+        line_ = line;
+        timers();
+        const auto c = canopen::classify(f);
+        old_node(f, c);
+        const canopen::node_id before = session_.node();
+        const auto e = session_.step(f);
+        if (e.sdo == sdo_pairing::request) {
+            on_request(f, e);
+        } else if (e.cls.fn == canopen::function::sdo_tx &&
+                   (e.sdo == sdo_pairing::reply || e.sdo == sdo_pairing::unanswered)) {
+            on_response(f, e);
+        }
+        if (e.decoded) on_message(*e.decoded, c);
+        if (e.new_node && *e.new_node != before) {
+            old_ = before;
+            if (old_ == session_.node()) old_.reset();
+        }
+        return {found_.data(), count_};
+    }
+
+    // The end of the log at `t` (the last frame's time): requests still unanswered.
+    [[nodiscard]] constexpr std::span<const problem> finish(millis t) noexcept {
+        count_ = 0;
+        now_ = t;
+        timers();
+        return {found_.data(), count_};
+    }
+
+    [[nodiscard]] constexpr const session<TextCapacity>& follower() const noexcept {
+        return session_;
+    }
+    [[nodiscard]] constexpr std::optional<canopen::nmt_state> keypad_state() const noexcept {
+        return state_;
+    }
+
+private:
+    constexpr void report(std::uint32_t line, problem_kind k, std::uint32_t a, std::uint32_t b,
+                          std::uint32_t c) noexcept {
+        if (count_ < found_.size()) found_[count_++] = problem{line, k, {a, b, c}};
+    }
+
+    constexpr std::uint32_t allowed(std::uint32_t period) const noexcept {
+        return period + static_cast<std::uint32_t>(std::uint64_t{period} * cfg_.tolerance_percent / 100);
+    }
+
+    // Deadlines that passed before this frame.
+    constexpr void timers() noexcept {
+        if (pending_ && elapsed(pending_->sent, now_).value > cfg_.sdo_timeout.value) {
+            report(pending_->line, problem_kind::sdo_no_reply, pending_->address.index,
+                   pending_->address.subindex, elapsed(pending_->sent, now_).value);
+            pending_.reset();
+        }
+        if (hb_period_ != 0 && hb_last_ && !hb_reported_ &&
+            elapsed(hb_last_->time, now_).value > allowed(hb_period_)) {
+            hb_reported_ = true;
+            report(line_, problem_kind::heartbeat_silence, elapsed(hb_last_->time, now_).value,
+                   hb_period_, hb_last_->line);
+        }
+        if (ks_period_ != 0 && ks_last_ && !ks_reported_ &&
+            state_ == canopen::nmt_state::operational &&
+            elapsed(ks_last_->time, now_).value > allowed(ks_period_)) {
+            ks_reported_ = true;
+            report(line_, problem_kind::key_state_silence, elapsed(ks_last_->time, now_).value,
+                   ks_period_, ks_last_->line);
+        }
+    }
+
+    // A host frame to the node id the keypad left (PK1000 23, PKP 13 h): nobody answers it.
+    constexpr void old_node(const can::frame& f, const canopen::cob_info& c) noexcept {
+        if (!old_) return;
+        const std::uint8_t o = old_->value();
+        bool to_old = false;
+        switch (c.fn) {
+            case canopen::function::sdo_rx:
+            case canopen::function::rpdo1:
+            case canopen::function::rpdo2:
+            case canopen::function::rpdo3:
+            case canopen::function::rpdo4: to_old = c.node == o; break;
+            case canopen::function::nmt: to_old = f.size() == 2 && f[1] == o; break;
+            default: break;
+        }
+        if (to_old) report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
+    }
+
+    constexpr void on_request(const can::frame& f, const session_event& e) noexcept {
+        const auto r = canopen::decode_sdo_request(f, e.node);
+        if (!r) return;
+        if (std::holds_alternative<canopen::sdo_abort>(*r)) {  // the host ends the transfer
+            pending_.reset();
+            segmented_ = false;
+            return;
+        }
+        canopen::sdo_address a{};
+        if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) a = d->address;
+        if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) a = u->address;
+        const auto* s = std::get_if<canopen::sdo_segment_request>(&*r);
+        if (s != nullptr) a = segment_address_;
+        if (pending_) {  // the keypad still owes a reply: it drops this one
+            report(line_, problem_kind::sdo_overlap, pending_->line, pending_->address.index,
+                   pending_->address.subindex);
+            return;
+        }
+        if (s != nullptr && segmented_) {
+            if (s->toggle != expect_toggle_)
+                report(line_, problem_kind::segment_toggle, expect_toggle_ ? 1u : 0u,
+                       s->toggle ? 1u : 0u, 0);
+            request_toggle_ = s->toggle;
+            expect_toggle_ = !s->toggle;
+        }
+        if (s == nullptr) segmented_ = false;  // a new transfer
+        pending_ = outstanding{line_, now_, a};
+    }
+
+    constexpr void on_response(const can::frame& f, const session_event& e) noexcept {
+        const auto r = canopen::decode_sdo_response(f, e.node);
+        if (!r) return;
+        const bool answers = pending_.has_value();
+        pending_.reset();
+        if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
+            report(line_, problem_kind::sdo_abort, static_cast<std::uint32_t>(a->code),
+                   a->address.index, a->address.subindex);
+            segmented_ = false;
+            return;
+        }
+        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
+            segmented_ = answers;
+            expect_toggle_ = false;
+            segment_address_ = i->address;
+            return;
+        }
+        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) {
+            if (!segmented_) return;
+            if (s->toggle != request_toggle_)
+                report(line_, problem_kind::segment_toggle, request_toggle_ ? 1u : 0u,
+                       s->toggle ? 1u : 0u, 1);
+            if (s->last) {
+                segmented_ = false;
+                if (e.upload_done) upload_size();
+            }
+        }
+    }
+
+    // The keypads pad strings with NUL bytes past the announced size (E-CORE-2, E-CORE-5): only
+    // a count that matches neither with nor without them is a size error.
+    constexpr void upload_size() noexcept {
+        const auto& u = session_.upload();
+        const auto announced = u.announced_size();
+        if (!announced) return;
+        std::uint32_t nul = 0;
+        for (const auto b : u.bytes()) nul += b == 0 ? 1u : 0u;
+        const auto got = static_cast<std::uint32_t>(u.bytes().size());
+        if (got != *announced && got - nul != *announced)
+            report(line_, problem_kind::segment_size, *announced, got, u.address().index);
+    }
+
+    constexpr void set_state(canopen::nmt_state s) noexcept {
+        if (state_ != s) pdo_reported_ = false;
+        if (s != canopen::nmt_state::operational) ks_last_.reset();
+        state_ = s;
+    }
+
+    constexpr void on_message(const message& m, const canopen::cob_info& c) noexcept {
+        const auto node = session_.node();
+        if (const auto* n = std::get_if<canopen::nmt_message>(&m)) {
+            if (n->target.value() != 0 && n->target.value() != node.value()) return;
+            switch (n->command) {
+                case canopen::nmt_command::start: set_state(canopen::nmt_state::operational); break;
+                case canopen::nmt_command::stop:
+                case canopen::nmt_command::legacy_stop: set_state(canopen::nmt_state::stopped); break;
+                case canopen::nmt_command::enter_pre_operational:
+                case canopen::nmt_command::reset_node:
+                case canopen::nmt_command::reset_communication:
+                    set_state(canopen::nmt_state::pre_operational);
+                    break;
+            }
+            return;
+        }
+        if (c.node != node.value()) return;
+        if (const auto* h = std::get_if<canopen::heartbeat_message>(&m)) {
+            if (h->state == canopen::nmt_state::boot_up) {
+                // Booted into pre-operational, or operational when set active on startup (PK1000
+                // 22, PKP 13 d). A reboot loses the request in progress and restarts monitoring.
+                set_state(active_ ? canopen::nmt_state::operational
+                                  : canopen::nmt_state::pre_operational);
+                pending_.reset();
+                segmented_ = false;
+                hb_last_.reset();
+            } else {
+                set_state(h->state);
+                hb_last_ = seen{now_, line_};
+            }
+            hb_reported_ = false;
+            return;
+        }
+        if (std::holds_alternative<key_state>(m)) {
+            set_state(canopen::nmt_state::operational);  // it sends key states only then
+            ks_last_ = seen{now_, line_};
+            ks_reported_ = false;
+            return;
+        }
+        if (std::holds_alternative<led_on>(m) || std::holds_alternative<led_blink>(m) ||
+            std::holds_alternative<led_brightness>(m) || std::holds_alternative<backlight>(m)) {
+            if (state_ && *state_ != canopen::nmt_state::operational && !pdo_reported_) {
+                pdo_reported_ = true;
+                report(line_, problem_kind::pdo_not_operational,
+                       canopen::cob_id(c.fn, node).value(), static_cast<std::uint32_t>(*state_), 0);
+            }
+            return;
+        }
+        // The settings the checker follows, from the host's writes.
+        if (const auto* w = std::get_if<sdo_write>(&m)) {
+            if (w->object == object::heartbeat_time) {
+                hb_period_ = w->value.raw;
+                hb_reported_ = false;
+            } else if (w->object == object::tpdo1_event_timer) {
+                ks_period_ = w->value.raw;
+                ks_reported_ = false;
+            } else if (w->object == object::active_on_startup) {
+                active_ = w->value.raw != 0;
+            }
+        } else if (const auto* k = std::get_if<command>(&m)) {
+            if (k->code == command_code::set_periodic_transmission) {
+                ks_period_ = k->enabled ? 10u * k->period_10ms : 0u;
+                ks_reported_ = false;
+            } else if (k->code == command_code::set_active_on_startup) {
+                active_ = k->enabled;
+            }
+        }
+    }
+
+    struct outstanding {
+        std::uint32_t line;
+        millis sent;
+        canopen::sdo_address address;
+    };
+    struct seen {
+        millis time;
+        std::uint32_t line;
+    };
+
+    checker_config cfg_;
+    session<TextCapacity> session_;
+    millis now_{};
+    std::uint32_t line_ = 0;
+    std::optional<outstanding> pending_;
+    bool segmented_ = false;
+    bool expect_toggle_ = false;
+    bool request_toggle_ = false;
+    canopen::sdo_address segment_address_{};
+    std::optional<canopen::nmt_state> state_;
+    bool active_ = false;
+    bool pdo_reported_ = false;
+    std::optional<canopen::node_id> old_;
+    std::uint32_t hb_period_ = 0;
+    std::optional<seen> hb_last_;
+    bool hb_reported_ = false;
+    std::uint32_t ks_period_ = 0;
+    std::optional<seen> ks_last_;
+    bool ks_reported_ = false;
+    std::array<problem, max_problems_per_frame> found_{};
+    std::size_t count_ = 0;
+};
+
+// --- explanations -------------------------------------------------------------------------------
+
+// CiA 301 table 22: what each abort code means.
+struct abort_meaning {
+    canopen::sdo_abort_code code;
+    std::string_view text;
+};
+
+inline constexpr abort_meaning abort_meanings[] = {
+    {canopen::sdo_abort_code::toggle_bit_not_alternated, "toggle bit not alternated"},
+    {canopen::sdo_abort_code::timed_out, "SDO protocol timed out"},
+    {canopen::sdo_abort_code::invalid_command_specifier,
+     "client/server command specifier not valid or unknown"},
+    {canopen::sdo_abort_code::invalid_block_size, "invalid block size"},
+    {canopen::sdo_abort_code::invalid_sequence_number, "invalid sequence number"},
+    {canopen::sdo_abort_code::crc_error, "CRC error"},
+    {canopen::sdo_abort_code::out_of_memory, "out of memory"},
+    {canopen::sdo_abort_code::unsupported_access, "unsupported access to an object"},
+    {canopen::sdo_abort_code::write_only, "attempt to read a write only object"},
+    {canopen::sdo_abort_code::read_only, "attempt to write a read only object"},
+    {canopen::sdo_abort_code::object_does_not_exist,
+     "object does not exist in the object dictionary"},
+    {canopen::sdo_abort_code::cannot_be_mapped, "object cannot be mapped to the PDO"},
+    {canopen::sdo_abort_code::exceeds_pdo_length,
+     "the number and length of the objects to be mapped would exceed PDO length"},
+    {canopen::sdo_abort_code::parameter_incompatibility, "general parameter incompatibility"},
+    {canopen::sdo_abort_code::internal_incompatibility, "general internal incompatibility"},
+    {canopen::sdo_abort_code::hardware_error, "access failed due to a hardware error"},
+    {canopen::sdo_abort_code::length_mismatch,
+     "data type does not match, length of service parameter does not match"},
+    {canopen::sdo_abort_code::length_too_high,
+     "data type does not match, length of service parameter too high"},
+    {canopen::sdo_abort_code::length_too_low,
+     "data type does not match, length of service parameter too low"},
+    {canopen::sdo_abort_code::subindex_does_not_exist, "sub-index does not exist"},
+    {canopen::sdo_abort_code::invalid_value, "invalid value for parameter (download only)"},
+    {canopen::sdo_abort_code::value_too_high, "value of parameter written too high"},
+    {canopen::sdo_abort_code::value_too_low, "value of parameter written too low"},
+    {canopen::sdo_abort_code::max_less_than_min, "maximum value is less than minimum value"},
+    {canopen::sdo_abort_code::resource_not_available, "resource not available: SDO connection"},
+    {canopen::sdo_abort_code::general_error, "general error"},
+    {canopen::sdo_abort_code::cannot_store,
+     "data cannot be transferred or stored to the application"},
+    {canopen::sdo_abort_code::cannot_store_local_control,
+     "data cannot be transferred or stored to the application because of local control"},
+    {canopen::sdo_abort_code::cannot_store_device_state,
+     "data cannot be transferred or stored to the application because of the present device state"},
+    {canopen::sdo_abort_code::no_object_dictionary,
+     "object dictionary dynamic generation fails or no object dictionary is present"},
+    {canopen::sdo_abort_code::no_data, "no data available"},
+};
+
+// The CiA 301 meaning of an abort code; "" for a code CiA 301 does not define.
+[[nodiscard]] constexpr std::string_view abort_meaning_of(std::uint32_t code) noexcept {
+    for (const auto& m : abort_meanings)
+        if (static_cast<std::uint32_t>(m.code) == code) return m.text;
+    return {};
+}
+
+namespace detail {
+constexpr void put_address(text_writer& w, std::uint32_t index, std::uint32_t sub) noexcept {
+    w.put_hex(index, 4);
+    w.put("h/");
+    w.put_decimal(sub);
+}
+constexpr void put_line(text_writer& w, std::uint32_t line) noexcept {
+    w.put("line ");
+    w.put_decimal(line);
+}
+}  // namespace detail
+
+// The explanation of p, one sentence without the line number (the caller prints that first).
+constexpr void explain(const problem& p, text_writer& w) noexcept {
+    const auto& d = p.detail;
+    switch (p.kind) {
+        case problem_kind::sdo_overlap:
+            w.put("SDO request sent while the request of ");
+            detail::put_line(w, d[0]);
+            w.put(" (");
+            detail::put_address(w, d[1], d[2]);
+            w.put(") is unanswered: the keypad drops it (one request at a time)");
+            break;
+        case problem_kind::sdo_no_reply:
+            w.put("SDO request ");
+            detail::put_address(w, d[0], d[1]);
+            w.put(" never answered (");
+            w.put_decimal(d[2]);
+            w.put(" ms without a reply)");
+            break;
+        case problem_kind::sdo_abort: {
+            w.put("the keypad aborted ");
+            detail::put_address(w, d[1], d[2]);
+            w.put(" with ");
+            w.put_hex(d[0], 8);
+            w.put("h: ");
+            const auto m = abort_meaning_of(d[0]);
+            w.put(m.empty() ? std::string_view{"a code CiA 301 does not define"} : m);
+            break;
+        }
+        case problem_kind::pdo_not_operational: {
+            w.put("PDO ");
+            w.put_hex(d[0], 3);
+            w.put("h sent while the keypad is ");
+            const auto s = enum_name(static_cast<canopen::nmt_state>(d[1]));
+            w.put(s.empty() ? std::string_view{"not operational"} : s);
+            w.put(": it ignores PDOs until an NMT start");
+            break;
+        }
+        case problem_kind::heartbeat_silence:
+        case problem_kind::key_state_silence:
+            w.put(p.kind == problem_kind::heartbeat_silence ? "no heartbeat" : "no key state");
+            w.put(" for ");
+            w.put_decimal(d[0]);
+            w.put(" ms since ");
+            detail::put_line(w, d[2]);
+            w.put(", the configured period is ");
+            w.put_decimal(d[1]);
+            w.put(" ms");
+            break;
+        case problem_kind::old_node_traffic:
+            w.put("frame ");
+            w.put_hex(d[0], 3);
+            w.put("h to the old node id ");
+            w.put_hex(d[1], 2);
+            w.put("h: the keypad moved to ");
+            w.put_hex(d[2], 2);
+            w.put("h and does not answer it");
+            break;
+        case problem_kind::segment_toggle:
+            w.put(d[2] == 0 ? "segment request" : "segment response");
+            w.put(" with toggle bit ");
+            w.put_decimal(d[1]);
+            w.put(", expected ");
+            w.put_decimal(d[0]);
+            w.put(d[2] == 0 ? ": the keypad aborts with 05030000h"
+                            : ": the keypad repeated or skipped a segment");
+            break;
+        case problem_kind::segment_size:
+            w.put("segmented upload of ");
+            w.put_hex(d[2], 4);
+            w.put("h announced ");
+            w.put_decimal(d[0]);
+            w.put(" bytes and sent ");
+            w.put_decimal(d[1]);
+            break;
+    }
+}
+
+// The same into a buffer: the text, or errc::buffer_too_small (the buffer holds the beginning).
+// 160 characters hold every explanation.
+[[nodiscard]] constexpr result<std::string_view> explain(const problem& p,
+                                                         std::span<char> out) noexcept {
+    text_writer w(out);
+    explain(p, w);
+    if (w.overflow()) return errc::buffer_too_small;
+    return w.view();
+}
+
+}  // namespace powerkey::behaviour
+
+template <>
+struct powerkey::enum_names<powerkey::behaviour::problem_kind> {
+    using k = behaviour::problem_kind;
+    static constexpr enum_name_entry<k> entries[] = {
+        {k::sdo_overlap, "sdo_overlap"},
+        {k::sdo_no_reply, "sdo_no_reply"},
+        {k::sdo_abort, "sdo_abort"},
+        {k::pdo_not_operational, "pdo_not_operational"},
+        {k::heartbeat_silence, "heartbeat_silence"},
+        {k::key_state_silence, "key_state_silence"},
+        {k::old_node_traffic, "old_node_traffic"},
+        {k::segment_toggle, "segment_toggle"},
+        {k::segment_size, "segment_size"},
+    };
+};
+
+#endif  // POWERKEY_BEHAVIOUR_CHECKER_HPP

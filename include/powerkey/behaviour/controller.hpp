@@ -1,0 +1,768 @@
+// powerkey: the host side of one keypad, as a state machine the caller steps. It owns no clock and
+// does no I/O: the caller hands it each received frame and the time, drains the frames it wants
+// to send from its outbox, and polls the events it reports. No heap, no exceptions, no callbacks.
+//
+//   controller<> c(cfg);                               // cfg: model, node, configuration list ...
+//   for (;;) {
+//       if (const auto f = can_receive()) c.step(*f, now()); else c.tick(now());
+//       while (const auto out = c.next_frame()) can_send(*out);
+//       while (const auto e = c.poll()) handle(*e);    // key_pressed, lost, ready ...
+//       c.set_led(3, colour::green);                  // sent when it changes, refreshed, resent
+//   }
+//
+// What it does, and where the manuals say so (docs/controller.md has the whole list):
+//   - finds the keypad by its boot-up or heartbeat (PK1000 8, 9, 29; PKP 8, 9, 17), or by probing
+//     its SDO server when it booted before the host did;
+//   - reads the model id 100Bh (PK1000 35 "PK1000", PKP 22 "PKU2400") and takes the model it
+//     names (model_from_report), else keeps the configured one;
+//   - runs the setup and the caller's configuration list through the SDO server one request at a
+//     time (a keypad drops a request that arrives while it still owes a reply), with a timeout,
+//     retries and the keypad's abort reported;
+//   - starts the keypad with NMT start (PK1000 4, PKP 4), optionally also setting it active on
+//     startup (PK1000 2012h section 22, PKP command 10h 13 d), and starts it again whenever its
+//     heartbeat says it is not operational (PK1000 28 note 2: a keypad whose consumer heartbeat
+//     timed out turns its LEDs off and waits in pre-operational for a new NMT start);
+//   - keeps a shadow of the LEDs (RPDO1/2: PK1000 12, 13; PKP 11, 12), the LED brightness and the
+//     backlight (PK1000 RPDO3/4 sections 14, 15; PKP 6201h section 30 and command 04h 13 c),
+//     sends it when it changes, refreshes the LED PDOs periodically, and sends everything again
+//     after the keypad rebooted or was started again (a rebooted keypad shows its defaults);
+//   - reports a lost keypad when it heard nothing from it (heartbeat, key state, SDO reply) for
+//     longer than configured, so that the application can go to a safe state;
+//   - turns key-state PDOs (PK1000 11, PKP 10) into key events: press, release, long press and
+//     repeat, with the caller's times;
+//   - follows a node-id change it is asked for: the reply from the new id (PK1000 2013h section
+//     23) or from the old id and a boot-up from the new one (PKP command 70h, 13 h).
+#ifndef POWERKEY_BEHAVIOUR_CONTROLLER_HPP
+#define POWERKEY_BEHAVIOUR_CONTROLLER_HPP
+
+#include <powerkey/behaviour/clock.hpp>
+#include <powerkey/can/frame.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/node_id.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sdo_upload.hpp>
+#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/values.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <variant>
+
+namespace powerkey::behaviour {
+
+// How the controller makes the keypad operational.
+enum class start_mode : std::uint8_t {
+    nmt_start,          // NMT start after every boot-up (PK1000 4, PKP 4)
+    active_on_startup,  // also set "active on startup" once (PK1000 2012h, PKP command 10h), so the
+                        // keypad comes up operational by itself after a power cycle
+};
+
+struct controller_config {
+    model keypad_model = model::pk1000;  // used unless 100Bh names another model
+    canopen::node_id node = canopen::default_node_id;
+    bool any_node = false;       // adopt the first boot-up of any node instead of `node`'s
+    bool identify = true;        // read 100Bh and take the model it reports
+    start_mode start = start_mode::nmt_start;
+    // Read and written in order, one request at a time, after the keypad is found and again after
+    // each reboot: sdo_read, sdo_write or command messages (others are skipped). Caller-owned.
+    std::span<const message> configuration{};
+    duration_ms keypad_heartbeat{200};  // written to 1017h during setup; 0: leave 1017h alone
+    duration_ms lost_after{600};        // silence that makes the keypad lost; 0: never lost
+    duration_ms sdo_timeout{300};       // per request
+    std::uint8_t sdo_retries = 2;       // sends after the first, for a timed-out request
+    duration_ms probe_period{1000};     // SDO read of 1000h to `node` while searching; 0: off
+    duration_ms refresh_period{1000};   // resend the LED PDOs this often; 0: only on change
+    duration_ms long_press{800};        // held this long: key_long_press (once); 0: off
+    duration_ms repeat_delay{500};      // held this long: the first key_repeat; 0: no repeats
+    duration_ms repeat_period{200};     // then every repeat_period
+};
+
+// What the controller tells the application.
+enum class event_kind : std::uint8_t {
+    found,            // the keypad answered: `node`
+    ready,            // set up and started: `node`, the model in `model`
+    rebooted,         // a boot-up while it was set up; the setup runs again
+    lost,             // silent for longer than lost_after: go to a safe state
+    node_changed,     // it moved to `node`
+    sdo_done,         // a configuration entry was done (`step`, `object`; `value` of a read)
+    sdo_aborted,      // the keypad aborted it: `value` is the CiA 301 abort code
+    sdo_timed_out,    // no reply after the retries
+    sdo_refused,      // the entry cannot be sent to this model: `value` is the errc
+    key_pressed,      // `key`
+    key_released,     // `key`
+    key_long_press,   // `key`, held for long_press
+    key_repeat,       // `key`, held: repeat_delay, then every repeat_period
+};
+
+// Which request an SDO event is about: an entry of the configuration list, or the controller's own.
+enum class sdo_origin : std::uint8_t {
+    configuration,   // configuration[step]
+    identify,        // the 100Bh read
+    heartbeat,       // the 1017h write
+    start,           // active on startup
+    shadow,          // LED brightness or backlight (PKP: no PDO for them)
+    node_change,     // change_node()
+};
+
+struct controller_event {
+    event_kind kind = event_kind::found;
+    std::uint8_t key = 0;        // key events: 1..the model's keys
+    canopen::node_id node = canopen::default_node_id;
+    sdo_origin origin = sdo_origin::configuration;
+    std::uint8_t step = 0;       // configuration index (origin configuration)
+    object what = object::keys;  // SDO events: the object
+    std::uint32_t value = 0;     // sdo_done: the value read (little endian); sdo_aborted: the code
+    friend constexpr bool operator==(const controller_event&, const controller_event&) noexcept =
+        default;
+};
+
+enum class controller_state : std::uint8_t {
+    searching,    // waiting for a boot-up or heartbeat (probing the SDO server)
+    setting_up,   // identifying and configuring, one SDO request at a time
+    running,      // started; the shadow is kept and key events flow
+};
+
+template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = 16>
+class controller {
+public:
+    constexpr explicit controller(const controller_config& c) noexcept
+        : cfg_(c), model_(c.keypad_model), info_(info(c.keypad_model).value_or(model_info{})),
+          node_(c.node), upload_(c.node) {}
+
+    // --- driving it -------------------------------------------------------------------------
+
+    // A frame received from the bus at `now` (any frame: the controller picks its keypad's).
+    constexpr void step(const can::frame& f, millis now) noexcept {
+        now_ = now;
+        if (!f.is_extended()) on_frame(f);
+        run();
+    }
+    // Time passed without a frame: timers (SDO timeout, lost, refresh, long press, repeat).
+    constexpr void tick(millis now) noexcept {
+        now_ = now;
+        run();
+    }
+    // The next frame to send, oldest first.
+    [[nodiscard]] constexpr std::optional<can::frame> next_frame() noexcept { return outbox_.pop(); }
+    [[nodiscard]] constexpr frame_queue<OutboxCapacity>& outbox() noexcept { return outbox_; }
+    // The next event, oldest first.
+    [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
+        if (events_size_ == 0) return std::nullopt;
+        const controller_event e = events_[events_head_];
+        events_head_ = (events_head_ + 1) % EventCapacity;
+        --events_size_;
+        return e;
+    }
+    // Events refused because the application polled too slowly.
+    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept { return events_dropped_; }
+
+    // --- what the application shows ---------------------------------------------------------
+
+    // LED k (1..the model's LEDs) in colour c, steady or blinking; false for an LED it lacks.
+    constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
+        if (k < 1 || k > info_.leds) return false;
+        leds on = on_, bl = blink_;
+        on.set(k, blink ? colour::off : c);
+        bl.set(k, blink ? c : colour::off);
+        set_leds(on, bl);
+        return true;
+    }
+    // The whole picture: the LEDs on, and those that blink (both: alternate, PK1000 13).
+    constexpr void set_leds(const leds& on, const leds& blink) noexcept {
+        if (!(on == on_)) dirty_ |= dirty_on;
+        if (!(blink == blink_)) dirty_ |= dirty_blink;
+        on_ = on;
+        blink_ = blink;
+    }
+    constexpr void set_brightness(level l) noexcept {
+        if (!has_brightness_ || !(l == brightness_)) dirty_ |= dirty_brightness;
+        has_brightness_ = true;
+        brightness_ = l;
+    }
+    // The backlight level, and its colour (keep: leave the keypad's colour).
+    constexpr void set_backlight(level l, backlight_colour c = backlight_colour::keep) noexcept {
+        if (!has_backlight_ || !(l == backlight_level_) || c != backlight_colour_)
+            dirty_ |= dirty_backlight;
+        backlight_level_sent_ = false;  // PKP: the level write, then the colour command
+        has_backlight_ = true;
+        backlight_level_ = l;
+        backlight_colour_ = c;
+    }
+    // Move the keypad to node id n (PK1000 2013h, PKP command 70h), after the requests before it.
+    constexpr void change_node(canopen::node_id n) noexcept {
+        pending_node_change_ = n;
+    }
+
+    // --- what it knows ----------------------------------------------------------------------
+
+    [[nodiscard]] constexpr controller_state state() const noexcept { return state_; }
+    [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
+    [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
+    // The keypad's NMT state as last reported or commanded (nullopt: not known).
+    [[nodiscard]] constexpr std::optional<canopen::nmt_state> keypad_state() const noexcept {
+        return keypad_state_;
+    }
+    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
+    [[nodiscard]] constexpr const leds& leds_on() const noexcept { return on_; }
+    [[nodiscard]] constexpr const leds& leds_blink() const noexcept { return blink_; }
+    // The text of the last string read (100Bh ...).
+    [[nodiscard]] constexpr std::string_view text() const noexcept { return upload_.text(); }
+    // Whether an SDO request is waiting for its reply (the controller never sends a second one).
+    [[nodiscard]] constexpr bool sdo_outstanding() const noexcept { return job_.has_value(); }
+
+private:
+    // Setup steps before the configuration list, in order.
+    enum setup_step : std::uint8_t { setup_identify, setup_heartbeat, setup_active, setup_list };
+    static constexpr std::uint8_t dirty_on = 1, dirty_blink = 2, dirty_brightness = 4,
+                                  dirty_backlight = 8, dirty_all = 15;
+
+    struct sdo_job {
+        message request;
+        sdo_origin origin = sdo_origin::configuration;
+        std::uint8_t step = 0;
+        object what = object::keys;
+        canopen::sdo_address address{};
+        bool read = false;
+        canopen::node_id reply_node = canopen::default_node_id;  // where the reply comes from
+    };
+
+    // --- events -----------------------------------------------------------------------------
+
+    constexpr void emit(controller_event e) noexcept {
+        if (events_size_ == EventCapacity) {
+            ++events_dropped_;
+            return;
+        }
+        e.node = node_;
+        events_[(events_head_ + events_size_) % EventCapacity] = e;
+        ++events_size_;
+    }
+    constexpr void emit(event_kind k) noexcept { emit(controller_event{k}); }
+    constexpr void emit_key(event_kind k, unsigned key) noexcept {
+        controller_event e{k};
+        e.key = static_cast<std::uint8_t>(key);
+        emit(e);
+    }
+    constexpr void emit_sdo(event_kind k, const sdo_job& j, std::uint32_t value) noexcept {
+        controller_event e{k};
+        e.origin = j.origin;
+        e.step = j.step;
+        e.what = j.what;
+        e.value = value;
+        emit(e);
+    }
+
+    // --- received frames --------------------------------------------------------------------
+
+    constexpr void on_frame(const can::frame& f) noexcept {
+        const auto c = canopen::classify(f);
+        if (c.fn == canopen::function::heartbeat) {
+            on_heartbeat(f, c.node);
+        } else if (c.fn == canopen::function::sdo_tx) {
+            on_sdo_reply(f, c.node);
+        } else if (c.fn == canopen::function::tpdo1 && c.node == node_.value() &&
+                   state_ != controller_state::searching) {
+            const auto m = decode(f, node_, model_);
+            if (!m) return;
+            heard();
+            if (const auto k = powerkey::pressed_keys(*m)) {
+                // A keypad sends key states only when operational (PK1000 11, PKP 10).
+                keypad_state_ = canopen::nmt_state::operational;
+                on_keys(*k);
+            }
+        }
+    }
+
+    constexpr void heard() noexcept { last_heard_ = now_; }
+
+    constexpr void on_heartbeat(const can::frame& f, std::uint8_t from) noexcept {
+        const bool ours = from == node_.value();
+        if (!ours && !(cfg_.any_node && state_ == controller_state::searching)) return;
+        const auto n = canopen::node_id::make(from);
+        if (!n) return;
+        const auto h = canopen::decode_heartbeat(f, *n);
+        if (!h) return;
+        const bool boot = h->state == canopen::nmt_state::boot_up;
+        if (!ours && !boot) return;  // any_node adopts a boot-up only: heartbeats are everyone's
+        if (!ours) {
+            node_ = *n;
+            upload_ = canopen::segmented_upload<16>(node_);
+        }
+        heard();
+        keypad_state_ = boot ? canopen::nmt_state::pre_operational : h->state;
+        if (state_ == controller_state::searching) {
+            found(boot);
+            return;
+        }
+        if (boot) {  // it rebooted (power, reset, node change): everything again
+            if (awaiting_boot_from_new_) {
+                awaiting_boot_from_new_ = false;
+            } else {
+                emit(event_kind::rebooted);
+            }
+            release_all();
+            begin_setup(false);
+            return;
+        }
+        // Not operational while it should be (stopped, or pre-operational after its consumer
+        // heartbeat timed out, PK1000 28 note 2): start it again and resend the picture.
+        if (state_ == controller_state::running && h->state != canopen::nmt_state::operational)
+            start_keypad();
+    }
+
+    constexpr void found(bool boot) noexcept {
+        emit(event_kind::found);
+        release_all();
+        // A keypad that was only silent (frames lost) and is still operational needs no setup.
+        if (!boot && done_setup_once_ && keypad_state_ == canopen::nmt_state::operational) {
+            state_ = controller_state::running;
+            dirty_ = dirty_all;
+            emit(event_kind::ready);
+            return;
+        }
+        begin_setup(!done_setup_once_);
+    }
+
+    constexpr void begin_setup(bool first) noexcept {
+        state_ = controller_state::setting_up;
+        job_.reset();
+        setup_pos_ = first ? setup_identify : setup_heartbeat;
+        list_pos_ = 0;
+        if (first) start_written_ = false;
+    }
+
+    constexpr void on_sdo_reply(const can::frame& f, std::uint8_t from) noexcept {
+        if (state_ == controller_state::searching) {
+            if (from != node_.value()) return;
+            heard();  // the probe was answered: the keypad is there, in an unknown state
+            keypad_state_ = std::nullopt;
+            found(false);
+            return;
+        }
+        if (!job_ || !sent_ || from != job_->reply_node.value()) return;
+        heard();
+        const auto r = canopen::decode_sdo_response(f, job_->reply_node);
+        if (!r) return;
+        if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
+            if (a->address != job_->address) return;
+            emit_sdo(event_kind::sdo_aborted, *job_, static_cast<std::uint32_t>(a->code));
+            finish_job(false);
+            return;
+        }
+        if (job_->read) {
+            // Ignore a late reply to an earlier request (another object).
+            if (const auto* u = std::get_if<canopen::sdo_upload_response>(&*r);
+                u && u->address != job_->address)
+                return;
+            if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r);
+                i && i->address != job_->address)
+                return;
+            const auto s = upload_.step(f);
+            if (!s) {
+                // A malformed or out-of-turn reply: keep waiting; the timeout resends.
+                (void)upload_.start(job_->address);
+                return;
+            }
+            if (s->request) {  // the next segment
+                send_frame(*s->request);
+                deadline_ = now_ + cfg_.sdo_timeout;
+                return;
+            }
+            std::uint32_t v = 0;
+            const auto b = upload_.bytes();
+            for (std::size_t i = 0; i < b.size() && i < 4; ++i) v |= std::uint32_t{b[i]} << (8 * i);
+            if (job_->origin == sdo_origin::identify) {
+                if (const auto m = model_from_report(upload_.text())) set_model(*m);
+            }
+            emit_sdo(event_kind::sdo_done, *job_, v);
+            finish_job(true);
+            return;
+        }
+        const auto* d = std::get_if<canopen::sdo_download_response>(&*r);
+        if (d == nullptr || d->address != job_->address) return;
+        if (job_->origin == sdo_origin::node_change) {
+            const auto n = node_id_change(job_->request);
+            if (n) {
+                node_ = *n;
+                upload_ = canopen::segmented_upload<16>(node_);
+                // PKP 13 h: a boot-up from the new id follows; it is not a reboot to report.
+                awaiting_boot_from_new_ = !info_.replies_from_new_id;
+                emit(event_kind::node_changed);
+            }
+        }
+        emit_sdo(event_kind::sdo_done, *job_, 0);
+        finish_job(true);
+    }
+
+    constexpr void set_model(powerkey::model m) noexcept {
+        const auto i = info(m);
+        if (!i) return;
+        model_ = m;
+        info_ = *i;
+    }
+
+    // --- keys -------------------------------------------------------------------------------
+
+    constexpr void on_keys(key_set now_pressed) noexcept {
+        for (unsigned k = 1; k <= info_.keys; ++k) {
+            const bool was = keys_.contains(k), is = now_pressed.contains(k);
+            if (is && !was) {
+                pressed_at_[k - 1] = now_;
+                next_repeat_[k - 1] = now_ + cfg_.repeat_delay;
+                long_sent_ = static_cast<std::uint16_t>(long_sent_ & ~(1u << (k - 1)));
+                emit_key(event_kind::key_pressed, k);
+            } else if (was && !is) {
+                emit_key(event_kind::key_released, k);
+            }
+        }
+        keys_ = now_pressed;
+    }
+
+    constexpr void key_timers() noexcept {
+        for (unsigned k : keys_) {
+            if (k > info_.keys) continue;
+            const auto bit = static_cast<std::uint16_t>(1u << (k - 1));
+            if (cfg_.long_press.value != 0 && (long_sent_ & bit) == 0 &&
+                reached(pressed_at_[k - 1] + cfg_.long_press, now_)) {
+                long_sent_ = static_cast<std::uint16_t>(long_sent_ | bit);
+                emit_key(event_kind::key_long_press, k);
+            }
+            if (cfg_.repeat_delay.value != 0 && reached(next_repeat_[k - 1], now_)) {
+                emit_key(event_kind::key_repeat, k);
+                const duration_ms p = cfg_.repeat_period.value != 0 ? cfg_.repeat_period
+                                                                    : cfg_.repeat_delay;
+                next_repeat_[k - 1] = next_repeat_[k - 1] + p;
+                if (reached(next_repeat_[k - 1], now_)) next_repeat_[k - 1] = now_ + p;
+            }
+        }
+    }
+
+    // Keys held when the keypad went away are released for the application.
+    constexpr void release_all() noexcept { on_keys(key_set{}); }
+
+    // --- the time-driven part ---------------------------------------------------------------
+
+    constexpr void run() noexcept {
+        if (state_ != controller_state::searching && cfg_.lost_after.value != 0 &&
+            elapsed(last_heard_, now_).value > cfg_.lost_after.value) {
+            emit(event_kind::lost);
+            release_all();
+            state_ = controller_state::searching;
+            keypad_state_ = std::nullopt;
+            job_.reset();
+            next_probe_ = now_;
+        }
+        switch (state_) {
+            case controller_state::searching: probe(); break;
+            case controller_state::setting_up:
+                sdo_timer();
+                if (!job_) next_setup_job();
+                break;
+            case controller_state::running:
+                sdo_timer();
+                if (!job_) next_running_job();
+                send_shadow();
+                key_timers();
+                break;
+        }
+    }
+
+    constexpr void probe() noexcept {
+        if (cfg_.probe_period.value == 0 || !reached(next_probe_, now_)) return;
+        next_probe_ = now_ + cfg_.probe_period;
+        const auto row = find_row(info_.dictionary, object::device_type);
+        if (row) send_frame(canopen::encode(node_, canopen::sdo_upload_request{row->address}));
+    }
+
+    constexpr void sdo_timer() noexcept {
+        if (!job_) return;
+        if (!sent_) {  // the outbox was full: try again
+            send_job();
+            return;
+        }
+        if (!reached(deadline_, now_)) return;
+        if (attempts_ <= cfg_.sdo_retries) {
+            send_job();
+            return;
+        }
+        emit_sdo(event_kind::sdo_timed_out, *job_, 0);
+        finish_job(false);
+    }
+
+    constexpr void finish_job(bool /*ok*/) noexcept {
+        job_.reset();
+        if (state_ == controller_state::setting_up) next_setup_job();
+        else if (state_ == controller_state::running) next_running_job();
+    }
+
+    constexpr void next_setup_job() noexcept {
+        while (setup_pos_ < setup_list) {
+            const auto s = setup_pos_;
+            setup_pos_ = static_cast<std::uint8_t>(setup_pos_ + 1);
+            if (s == setup_identify && cfg_.identify) {
+                if (begin_job(sdo_read{object::model_name}, sdo_origin::identify, 0)) return;
+            } else if (s == setup_heartbeat && cfg_.keypad_heartbeat.value != 0) {
+                if (begin_job(sdo_write{object::heartbeat_time,
+                                        number_value(cfg_.keypad_heartbeat.value)},
+                              sdo_origin::heartbeat, 0))
+                    return;
+            } else if (s == setup_active && cfg_.start == start_mode::active_on_startup &&
+                       !start_written_) {
+                start_written_ = true;
+                if (begin_job(active_message(), sdo_origin::start, 0)) return;
+            }
+        }
+        while (list_pos_ < cfg_.configuration.size()) {
+            const auto i = list_pos_++;
+            if (begin_job(cfg_.configuration[i], sdo_origin::configuration,
+                          static_cast<std::uint8_t>(i)))
+                return;
+        }
+        // Set up: start it and show the picture.
+        done_setup_once_ = true;
+        state_ = controller_state::running;
+        start_keypad();
+        emit(event_kind::ready);
+        next_running_job();
+    }
+
+    constexpr message active_message() const noexcept {
+        if (info_.dictionary == dictionary::pkp_li) {
+            command c;
+            c.code = command_code::set_active_on_startup;
+            c.enabled = true;
+            return c;
+        }
+        return sdo_write{object::active_on_startup, flag_value(true)};
+    }
+
+    constexpr void start_keypad() noexcept {
+        const auto target = canopen::nmt_target::make(node_.value()).value();
+        if (send_frame(canopen::encode(canopen::nmt_message{canopen::nmt_command::start, target}))) {
+            keypad_state_ = canopen::nmt_state::operational;
+            dirty_ = dirty_all;  // a started keypad shows what it was last sent, or its defaults
+        }
+    }
+
+    // While running: a node change, then the shadow values that travel by SDO (PKP).
+    constexpr void next_running_job() noexcept {
+        if (pending_node_change_) {
+            const auto n = *pending_node_change_;
+            pending_node_change_.reset();
+            message m = sdo_write{object::node_id, node_value(n)};
+            if (info_.dictionary == dictionary::pkp_li) {
+                command c;
+                c.code = command_code::set_node_id;
+                c.node_id = n;
+                m = c;
+            }
+            if (begin_job(m, sdo_origin::node_change, 0)) {
+                if (info_.replies_from_new_id) job_->reply_node = n;  // PK1000 23
+                return;
+            }
+        }
+        if (info_.brightness_pdo) return;  // PK1000: RPDO3 and RPDO4, sent by send_shadow
+        if ((dirty_ & dirty_brightness) != 0) {
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
+            if (has_brightness_ &&
+                begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
+                          sdo_origin::shadow, 0))
+                return;
+        }
+        if ((dirty_ & dirty_backlight) != 0) {
+            if (!has_backlight_) {
+                dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
+            } else if (!backlight_level_sent_) {
+                backlight_level_sent_ = true;
+                if (begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
+                              sdo_origin::shadow, 0))
+                    return;
+            }
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
+            backlight_level_sent_ = false;
+            if (backlight_colour_ != backlight_colour::keep) {
+                command c;
+                c.code = command_code::set_backlight_colour;
+                c.colour = backlight_colour_;
+                if (begin_job(c, sdo_origin::shadow, 0)) return;
+            }
+        }
+    }
+
+    // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
+    constexpr bool begin_job(const message& m, sdo_origin origin, std::uint8_t step) noexcept {
+        sdo_job j;
+        j.request = m;
+        j.origin = origin;
+        j.step = step;
+        j.reply_node = node_;
+        object o = object::command_module;
+        if (const auto* r = std::get_if<sdo_read>(&m)) {
+            o = r->object;
+            j.read = true;
+        } else if (const auto* w = std::get_if<sdo_write>(&m)) {
+            o = w->object;
+        } else if (!std::holds_alternative<command>(m)) {
+            return false;  // not an SDO request: skipped
+        }
+        j.what = o;
+        const auto row = find_row(info_.dictionary, o);
+        const auto f = encode(node_, model_, m);
+        if (!row || !f) {
+            emit_sdo(event_kind::sdo_refused, j,
+                     static_cast<std::uint32_t>(f ? errc::unknown_object : f.error()));
+            return false;
+        }
+        j.address = row->address;
+        job_ = j;
+        attempts_ = 0;
+        sent_ = false;
+        send_job();
+        return true;
+    }
+
+    constexpr void send_job() noexcept {
+        if (!job_) return;
+        const auto f = encode(node_, model_, job_->request);
+        if (!f) return;
+        if (job_->read) (void)upload_.start(job_->address);
+        if (!send_frame(*f)) return;
+        sent_ = true;
+        ++attempts_;
+        deadline_ = now_ + cfg_.sdo_timeout;
+    }
+
+    // The shadow's PDOs, only to an operational keypad (it ignores PDOs otherwise, PK1000 11).
+    constexpr void send_shadow() noexcept {
+        if (keypad_state_ != canopen::nmt_state::operational) return;
+        if (cfg_.refresh_period.value != 0 && reached(next_refresh_, now_)) {
+            dirty_ |= dirty_on | dirty_blink;
+            next_refresh_ = now_ + cfg_.refresh_period;
+        }
+        if ((dirty_ & dirty_on) != 0 && send_message(led_on{on_}))
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_on);
+        if ((dirty_ & dirty_blink) != 0 && send_message(led_blink{blink_}))
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_blink);
+        if (!info_.brightness_pdo) return;
+        if ((dirty_ & dirty_brightness) != 0 &&
+            (!has_brightness_ || send_message(led_brightness{brightness_})))
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
+        if ((dirty_ & dirty_backlight) != 0 &&
+            (!has_backlight_ || send_message(backlight{backlight_level_, backlight_colour_})))
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
+    }
+
+    constexpr bool send_message(const message& m) noexcept {
+        const auto f = encode(node_, model_, m);
+        if (!f) return true;  // nothing this model can carry: not retried
+        return send_frame(*f);
+    }
+    constexpr bool send_frame(const can::frame& f) noexcept { return outbox_.push(f); }
+
+    controller_config cfg_;
+    powerkey::model model_;
+    model_info info_;
+    canopen::node_id node_;
+    controller_state state_ = controller_state::searching;
+    std::optional<canopen::nmt_state> keypad_state_;
+    millis now_{};
+    millis last_heard_{};
+    millis next_probe_{};
+    millis next_refresh_{};
+    bool done_setup_once_ = false;
+    bool start_written_ = false;
+    bool awaiting_boot_from_new_ = false;
+    std::uint8_t setup_pos_ = setup_identify;
+    std::size_t list_pos_ = 0;
+
+    // The one SDO request in flight.
+    std::optional<sdo_job> job_;
+    bool sent_ = false;
+    std::uint8_t attempts_ = 0;
+    millis deadline_{};
+    canopen::segmented_upload<16> upload_;
+    std::optional<canopen::node_id> pending_node_change_;
+
+    // The shadow.
+    leds on_{};
+    leds blink_{};
+    level brightness_ = 0x3F;
+    level backlight_level_ = 0;
+    backlight_colour backlight_colour_ = backlight_colour::keep;
+    bool has_brightness_ = false;
+    bool has_backlight_ = false;
+    bool backlight_level_sent_ = false;
+    std::uint8_t dirty_ = dirty_all;
+
+    // Keys.
+    key_set keys_{};
+    std::array<millis, key_set::max> pressed_at_{};
+    std::array<millis, key_set::max> next_repeat_{};
+    std::uint16_t long_sent_ = 0;
+
+    frame_queue<OutboxCapacity> outbox_{};
+    std::array<controller_event, EventCapacity> events_{};
+    std::size_t events_head_ = 0;
+    std::size_t events_size_ = 0;
+    std::size_t events_dropped_ = 0;
+};
+
+}  // namespace powerkey::behaviour
+
+template <>
+struct powerkey::enum_names<powerkey::behaviour::event_kind> {
+    using k = behaviour::event_kind;
+    static constexpr enum_name_entry<k> entries[] = {
+        {k::found, "found"},
+        {k::ready, "ready"},
+        {k::rebooted, "rebooted"},
+        {k::lost, "lost"},
+        {k::node_changed, "node_changed"},
+        {k::sdo_done, "sdo_done"},
+        {k::sdo_aborted, "sdo_aborted"},
+        {k::sdo_timed_out, "sdo_timed_out"},
+        {k::sdo_refused, "sdo_refused"},
+        {k::key_pressed, "key_pressed"},
+        {k::key_released, "key_released"},
+        {k::key_long_press, "key_long_press"},
+        {k::key_repeat, "key_repeat"},
+    };
+};
+
+template <>
+struct powerkey::enum_names<powerkey::behaviour::sdo_origin> {
+    using o = behaviour::sdo_origin;
+    static constexpr enum_name_entry<o> entries[] = {
+        {o::configuration, "configuration"}, {o::identify, "identify"},
+        {o::heartbeat, "heartbeat"},         {o::start, "start"},
+        {o::shadow, "shadow"},               {o::node_change, "node_change"},
+    };
+};
+
+template <>
+struct powerkey::enum_names<powerkey::behaviour::controller_state> {
+    using s = behaviour::controller_state;
+    static constexpr enum_name_entry<s> entries[] = {{s::searching, "searching"},
+                                                     {s::setting_up, "setting_up"},
+                                                     {s::running, "running"}};
+};
+
+template <>
+struct powerkey::enum_names<powerkey::behaviour::start_mode> {
+    using s = behaviour::start_mode;
+    static constexpr enum_name_entry<s> entries[] = {{s::nmt_start, "nmt_start"},
+                                                     {s::active_on_startup, "active_on_startup"}};
+};
+
+#endif  // POWERKEY_BEHAVIOUR_CONTROLLER_HPP
