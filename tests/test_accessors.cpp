@@ -1,0 +1,269 @@
+// The common questions answered from whichever frame carries the answer: pressed keys, LED maps,
+// brightness, backlight, node id, NMT state, each from every carrier of both dictionaries and
+// nullopt from every other message; and the README's firmware loop, byte for byte.
+#include <doctest/doctest.h>
+
+#include <powerkey/can/candump.hpp>
+#include <powerkey/can/frame.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+
+#include "support.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+using powerkey_tests::first_failing;
+using powerkey_tests::frame_of;
+constexpr canopen::node_id keypad = canopen::default_node_id;
+
+constexpr message decoded(model m, std::string_view frame) {
+    return decode(frame_of(frame), keypad, m).value();
+}
+
+// One carrier of a fact: the frame, the model it is decoded for, and what the accessor answers.
+template <class T>
+struct carrier {
+    std::string_view section;
+    std::string_view frame;
+    model keypad_model;
+    std::optional<T> expected;
+};
+
+template <class T, std::size_t N, class Accessor>
+constexpr std::size_t first_wrong(const carrier<T> (&rows)[N], Accessor get) {
+    return first_failing(rows, [get](const carrier<T>& r) {
+        const auto m = decode(frame_of(r.frame), keypad, r.keypad_model);
+        return m.has_value() && get(*m) == r.expected;
+    });
+}
+template <class T, std::size_t N, class Accessor>
+void check_carriers(const carrier<T> (&rows)[N], Accessor get) {
+    powerkey_tests::check_rows(rows, [get](const carrier<T>& r) {
+        const auto m = decode(frame_of(r.frame), keypad, r.keypad_model);
+        return m.has_value() && get(*m) == r.expected;
+    });
+}
+
+// Messages that carry none of the facts, on each model.
+constexpr std::string_view unrelated_pk1000[] = {
+    "000#0115", "080#", "615#4003200100000000", "595#6003200100000000",
+    "615#2F03200520000000",  // default_led_brightness: after the next power on, not now
+    "615#2F03200620000000",  // default_backlight_level
+    "615#2F03200407000000",  // default_backlight_colour
+    "595#4B17100064000000", "18EF2100#041B8000FFFFFFFF", "595#8001100000000206",
+};
+constexpr std::string_view unrelated_pkp[] = {
+    "000#0115", "080#", "615#4001620100000000", "595#6001620100000000",
+    "615#230065017C200000",  // command 7Ch: default LED brightness
+    "615#230065017B200000",  // command 7Bh: default backlight level
+    "615#230065017D070000",  // command 7Dh: default backlight colour
+    "615#2300650110010000",  // command 10h: active on startup
+};
+
+// --- pressed keys -----------------------------------------------------------------------------
+constexpr carrier<key_set> key_rows[] = {
+    {"PK1000 11", "195#090000002A", model::pk1000, key_set{1, 4}},
+    {"PK1000 16", "595#4B00200100020000", model::pk1000, key_set{10}},
+    {"PKP 10", "195#040000002A", model::pkp2400, key_set{3}},
+    {"PKP 14", "595#4300600003000000", model::pkp2400, key_set{1, 2}},
+    {"PKP-2600", "195#000800002A", model::pkp2600, key_set{12}},
+    {"not a read reply", "615#4000200100000000", model::pk1000, std::nullopt},
+    {"sync", "080#", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(key_rows, pressed_keys) == std::size(key_rows));
+
+// --- LED maps -----------------------------------------------------------------------------------
+constexpr carrier<led_map_update> led_on_rows[] = {
+    {"PK1000 12: the PDO sets every plane", "215#0400000004000000", model::pk1000,
+     led_map_update{{{3}, {3}, {}}, 7}},
+    {"PK1000 17: 2001h sub 1, the red plane", "615#2301200104000000", model::pk1000,
+     led_map_update{{{3}, {}, {}}, 1}},
+    {"PK1000 17: 2001h sub 2, the green plane", "615#2301200204000000", model::pk1000,
+     led_map_update{{{}, {3}, {}}, 2}},
+    {"PK1000 17: a read reply of 2001h sub 1", "595#4301200104000000", model::pk1000,
+     led_map_update{{{3}, {}, {}}, 1}},
+    {"PKP 11: the PDO", "215#0004000000000000", model::pkp2400, led_map_update{{{}, {3}, {}}, 7}},
+    {"PKP 15: 6001h, three planes of a PKP-2400", "615#2301600004040400", model::pkp2400,
+     led_map_update{{{3}, {3}, {3}}, 7}},
+    {"PKP 15: a read reply of 6001h", "595#4301600001000000", model::pkp2400,
+     led_map_update{{{1}, {}, {}}, 7}},
+    {"the blink PDO is no LED-on map", "315#0400000000000000", model::pk1000, std::nullopt},
+    {"2002h is no LED-on map", "615#2302200104000000", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(led_on_rows, led_on_map) == std::size(led_on_rows));
+
+constexpr carrier<led_map_update> led_blink_rows[] = {
+    {"PK1000 13: the PDO", "315#0200000000000000", model::pk1000, led_map_update{{{2}, {}, {}}, 7}},
+    {"PK1000 18: 2002h sub 2, the green plane", "615#2302200202000000", model::pk1000,
+     led_map_update{{{}, {2}, {}}, 2}},
+    {"PKP 16: 6002h", "615#2302600000000400", model::pkp2400, led_map_update{{{}, {}, {3}}, 7}},
+    {"the LED-on PDO is no blink map", "215#0400000000000000", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(led_blink_rows, led_blink_map) == std::size(led_blink_rows));
+
+// --- brightness -----------------------------------------------------------------------------------
+constexpr level quarter = 0x10;
+constexpr level half = 0x20;
+constexpr carrier<level> brightness_rows[] = {
+    {"PK1000 14: the 400h PDO", "415#2000000000000000", model::pk1000, half},
+    {"PK1000 19 a: write 2003h sub 1", "615#2F03200120000000", model::pk1000, half},
+    {"PK1000 19 a: read reply of 2003h sub 1", "595#4F03200120000000", model::pk1000, half},
+    {"PKP 30: write 6201h sub 1", "615#2F01620110000000", model::pkp2400, quarter},
+    {"PKP 30: read reply of 6201h sub 1", "595#4F01620110000000", model::pkp2400, quarter},
+    {"PKP 13 b: command 02h", "615#2300650102100000", model::pkp2400, quarter},
+    {"the backlight level is no LED brightness", "615#2F03200220000000", model::pk1000,
+     std::nullopt},
+    {"command 03h is the backlight", "615#2300650103100000", model::pkp2400, std::nullopt},
+};
+static_assert(first_wrong(brightness_rows, brightness) == std::size(brightness_rows));
+
+// --- backlight ------------------------------------------------------------------------------------
+constexpr carrier<backlight_update> backlight_rows[] = {
+    {"PK1000 15: level, colour keep: no colour", "515#2000000000000000", model::pk1000,
+     backlight_update{half, std::nullopt}},
+    {"PK1000 15: level and blue", "515#2003000000000000", model::pk1000,
+     backlight_update{half, backlight_colour::blue}},
+    {"PK1000 19 b: write backlight_level", "615#2F03200220000000", model::pk1000,
+     backlight_update{half, std::nullopt}},
+    {"PK1000 19 c: write backlight_colour", "615#2F03200307000000", model::pk1000,
+     backlight_update{std::nullopt, backlight_colour::white}},
+    {"PK1000 19 c: read reply of backlight_colour", "595#4F03200308000000", model::pk1000,
+     backlight_update{std::nullopt, backlight_colour::amber}},
+    {"PKP 30: write 6201h sub 2", "615#2F01620210000000", model::pkp2400,
+     backlight_update{quarter, std::nullopt}},
+    {"PKP 13 b: command 03h", "615#2300650103100000", model::pkp2400,
+     backlight_update{quarter, std::nullopt}},
+    {"PKP 13 c: command 04h", "615#2300650104070000", model::pkp2400,
+     backlight_update{std::nullopt, backlight_colour::white}},
+    {"the LED brightness is no backlight", "415#2000000000000000", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(backlight_rows, backlight_of) == std::size(backlight_rows));
+
+// --- node id, NMT state -------------------------------------------------------------------------------
+constexpr canopen::node_id node_3a = 0x3A;
+constexpr canopen::node_id node_18 = 0x18;
+constexpr carrier<canopen::node_id> node_rows[] = {
+    {"PK1000 23: write 2013h", "615#2F1320003A000000", model::pk1000, node_3a},
+    {"PKP 13 h: command 70h", "615#2300650170180000", model::pkp2400, node_18},
+    {"a read reply of 2013h moves nothing", "595#4F1320003A000000", model::pk1000, std::nullopt},
+    {"the acknowledgement moves nothing", "595#6013200000000000", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(node_rows, node_id_change) == std::size(node_rows));
+
+constexpr carrier<canopen::nmt_state> nmt_rows[] = {
+    {"PK1000 29: operational", "715#05", model::pk1000, canopen::nmt_state::operational},
+    {"PK1000 8: boot-up", "715#00", model::pk1000, canopen::nmt_state::boot_up},
+    {"PKP 9: pre-operational", "715#7F", model::pkp2400, canopen::nmt_state::pre_operational},
+    {"an NMT command is not the keypad's state", "000#0115", model::pk1000, std::nullopt},
+};
+static_assert(first_wrong(nmt_rows, nmt_state_of) == std::size(nmt_rows));
+
+template <std::size_t N>
+constexpr bool none_answers(model m, const std::string_view (&frames)[N]) {
+    for (const auto text : frames) {
+        const auto msg = decode(frame_of(text), keypad, m);
+        if (!msg) return false;
+        if (pressed_keys(*msg) || led_on_map(*msg) || led_blink_map(*msg) || brightness(*msg) ||
+            backlight_of(*msg) || node_id_change(*msg) || nmt_state_of(*msg))
+            return false;
+    }
+    return true;
+}
+static_assert(none_answers(model::pk1000, unrelated_pk1000));
+static_assert(none_answers(model::pkp2400, unrelated_pkp));
+
+// --- the README's firmware loop ---------------------------------------------------------------
+// A key-state frame arrives as the raw id and bytes a CAN driver hands over; every pressed key
+// lights its LED green. Returns the LED-on frame to send.
+constexpr result<can::frame> firmware_step(model m, std::uint32_t rx_id,
+                                           std::span<const std::uint8_t> rx_data) {
+    const auto f = can::make_frame(rx_id, rx_data);
+    if (!f) return f.error();
+    const auto msg = decode(*f, keypad, m);
+    if (!msg) return msg.error();
+    const auto keys = pressed_keys(*msg);
+    if (!keys) return errc::unexpected_frame;
+    leds map;
+    for (unsigned k = 1; k <= 16; ++k)
+        if (keys->contains(k)) map.set(k, colour::green);
+    return encode(keypad, m, led_on{map});
+}
+
+constexpr std::array<std::uint8_t, 5> key3_pressed{0x04, 0x00, 0x00, 0x00, 0x2A};
+static_assert(firmware_step(model::pk1000, 0x195, key3_pressed).value() ==
+              can::candump("215#0000000004000000"));
+static_assert(firmware_step(model::pkp2400, 0x195, key3_pressed).value() ==
+              can::candump("215#0004000000000000"));
+}  // namespace
+
+TEST_CASE("pressed keys from the key-state PDO and from a read of the keys object") {
+    check_carriers(key_rows, pressed_keys);
+}
+
+TEST_CASE("LED maps from the PDOs and from the LED objects, with the planes each sets") {
+    check_carriers(led_on_rows, led_on_map);
+    check_carriers(led_blink_rows, led_blink_map);
+}
+
+TEST_CASE("brightness from the PDO, SDO writes and read replies of both dictionaries, command 02h") {
+    check_carriers(brightness_rows, brightness);
+}
+
+TEST_CASE("backlight from the PDO, the SDO objects and commands 03h/04h") {
+    check_carriers(backlight_rows, backlight_of);
+}
+
+TEST_CASE("node id changes and NMT states") {
+    check_carriers(node_rows, node_id_change);
+    check_carriers(nmt_rows, nmt_state_of);
+}
+
+TEST_CASE("every other message answers none of the questions") {
+    CHECK(none_answers(model::pk1000, unrelated_pk1000));
+    CHECK(none_answers(model::pkp2400, unrelated_pkp));
+}
+
+// include/ finding: accessors.hpp says "a PKP-2600's 6001h [sets] two [planes]" (the LED object
+// holds the planes that fit 32 bits, model_info::object_planes() == 2), but led_on_map answers
+// planes 7 for 6001h on every model: applying the update would clear the blue LEDs the frame
+// does not carry.
+TEST_CASE("a PKP-2600's 6001h sets two planes (red and green)") {
+    const auto m = decoded(model::pkp2600, "615#2301600000000000");
+    const auto u = led_on_map(m);
+    REQUIRE(u.has_value());
+    CHECK(u->planes == 3);  // fails: 7
+}
+
+TEST_CASE("the firmware loop: a key press lights that key's LED green") {
+    struct rx {
+        model m;
+        std::uint32_t id;
+        std::array<std::uint8_t, 5> data;
+        std::string_view sent;
+    };
+    const rx loop[] = {
+        {model::pk1000, 0x195, {0x04, 0, 0, 0, 0x2A}, "215#0000000004000000"},
+        {model::pkp2400, 0x195, {0x04, 0, 0, 0, 0x2A}, "215#0004000000000000"},
+        {model::pk1000, 0x195, {0x01, 0x02, 0, 0, 0x2B}, "215#0000000001020000"},  // keys 1, 10
+        {model::pkp2200, 0x195, {0x08, 0, 0, 0, 0x01}, "215#8000000000000000"},   // key 4
+        {model::pkp2600, 0x195, {0x00, 0x08, 0, 0, 0x01}, "215#0000800000000000"},  // key 12
+        {model::pk1000, 0x195, {0, 0, 0, 0, 0x2C}, "215#0000000000000000"},  // released: all off
+    };
+    for (const auto& r : loop) {
+        CAPTURE(r.sent);
+        const auto sent = firmware_step(r.m, r.id, r.data);
+        REQUIRE(sent.has_value());
+        CHECK(format_candump(*sent).view() == r.sent);
+    }
+    // A frame that is no key state gives no LED frame.
+    const std::array<std::uint8_t, 1> boot{0x00};
+    CHECK(firmware_step(model::pk1000, 0x715, boot) == errc::unexpected_frame);
+    // Another node's key state is refused.
+    CHECK(firmware_step(model::pk1000, 0x196, key3_pressed) == errc::wrong_id);
+}
