@@ -1,18 +1,18 @@
 // The invariants every decoder keeps on untrusted frames, checked over a systematic sweep of
-// frames near the manual's examples (shared by tests/test_invariants.cpp, which runs it under
+// frames near the manuals' examples (shared by tests/test_invariants.cpp, which runs it under
 // ASan with the bytes past the dlc poisoned, and tests/freestanding/invariants.cpp, which runs it
 // with operator new trapping):
-//  - a refusal carries one of the listed codes (powerkey::all_errc);
-//  - what decodes re-encodes to the same frame and decodes again to the same value.
-// The sweep: every manual row (both profiles, the core rows), each with every byte in turn set to
+//  - a refusal carries one of the listed codes (enum_values<errc>());
+//  - what decodes re-encodes to the same frame, and that frame decodes again to the same message:
+//    for every decoded message, encode gives back a frame that decodes to that message.
+// The decoders: the CiA 301 and J1939 ones, and decode(frame, node, model) for every model of the
+// table. The sweep: every row of every frame table (tests/decoder_rows.hpp, pk1000_rows.hpp,
+// pkp_rows.hpp: manual rows, refused rows, foreign frames), each with every byte in turn set to
 // each of a few dozen telling values (command specifiers, bounds, all ones), with every dlc from
 // 0 to 8, on every COB-ID function of the keypad and of another node, and as a 29-bit frame.
 #ifndef POWERKEY_TESTS_TEST_INVARIANTS_HPP
 #define POWERKEY_TESTS_TEST_INVARIANTS_HPP
 
-#include <powerkey/decoder.hpp>
-#include <powerkey/pk1000/profile.hpp>
-#include <powerkey/pkp/profile.hpp>
 #include <powerkey/powerkey.hpp>
 
 #include "decoder_rows.hpp"
@@ -22,21 +22,24 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 namespace invariants {
 
 using namespace powerkey;
 
 // Byte values that reach the decoders' branches: SDO command specifiers with their toggle, size
-// and flag bits, NMT commands and states, range bounds, all ones.
+// and flag bits, NMT commands and states, command-module codes, range bounds, all ones.
 inline constexpr std::uint8_t telling_bytes[] = {
-    0x00, 0x01, 0x02, 0x03, 0x04, 0x05, 0x07, 0x08, 0x0A, 0x0B, 0x0F, 0x10, 0x11,
-    0x13, 0x14, 0x15, 0x16, 0x18, 0x1C, 0x20, 0x21, 0x22, 0x23, 0x27, 0x2B, 0x2F,
-    0x3F, 0x40, 0x41, 0x42, 0x43, 0x47, 0x4B, 0x4F, 0x60, 0x61, 0x62, 0x63, 0x65,
-    0x70, 0x7E, 0x7F, 0x80, 0x81, 0x82, 0xA0, 0xC0, 0xEF, 0xF0, 0xFE, 0xFF};
+    0x00, 0x01, 0x02, 0x03, 0x04, 0x05, 0x07, 0x08, 0x09, 0x0A, 0x0B, 0x0F, 0x10,
+    0x11, 0x12, 0x13, 0x14, 0x15, 0x16, 0x18, 0x1C, 0x20, 0x21, 0x22, 0x23, 0x27,
+    0x2B, 0x2F, 0x3F, 0x40, 0x41, 0x42, 0x43, 0x47, 0x4B, 0x4F, 0x50, 0x60, 0x61,
+    0x62, 0x63, 0x65, 0x70, 0x7A, 0x7D, 0x7E, 0x7F, 0x80, 0x81, 0x82, 0xA0, 0xC0,
+    0xEF, 0xF0, 0xFE, 0xFF};
 
-inline constexpr std::uint16_t function_bases[] = {0x000, 0x080, 0x180, 0x200, 0x300, 0x400,
-                                                   0x500, 0x580, 0x600, 0x700, 0x280, 0x380};
+inline constexpr std::uint16_t function_bases[] = {0x000, 0x080, 0x180, 0x200, 0x300,
+                                                   0x400, 0x500, 0x580, 0x600, 0x700,
+                                                   0x280, 0x380, 0x480};
 
 // The first decoder that broke an invariant, and how; empty when all held.
 struct violation {
@@ -48,7 +51,7 @@ struct violation {
 };
 
 inline constexpr bool listed(errc e) noexcept {
-    for (errc c : all_errc)
+    for (errc c : enum_values<errc>())
         if (c == e) return true;
     return false;
 }
@@ -64,9 +67,10 @@ constexpr violation check(std::string_view name, const can::frame& f, Decode dec
     }();
     if (!d) return listed(d.error()) ? violation{} : violation{name, "an unlisted errc", 0};
     const result<can::frame> e = encode(*d);
-    if (!e || !(*e == f)) return {name, "does not re-encode to the same frame", 0};
+    if (!e) return {name, "encode refuses a decoded message", 0};
+    if (!(*e == f)) return {name, "does not re-encode to the same frame", 0};
     const auto again = decode(*e);
-    if (!again || !(*again == *d)) return {name, "does not decode again to the same value", 0};
+    if (!again || !(*again == *d)) return {name, "does not decode again to the same message", 0};
     return {{}, {}, 1};
 }
 
@@ -103,18 +107,11 @@ constexpr violation check_all(const can::frame& f, canopen::node_id node) noexce
         "j1939::decode_switch_to_canopen", f,
         [](const can::frame& x) { return j1939::decode_switch_to_canopen(x); },
         [&](const auto& m) { return frame_of(j1939::encode(m)); }));
-    run(check<Guard>(
-        "pk1000::decode", f, [node](const can::frame& x) { return pk1000::decode(x, node); },
-        [&](const auto& m) { return frame_of(pk1000::encode(node, m)); }));
-    for (pkp::model m : {pkp::model::pkp2200, pkp::model::pkp2400, pkp::model::pkp2600})
-        run(check<Guard>(
-            "pkp::decode", f, [node, m](const can::frame& x) { return pkp::decode(x, node, m); },
-            [&](const auto& msg) { return pkp::encode(node, m, msg); }));
-    for (model m : {model::pk1000, model::pkp2200, model::pkp2400, model::pkp2600})
+    for (const model m : enum_values<model>())
         run(check<Guard>(
             "powerkey::decode", f,
             [node, m](const can::frame& x) { return powerkey::decode(x, node, m); },
-            [&](const auto& msg) { return powerkey::encode(node, m, msg); }));
+            [&](const message& msg) { return powerkey::encode(node, m, msg); }));
     v.accepted = accepted;
     return v;
 }
@@ -158,18 +155,38 @@ constexpr void sweep_around(const can::frame& base, canopen::node_id node, Visit
     }
 }
 
-// The sweep around every manual row of both profiles and the core.
+// The node a row's frame is sent to: its `node` (a number or a node_id), else the default.
+template <class Row>
+constexpr canopen::node_id node_of_row(const Row& r) noexcept {
+    if constexpr (requires { r.node; }) {
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(r.node)>, canopen::node_id>)
+            return r.node;
+        else
+            return canopen::node_id::make(r.node).value_or(canopen::default_node_id);
+    } else {
+        return canopen::default_node_id;
+    }
+}
+
+// The sweep around every row of a table whose frame parses (an encode_error_row may have none).
+template <class Row, std::size_t N, class Visit>
+constexpr void sweep_table(const Row (&rows)[N], Visit& visit) {
+    for (const auto& r : rows)
+        if (const auto f = can::parse_candump(r.frame)) sweep_around(*f, node_of_row(r), visit);
+}
+
+// The sweep around every row of every frame table.
 template <class Visit>
 void sweep(Visit&& visit) {
-    for (const auto& r : pk1000_rows::rows)
-        sweep_around(can::parse_candump(r.frame).value(), r.node, visit);
-    for (const auto& r : pk1000_rows::bad_rows)
-        sweep_around(can::parse_candump(r.frame).value(), r.node, visit);
-    for (const auto& r : pkp_rows::rows)
-        sweep_around(can::parse_candump(r.frame).value(), canopen::node_id::make(r.node).value(),
-                     visit);
-    for (const auto& r : decoder_rows::core_rows)
-        sweep_around(can::parse_candump(r.frame).value(), canopen::default_node_id, visit);
+    sweep_table(decoder_rows::core_rows, visit);
+    sweep_table(decoder_rows::core_error_rows, visit);
+    sweep_table(decoder_rows::foreign_rows, visit);
+    sweep_table(pk1000_rows::rows, visit);
+    sweep_table(pk1000_rows::error_rows, visit);
+    sweep_table(pk1000_rows::encode_error_rows, visit);
+    sweep_table(pkp_rows::rows, visit);
+    sweep_table(pkp_rows::error_rows, visit);
+    sweep_table(pkp_rows::encode_error_rows, visit);
 }
 
 // A guard that does nothing, where the bytes past the dlc cannot be poisoned.
