@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Prints the object vocabulary of docs/models.md as a Markdown table, read from the headers
 # (include/powerkey/keypad/objects.hpp): every object, its value kind, and for each dictionary the row's
-# address, size, access, range and default. Regenerate the table after changing the rows:
+# address, size, access, range and default. The columns are the dictionaries enum_values<dictionary>()
+# names; an object of none of them is left out. Regenerate the table after changing the rows:
 #   bash scripts/object_table.sh > /tmp/objects.md    (then paste it into docs/models.md)
 # An argument names another include directory (e.g. a `git archive` of a commit's include/).
 set -euo pipefail
@@ -61,6 +62,9 @@ int main() {
     for (std::size_t i = 0; i < enum_values<dictionary>().size(); ++i) std::printf("---|");
     std::printf("\n");
     for (const auto o : enum_values<object>()) {
+        bool anywhere = false;  // objects of no dictionary listed here (yet) are left out
+        for (const auto d : enum_values<dictionary>()) anywhere = anywhere || find_row(d, o);
+        if (!anywhere) continue;
         const auto k = kind_of(o);
         std::string kind(to_string(k.kind));
         if (k.kind == value_kind::led_plane) kind += " (" + std::string(to_string(k.holds)) + ")";
