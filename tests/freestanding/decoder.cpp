@@ -1,13 +1,12 @@
-// Freestanding checks of the any-frame decoder, the session follower and the description writer:
-// no exceptions, no RTTI, no heap.
+// Freestanding checks of the keypad decoder on the core rows, the session follower and the
+// description writer: no exceptions, no RTTI, no heap.
 #include <powerkey/can/candump.hpp>
-#include <powerkey/decoder.hpp>
 #include <powerkey/describe.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/session.hpp>
 
 #include "../decoder_rows.hpp"
-#include "../pk1000_rows.hpp"
-#include "../pkp_rows.hpp"
 #include "check.hpp"
 
 #include <array>
@@ -19,25 +18,30 @@ bool decoder() {
     bool ok = true;
     auto expect = [&ok](bool b) { ok = ok && b; };
     std::array<char, 160> buf{};
-    for (const auto& r : pk1000_rows::rows) {
+    for (const auto& r : decoder_rows::core_rows) {
+        expect(decoder_rows::round_trips(r));
+        const auto node = decoder_rows::node_of(r.node);
+        expect(describe(r.expected, node, buf).has_value());
+    }
+    for (const auto& r : decoder_rows::core_error_rows) expect(decoder_rows::refused(r));
+    for (const auto& r : decoder_rows::foreign_rows) {
         const auto f = can::parse_candump(r.frame).value();
-        const auto d = decode(f, r.node, model::pk1000);
-        expect(d.has_value() && encode(r.node, model::pk1000, *d) == result<can::frame>(f));
-        expect(d.has_value() && describe(*d, r.node, buf).has_value());
+        expect(canopen::classify(f) == r.cls);
+        for (const model m : enum_values<model>())
+            expect(decode(f, canopen::default_node_id, m) == r.error);
     }
-    for (model m : {model::pkp2200, model::pkp2400, model::pkp2600}) {
-        for (const auto& r : pkp_rows::rows) {
-            if (!pkp_rows::applies(r.models, *pkp_model(m))) continue;
-            const auto node = canopen::node_id::make(r.node).value();
-            const auto f = can::parse_candump(r.frame).value();
-            const auto d = decode(f, node, m);
-            expect(d.has_value() && encode(node, m, *d) == result<can::frame>(f));
-            expect(d.has_value() && describe(*d, node, buf).has_value());
-        }
-    }
-    for (const auto& r : decoder_rows::foreign_rows)
-        expect(decode(can::parse_candump(r.frame).value(), canopen::default_node_id,
-                      model::pk1000) == r.error);
+    // The firmware loop: key 3 pressed lights key 3 green.
+    const std::uint8_t rx[5] = {0x04, 0x00, 0x00, 0x00, 0x2A};
+    const auto f = can::make_frame(0x195, {rx, 5});
+    expect(f.has_value());
+    if (!f) return false;
+    const auto msg = decode(*f, canopen::default_node_id, model::pkp2400);
+    const auto keys = msg ? pressed_keys(*msg) : std::nullopt;
+    expect(keys.has_value() && keys->contains(3));
+    leds map;
+    map.set(3, colour::green);
+    expect(encode(canopen::default_node_id, model::pkp2400, led_on{map}) ==
+           result<can::frame>(can::candump("215#0004000000000000")));
     return ok;
 }
 

@@ -1,35 +1,26 @@
-// Freestanding check of the PKP profile: every manual row decodes and re-encodes, and every
-// refused frame is refused, with no exceptions, no RTTI and no heap.
+// Freestanding check of the PKP rows: every manual row decodes and re-encodes for every model it
+// applies to, every refused frame is refused, and every message encode must refuse is refused,
+// with no exceptions, no RTTI and no heap.
 #include <powerkey/powerkey.hpp>
 
 #include "../pkp_rows.hpp"
 #include "check.hpp"
 
+#include <array>
+
 namespace {
 using namespace powerkey;
 
 bool pkp_rows_both_ways() {
+    bool ok = true;
+    std::array<char, 160> buf{};
     for (const auto& r : pkp_rows::rows) {
-        const auto f = can::parse_candump(r.frame);
-        if (!f) return false;
-        const auto node = canopen::node_id::make(r.node).value();
-        for (pkp::model m : pkp::all_models) {
-            if (!pkp_rows::applies(r.models, m)) continue;
-            const auto d = pkp::decode(*f, node, m);
-            if (!d || *d != r.expected) return false;
-            const auto e = pkp::encode(node, m, *d);
-            if (!e || *e != *f) return false;
-        }
+        ok = ok && decoder_rows::round_trips(r);
+        ok = ok && describe(r.expected, decoder_rows::node_of(r.node), buf).has_value();
     }
-    for (const auto& r : pkp_rows::error_rows) {
-        const auto f = can::parse_candump(r.frame);
-        if (!f) return false;
-        for (pkp::model m : pkp::all_models)
-            if (pkp_rows::applies(r.models, m) &&
-                pkp::decode(*f, canopen::default_node_id, m) != r.error)
-                return false;
-    }
-    return true;
+    for (const auto& r : pkp_rows::error_rows) ok = ok && decoder_rows::refused(r);
+    for (const auto& r : pkp_rows::encode_error_rows) ok = ok && decoder_rows::encode_refused(r);
+    return ok;
 }
 const freestanding::registration reg("pkp", pkp_rows_both_ways);
 }  // namespace
