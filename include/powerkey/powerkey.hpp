@@ -12,6 +12,9 @@
 #include <powerkey/session.hpp>
 #include <powerkey/version.hpp>
 
+#include <powerkey/behaviour/checker.hpp>
+#include <powerkey/behaviour/controller.hpp>
+#include <powerkey/behaviour/key_modes.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
 
 #include <powerkey/can/candump.hpp>

@@ -70,7 +70,9 @@ struct problem {
 struct checker_config {
     model keypad_model = model::pk1000;
     canopen::node_id node = canopen::default_node_id;
-    duration_ms sdo_timeout{1000};  // a request unanswered for longer is sdo_no_reply
+    // A request unanswered this long is sdo_no_reply, and a request after it is no overlap. The
+    // keypads answer within a few ms; 200 ms is below the controller's 300 ms retry.
+    duration_ms sdo_timeout{200};
     // Silence allowed beyond a configured period, in percent of it (50: 1.5 periods).
     std::uint32_t tolerance_percent = 50;
     // Periods in force before the log starts (0: not known; the log's own writes set them).
@@ -84,7 +86,9 @@ public:
     static constexpr std::size_t max_problems_per_frame = 4;
 
     constexpr explicit checker(const checker_config& c) noexcept
-        : cfg_(c), session_(c.keypad_model, c.node), hb_period_(c.heartbeat_period.value),
+        : cfg_(c),
+          session_(c.keypad_model, c.node),
+          hb_period_(c.heartbeat_period.value),
           ks_period_(c.key_state_period.value) {}
 
     // One frame of the log, received at `t`, from input line `line`: the problems it shows.
@@ -134,12 +138,13 @@ private:
     }
 
     constexpr std::uint32_t allowed(std::uint32_t period) const noexcept {
-        return period + static_cast<std::uint32_t>(std::uint64_t{period} * cfg_.tolerance_percent / 100);
+        return period +
+               static_cast<std::uint32_t>(std::uint64_t{period} * cfg_.tolerance_percent / 100);
     }
 
     // Deadlines that passed before this frame.
     constexpr void timers() noexcept {
-        if (pending_ && elapsed(pending_->sent, now_).value > cfg_.sdo_timeout.value) {
+        if (pending_ && elapsed(pending_->sent, now_).value >= cfg_.sdo_timeout.value) {
             report(pending_->line, problem_kind::sdo_no_reply, pending_->address.index,
                    pending_->address.subindex, elapsed(pending_->sent, now_).value);
             pending_.reset();
@@ -173,7 +178,8 @@ private:
             case canopen::function::nmt: to_old = f.size() == 2 && f[1] == o; break;
             default: break;
         }
-        if (to_old) report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
+        if (to_old)
+            report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
     constexpr void on_request(const can::frame& f, const session_event& e) noexcept {
@@ -260,7 +266,9 @@ private:
             switch (n->command) {
                 case canopen::nmt_command::start: set_state(canopen::nmt_state::operational); break;
                 case canopen::nmt_command::stop:
-                case canopen::nmt_command::legacy_stop: set_state(canopen::nmt_state::stopped); break;
+                case canopen::nmt_command::legacy_stop:
+                    set_state(canopen::nmt_state::stopped);
+                    break;
                 case canopen::nmt_command::enter_pre_operational:
                 case canopen::nmt_command::reset_node:
                 case canopen::nmt_command::reset_communication:

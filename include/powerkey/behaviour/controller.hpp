@@ -71,8 +71,8 @@ enum class start_mode : std::uint8_t {
 struct controller_config {
     model keypad_model = model::pk1000;  // used unless 100Bh names another model
     canopen::node_id node = canopen::default_node_id;
-    bool any_node = false;       // adopt the first boot-up of any node instead of `node`'s
-    bool identify = true;        // read 100Bh and take the model it reports
+    bool any_node = false;  // adopt the first boot-up of any node instead of `node`'s
+    bool identify = true;   // read 100Bh and take the model it reports
     start_mode start = start_mode::nmt_start;
     // Read and written in order, one request at a time, after the keypad is found and again after
     // each reboot: sdo_read, sdo_write or command messages (others are skipped). Caller-owned.
@@ -90,55 +90,58 @@ struct controller_config {
 
 // What the controller tells the application.
 enum class event_kind : std::uint8_t {
-    found,            // the keypad answered: `node`
-    ready,            // set up and started: `node`, the model in `model`
-    rebooted,         // a boot-up while it was set up; the setup runs again
-    lost,             // silent for longer than lost_after: go to a safe state
-    node_changed,     // it moved to `node`
-    sdo_done,         // a configuration entry was done (`step`, `object`; `value` of a read)
-    sdo_aborted,      // the keypad aborted it: `value` is the CiA 301 abort code
-    sdo_timed_out,    // no reply after the retries
-    sdo_refused,      // the entry cannot be sent to this model: `value` is the errc
-    key_pressed,      // `key`
-    key_released,     // `key`
-    key_long_press,   // `key`, held for long_press
-    key_repeat,       // `key`, held: repeat_delay, then every repeat_period
+    found,           // the keypad answered: `node`
+    ready,           // set up and started: `node`, the model in `model`
+    rebooted,        // a boot-up while it was set up; the setup runs again
+    lost,            // silent for longer than lost_after: go to a safe state
+    node_changed,    // it moved to `node`
+    sdo_done,        // a configuration entry was done (`step`, `object`; `value` of a read)
+    sdo_aborted,     // the keypad aborted it: `value` is the CiA 301 abort code
+    sdo_timed_out,   // no reply after the retries
+    sdo_refused,     // the entry cannot be sent to this model: `value` is the errc
+    key_pressed,     // `key`
+    key_released,    // `key`
+    key_long_press,  // `key`, held for long_press
+    key_repeat,      // `key`, held: repeat_delay, then every repeat_period
 };
 
 // Which request an SDO event is about: an entry of the configuration list, or the controller's own.
 enum class sdo_origin : std::uint8_t {
-    configuration,   // configuration[step]
-    identify,        // the 100Bh read
-    heartbeat,       // the 1017h write
-    start,           // active on startup
-    shadow,          // LED brightness or backlight (PKP: no PDO for them)
-    node_change,     // change_node()
+    configuration,  // configuration[step]
+    identify,       // the 100Bh read
+    heartbeat,      // the 1017h write
+    start,          // active on startup
+    shadow,         // LED brightness or backlight (PKP: no PDO for them)
+    node_change,    // change_node()
 };
 
 struct controller_event {
     event_kind kind = event_kind::found;
-    std::uint8_t key = 0;        // key events: 1..the model's keys
+    std::uint8_t key = 0;  // key events: 1..the model's keys
     canopen::node_id node = canopen::default_node_id;
     sdo_origin origin = sdo_origin::configuration;
     std::uint8_t step = 0;       // configuration index (origin configuration)
     object what = object::keys;  // SDO events: the object
     std::uint32_t value = 0;     // sdo_done: the value read (little endian); sdo_aborted: the code
-    friend constexpr bool operator==(const controller_event&, const controller_event&) noexcept =
-        default;
+    friend constexpr bool operator==(const controller_event&,
+                                     const controller_event&) noexcept = default;
 };
 
 enum class controller_state : std::uint8_t {
-    searching,    // waiting for a boot-up or heartbeat (probing the SDO server)
-    setting_up,   // identifying and configuring, one SDO request at a time
-    running,      // started; the shadow is kept and key events flow
+    searching,   // waiting for a boot-up or heartbeat (probing the SDO server)
+    setting_up,  // identifying and configuring, one SDO request at a time
+    running,     // started; the shadow is kept and key events flow
 };
 
 template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = 16>
 class controller {
 public:
     constexpr explicit controller(const controller_config& c) noexcept
-        : cfg_(c), model_(c.keypad_model), info_(info(c.keypad_model).value_or(model_info{})),
-          node_(c.node), upload_(c.node) {}
+        : cfg_(c),
+          model_(c.keypad_model),
+          info_(info(c.keypad_model).value_or(model_info{})),
+          node_(c.node),
+          upload_(c.node) {}
 
     // --- driving it -------------------------------------------------------------------------
 
@@ -154,7 +157,9 @@ public:
         run();
     }
     // The next frame to send, oldest first.
-    [[nodiscard]] constexpr std::optional<can::frame> next_frame() noexcept { return outbox_.pop(); }
+    [[nodiscard]] constexpr std::optional<can::frame> next_frame() noexcept {
+        return outbox_.pop();
+    }
     [[nodiscard]] constexpr frame_queue<OutboxCapacity>& outbox() noexcept { return outbox_; }
     // The next event, oldest first.
     [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
@@ -171,7 +176,7 @@ public:
 
     // LED k (1..the model's LEDs) in colour c, steady or blinking; false for an LED it lacks.
     constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
-        if (k < 1 || k > info_.leds) return false;
+        if (k < 1 || k > info_.leds || ((info_.led_mask >> (k - 1)) & 1u) == 0) return false;
         leds on = on_, bl = blink_;
         on.set(k, blink ? colour::off : c);
         bl.set(k, blink ? c : colour::off);
@@ -192,17 +197,14 @@ public:
     }
     // The backlight level, and its colour (keep: leave the keypad's colour).
     constexpr void set_backlight(level l, backlight_colour c = backlight_colour::keep) noexcept {
-        if (!has_backlight_ || !(l == backlight_level_) || c != backlight_colour_)
-            dirty_ |= dirty_backlight;
-        backlight_level_sent_ = false;  // PKP: the level write, then the colour command
+        if (!has_backlight_ || !(l == backlight_level_)) dirty_ |= dirty_level;
+        if (!has_backlight_ || c != backlight_colour_) dirty_ |= dirty_colour;
         has_backlight_ = true;
         backlight_level_ = l;
         backlight_colour_ = c;
     }
     // Move the keypad to node id n (PK1000 2013h, PKP command 70h), after the requests before it.
-    constexpr void change_node(canopen::node_id n) noexcept {
-        pending_node_change_ = n;
-    }
+    constexpr void change_node(canopen::node_id n) noexcept { pending_node_change_ = n; }
 
     // --- what it knows ----------------------------------------------------------------------
 
@@ -225,7 +227,7 @@ private:
     // Setup steps before the configuration list, in order.
     enum setup_step : std::uint8_t { setup_identify, setup_heartbeat, setup_active, setup_list };
     static constexpr std::uint8_t dirty_on = 1, dirty_blink = 2, dirty_brightness = 4,
-                                  dirty_backlight = 8, dirty_all = 15;
+                                  dirty_level = 8, dirty_colour = 16, dirty_all = 31;
 
     struct sdo_job {
         message request;
@@ -440,8 +442,8 @@ private:
             }
             if (cfg_.repeat_delay.value != 0 && reached(next_repeat_[k - 1], now_)) {
                 emit_key(event_kind::key_repeat, k);
-                const duration_ms p = cfg_.repeat_period.value != 0 ? cfg_.repeat_period
-                                                                    : cfg_.repeat_delay;
+                const duration_ms p =
+                    cfg_.repeat_period.value != 0 ? cfg_.repeat_period : cfg_.repeat_delay;
                 next_repeat_[k - 1] = next_repeat_[k - 1] + p;
                 if (reached(next_repeat_[k - 1], now_)) next_repeat_[k - 1] = now_ + p;
             }
@@ -463,18 +465,17 @@ private:
             job_.reset();
             next_probe_ = now_;
         }
-        switch (state_) {
-            case controller_state::searching: probe(); break;
-            case controller_state::setting_up:
-                sdo_timer();
-                if (!job_) next_setup_job();
-                break;
-            case controller_state::running:
-                sdo_timer();
-                if (!job_) next_running_job();
-                send_shadow();
-                key_timers();
-                break;
+        if (state_ == controller_state::searching) probe();
+        if (state_ == controller_state::setting_up) {
+            sdo_timer();
+            if (!job_) next_setup_job();
+        }
+        // Not `else`: the setup may have just finished, and the picture goes out at once.
+        if (state_ == controller_state::running) {
+            sdo_timer();
+            if (!job_) next_running_job();
+            send_shadow();
+            key_timers();
         }
     }
 
@@ -502,8 +503,10 @@ private:
 
     constexpr void finish_job(bool /*ok*/) noexcept {
         job_.reset();
-        if (state_ == controller_state::setting_up) next_setup_job();
-        else if (state_ == controller_state::running) next_running_job();
+        if (state_ == controller_state::setting_up)
+            next_setup_job();
+        else if (state_ == controller_state::running)
+            next_running_job();
     }
 
     constexpr void next_setup_job() noexcept {
@@ -549,7 +552,8 @@ private:
 
     constexpr void start_keypad() noexcept {
         const auto target = canopen::nmt_target::make(node_.value()).value();
-        if (send_frame(canopen::encode(canopen::nmt_message{canopen::nmt_command::start, target}))) {
+        if (send_frame(
+                canopen::encode(canopen::nmt_message{canopen::nmt_command::start, target}))) {
             keypad_state_ = canopen::nmt_state::operational;
             dirty_ = dirty_all;  // a started keypad shows what it was last sent, or its defaults
         }
@@ -572,32 +576,61 @@ private:
                 return;
             }
         }
-        if (info_.brightness_pdo) return;  // PK1000: RPDO3 and RPDO4, sent by send_shadow
-        if ((dirty_ & dirty_brightness) != 0) {
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
-            if (has_brightness_ &&
-                begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
-                          sdo_origin::shadow, 0))
-                return;
+        // The shadow values this model takes by SDO only (no RPDO3/RPDO4 for them).
+        if (take(dirty_brightness, !info_.brightness_pdo && has_brightness_)) {
+            if (find_row(info_.dictionary, object::led_brightness)) {
+                if (begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
+                              sdo_origin::shadow, 0))
+                    return;
+            } else if (has_commands()) {
+                command c;
+                c.code = command_code::set_led_brightness;
+                c.level = brightness_;
+                if (begin_job(c, sdo_origin::shadow, 0)) return;
+            }
         }
-        if ((dirty_ & dirty_backlight) != 0) {
-            if (!has_backlight_) {
-                dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
-            } else if (!backlight_level_sent_) {
-                backlight_level_sent_ = true;
+        if (take(dirty_level, !info_.backlight_pdo && has_backlight_)) {
+            if (find_row(info_.dictionary, object::backlight_level)) {
                 if (begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
                               sdo_origin::shadow, 0))
                     return;
+            } else if (has_commands()) {
+                command c;
+                c.code = command_code::set_backlight_level;
+                c.level = backlight_level_;
+                if (begin_job(c, sdo_origin::shadow, 0)) return;
             }
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
-            backlight_level_sent_ = false;
-            if (backlight_colour_ != backlight_colour::keep) {
+        }
+        if (take(dirty_colour, !colour_by_pdo() && has_backlight_ &&
+                                   backlight_colour_ != backlight_colour::keep)) {
+            if (find_row(info_.dictionary, object::backlight_colour)) {
+                if (begin_job(sdo_write{object::backlight_colour, colour_value(backlight_colour_)},
+                              sdo_origin::shadow, 0))
+                    return;
+            } else if (has_commands()) {
                 command c;
                 c.code = command_code::set_backlight_colour;
                 c.colour = backlight_colour_;
                 if (begin_job(c, sdo_origin::shadow, 0)) return;
             }
         }
+    }
+
+    // Clears dirty bit `bit` when `mine` (the SDO path owns it) or there is nothing to send.
+    constexpr bool take(std::uint8_t bit, bool mine) noexcept {
+        if ((dirty_ & bit) == 0) return false;
+        const bool pdo_owned = (bit == dirty_brightness && info_.brightness_pdo) ||
+                               (bit == dirty_level && info_.backlight_pdo) ||
+                               (bit == dirty_colour && colour_by_pdo());
+        if (pdo_owned) return false;  // send_shadow's
+        dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
+        return mine;
+    }
+    constexpr bool has_commands() const noexcept {
+        return find_row(info_.dictionary, object::command_module).has_value();
+    }
+    constexpr bool colour_by_pdo() const noexcept {
+        return info_.backlight_pdo && info_.backlight_colour;
     }
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
@@ -654,13 +687,16 @@ private:
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_on);
         if ((dirty_ & dirty_blink) != 0 && send_message(led_blink{blink_}))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_blink);
-        if (!info_.brightness_pdo) return;
-        if ((dirty_ & dirty_brightness) != 0 &&
+        if (info_.brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
             (!has_brightness_ || send_message(led_brightness{brightness_})))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
-        if ((dirty_ & dirty_backlight) != 0 &&
-            (!has_backlight_ || send_message(backlight{backlight_level_, backlight_colour_})))
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_backlight);
+        const std::uint8_t pdo_bits =
+            static_cast<std::uint8_t>(dirty_level | (colour_by_pdo() ? dirty_colour : 0));
+        if (info_.backlight_pdo && (dirty_ & pdo_bits) != 0 &&
+            (!has_backlight_ ||
+             send_message(backlight{backlight_level_,
+                                    colour_by_pdo() ? backlight_colour_ : backlight_colour::keep})))
+            dirty_ = static_cast<std::uint8_t>(dirty_ & ~pdo_bits);
     }
 
     constexpr bool send_message(const message& m) noexcept {
@@ -702,7 +738,6 @@ private:
     backlight_colour backlight_colour_ = backlight_colour::keep;
     bool has_brightness_ = false;
     bool has_backlight_ = false;
-    bool backlight_level_sent_ = false;
     std::uint8_t dirty_ = dirty_all;
 
     // Keys.
@@ -744,18 +779,20 @@ template <>
 struct powerkey::enum_names<powerkey::behaviour::sdo_origin> {
     using o = behaviour::sdo_origin;
     static constexpr enum_name_entry<o> entries[] = {
-        {o::configuration, "configuration"}, {o::identify, "identify"},
-        {o::heartbeat, "heartbeat"},         {o::start, "start"},
-        {o::shadow, "shadow"},               {o::node_change, "node_change"},
+        {o::configuration, "configuration"},
+        {o::identify, "identify"},
+        {o::heartbeat, "heartbeat"},
+        {o::start, "start"},
+        {o::shadow, "shadow"},
+        {o::node_change, "node_change"},
     };
 };
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::controller_state> {
     using s = behaviour::controller_state;
-    static constexpr enum_name_entry<s> entries[] = {{s::searching, "searching"},
-                                                     {s::setting_up, "setting_up"},
-                                                     {s::running, "running"}};
+    static constexpr enum_name_entry<s> entries[] = {
+        {s::searching, "searching"}, {s::setting_up, "setting_up"}, {s::running, "running"}};
 };
 
 template <>

@@ -32,8 +32,8 @@ enum class key_mode : std::uint8_t {
 struct key_mode_change {
     std::uint8_t key = 0;
     std::uint8_t state = 0;
-    friend constexpr bool operator==(const key_mode_change&, const key_mode_change&) noexcept =
-        default;
+    friend constexpr bool operator==(const key_mode_change&,
+                                     const key_mode_change&) noexcept = default;
 };
 
 template <std::size_t Keys = key_set::max>
