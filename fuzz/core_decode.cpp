@@ -82,9 +82,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     POWERKEY_FUZZ_CHECK_FRAME(accepted <= 1, f);
 
-    // Identifiers: classification is consistent with cob_id, and every 29-bit identifier is a
-    // J1939 identifier that rebuilds to itself.
+    // Identifiers: classification is consistent with cob_id, every 29-bit identifier is classified
+    // j1939 and is a J1939 identifier that rebuilds to itself; concerns() agrees with the node.
+    POWERKEY_FUZZ_CHECK_FRAME(
+        canopen::concerns(info, node) ==
+            (info.fn == canopen::function::nmt || info.fn == canopen::function::sync ||
+             info.fn == canopen::function::j1939 ||
+             (info.fn != canopen::function::other && info.node == node.value())),
+        f);
     if (const auto sid = f.std_id()) {
+        POWERKEY_FUZZ_CHECK_FRAME(info.fn != canopen::function::j1939, f);
         if (info.fn != canopen::function::nmt && info.fn != canopen::function::sync &&
             info.fn != canopen::function::other) {
             const auto n = canopen::node_id::make(info.node);
@@ -92,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         POWERKEY_FUZZ_CHECK_FRAME(!j1939::parse_id(f).has_value(), f);
     } else {
-        POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::other, f);
+        POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::j1939 && info.node == 0, f);
         const auto id = j1939::parse_id(f);
         POWERKEY_FUZZ_CHECK_FRAME(id.has_value(), f);
         const auto rebuilt = j1939::make_id(*id);

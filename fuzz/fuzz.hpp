@@ -1,6 +1,6 @@
 // Shared pieces of the fuzz targets: reading values out of the fuzzer's bytes, the binary form of
 // a frame in corpus files, a check that aborts with the offending frame, ASan poisoning of the
-// bytes past a frame's dlc, and a generic filler for the `fields` convention of message structs.
+// bytes past a frame's dlc, and a filler that builds any message from raw field values.
 // Not part of the library: this may use the heap and stdio.
 #ifndef POWERKEY_FUZZ_FUZZ_HPP
 #define POWERKEY_FUZZ_FUZZ_HPP
@@ -13,7 +13,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <span>
 #include <string_view>
 #include <type_traits>
@@ -182,7 +181,14 @@ struct alignas(8) aligned_frame {
     can::frame f;
 };
 
-// --- filling message fields from the input ------------------------------------------------------
+// --- filling messages from the input -----------------------------------------------------------
+//
+// Every field gets an arbitrary raw value, not only a valid one (issue 10: the encoders must
+// refuse what their decoder could never return, so the fuzzer must be able to ask for it):
+// enums get any value of their underlying type (static_cast<baud_rate>(0xFA)), LED and key sets
+// any bits, an object_value any {raw, map, size}, a command any code and any member values.
+// Only what the types themselves cannot hold is out of reach: a bounded<> (node id, level, ...)
+// is always in its range, so it is drawn from its range.
 
 template <class T>
 struct is_std_array : std::false_type {};
@@ -202,46 +208,26 @@ concept bounded_like = requires {
     T::make(typename T::rep{});
 };
 
-template <class E>
-bool is_named(E e) {
-    const std::string_view name = to_string(e);
-    return !name.empty() && name != "unknown";
-}
+void fill_value(input& in, leds& l);
+void fill_value(input& in, object_value& v);
+void fill_value(input& in, command& c);
+void fill_value(input& in, sdo_read& m);
+void fill_value(input& in, sdo_write_reply& m);
+void fill_value(input& in, sdo_read_reply& m);
+void fill_value(input& in, sdo_write& m);
+void fill_value(input& in, led_on& m);
+void fill_value(input& in, led_blink& m);
 
-// Every named value of an enum with a one- or two-byte underlying type, found once by asking
-// to_string about every value, as the command-line tool does.
-template <class E>
-const std::vector<E>& named_values() {
-    static const std::vector<E> values = [] {
-        using U = std::underlying_type_t<E>;
-        std::vector<E> v;
-        for (std::uint32_t raw = 0; raw <= std::numeric_limits<U>::max(); ++raw)
-            if (is_named(static_cast<E>(raw))) v.push_back(static_cast<E>(raw));
-        return v;
-    }();
-    return values;
-}
-
-// One field of the allowed kinds (see the message convention) from the input. Bounded values and
-// enums are drawn from their valid values only, so every message built is in range. Returns
-// false when the input names no valid value (a four-byte enum value without a name).
 template <class T>
-bool fill_field(input& in, T& v) {
+void fill_value(input& in, T& v) {
     if constexpr (std::is_same_v<T, bool>) {
         v = (in.u8() & 1) != 0;
     } else if constexpr (std::is_integral_v<T>) {
         v = in.integer<T>();
     } else if constexpr (std::is_enum_v<T>) {
+        // Any raw value, named or not.
         using U = std::underlying_type_t<T>;
-        if constexpr (sizeof(U) <= 2) {
-            const auto& values = named_values<T>();
-            if (values.empty()) return false;
-            v = values[in.integer<std::uint16_t>() % values.size()];
-        } else {
-            const auto e = static_cast<T>(in.integer<U>());
-            if (!is_named(e)) return false;
-            v = e;
-        }
+        v = static_cast<T>(in.integer<U>());
     } else if constexpr (bounded_like<T>) {
         using R = typename T::rep;
         const std::uint64_t span = std::uint64_t{T::max} - T::min + 1;
@@ -250,20 +236,67 @@ bool fill_field(input& in, T& v) {
     } else if constexpr (is_std_array<T>::value) {
         for (auto& b : v) b = in.u8();
     } else if constexpr (is_index_set<T>::value) {
+        // Any bits the set can hold (a PK1000 has 28 LEDs a plane, a PKP-2400 8, the set 32).
         v = T::from_mask(in.integer<std::uint64_t>());
+    } else if constexpr (requires { T::fields(v, [](std::string_view, auto&) {}); }) {
+        T::fields(v, [&in](std::string_view, auto& field) { fill_value(in, field); });
     } else {
-        static_assert(!sizeof(T), "a field type outside the message convention");
+        static_assert(!sizeof(T), "a field type the fuzzer cannot fill");
     }
-    return true;
 }
 
-// Every field of a message struct, through its `fields` list.
-template <class M>
-bool fill_message(input& in, M& m) {
-    bool ok = true;
-    M::fields(m, [&](std::string_view, auto& field) { ok = fill_field(in, field) && ok; });
-    return ok;
+inline void fill_value(input& in, leds& l) {
+    fill_value(in, l.red);
+    fill_value(in, l.green);
+    fill_value(in, l.blue);
 }
+
+// A flags byte says which parts are arbitrary; the others stay zero, so that a value valid for
+// its object (raw only, or map only) is one bit away and the accepting paths are reached too.
+inline void fill_value(input& in, object_value& v) {
+    const std::uint8_t flags = in.u8();
+    v = {};
+    if ((flags & 1) != 0) v.raw = in.integer<std::uint32_t>();
+    if ((flags & 2) != 0) fill_value(in, v.map);
+    if ((flags & 4) != 0) v.size = in.u8();
+}
+
+// Any command byte. With flag bit 0 only the members the command's row names are filled (the
+// others keep their defaults, as encode requires); with it set, every member.
+inline void fill_value(input& in, command& c) {
+    const std::uint8_t flags = in.u8();
+    c = command{};
+    c.code = static_cast<command_code>(in.u8());
+    if ((flags & 1) == 0) {
+        command::fields(c, [&in](std::string_view name, auto& field) {
+            if (name != "command") fill_value(in, field);
+        });
+        return;
+    }
+    fill_value(in, c.key);
+    fill_value(in, c.state);
+    fill_value(in, c.level);
+    fill_value(in, c.colour);
+    fill_value(in, c.enabled);
+    fill_value(in, c.baud);
+    fill_value(in, c.period_10ms);
+    fill_value(in, c.node_id);
+    fill_value(in, c.show);
+}
+
+// The SDO messages of the flat message type: the object (any byte) and the value, raw.
+inline void fill_value(input& in, sdo_read& m) { fill_value(in, m.object); }
+inline void fill_value(input& in, sdo_write_reply& m) { fill_value(in, m.object); }
+inline void fill_value(input& in, sdo_read_reply& m) {
+    fill_value(in, m.object);
+    fill_value(in, m.value);
+}
+inline void fill_value(input& in, sdo_write& m) {
+    fill_value(in, m.object);
+    fill_value(in, m.value);
+}
+inline void fill_value(input& in, led_on& m) { fill_value(in, m.map); }
+inline void fill_value(input& in, led_blink& m) { fill_value(in, m.map); }
 
 template <class T>
 struct is_variant : std::false_type {};
@@ -279,21 +312,109 @@ V variant_alternative_at(std::size_t index) {
     return V{std::in_place_index<I>};
 }
 
-// A message, or a variant of messages (nested variants too: the any-frame decoder's message is a
-// variant of the profiles' variants): one input byte picks each alternative, the rest fill it.
+// A message: one input byte picks the alternative, the rest fill it.
 template <class M>
-bool fill_any(input& in, M& m) {
+void fill_any(input& in, M& m) {
     if constexpr (is_variant<M>::value) {
         m = variant_alternative_at<M>(in.u8() % std::variant_size_v<M>);
-        return std::visit([&](auto& alt) { return fill_any(in, alt); }, m);
+        std::visit([&](auto& alt) { fill_any(in, alt); }, m);
     } else {
-        return fill_message(in, m);
+        fill_value(in, m);
     }
 }
 
-// Is the error one of the listed codes?
+// --- the inverse, for the seed writer ------------------------------------------------------------
+// put_any(out, m) writes the bytes that fill_any reads back as m, so that the encoder's seeds are
+// the manual's messages themselves.
+
+template <class T>
+void put_integer(std::vector<std::uint8_t>& out, T v, std::size_t bytes = sizeof(T)) {
+    for (std::size_t i = 0; i < bytes; ++i)
+        out.push_back(static_cast<std::uint8_t>(static_cast<std::uint64_t>(v) >> (8 * i)));
+}
+
+void put_value(std::vector<std::uint8_t>& out, const leds& l);
+void put_value(std::vector<std::uint8_t>& out, const object_value& v);
+void put_value(std::vector<std::uint8_t>& out, const command& c);
+void put_value(std::vector<std::uint8_t>& out, const sdo_read& m);
+void put_value(std::vector<std::uint8_t>& out, const sdo_write_reply& m);
+void put_value(std::vector<std::uint8_t>& out, const sdo_read_reply& m);
+void put_value(std::vector<std::uint8_t>& out, const sdo_write& m);
+void put_value(std::vector<std::uint8_t>& out, const led_on& m);
+void put_value(std::vector<std::uint8_t>& out, const led_blink& m);
+
+template <class T>
+void put_value(std::vector<std::uint8_t>& out, const T& v) {
+    if constexpr (std::is_same_v<T, bool>) {
+        out.push_back(v ? 1 : 0);
+    } else if constexpr (std::is_integral_v<T>) {
+        put_integer(out, v);
+    } else if constexpr (std::is_enum_v<T>) {
+        put_integer(out, static_cast<std::underlying_type_t<T>>(v));
+    } else if constexpr (bounded_like<T>) {
+        put_integer(out, static_cast<typename T::rep>(v.value() - T::min));
+    } else if constexpr (is_std_array<T>::value) {
+        out.insert(out.end(), v.begin(), v.end());
+    } else if constexpr (is_index_set<T>::value) {
+        put_integer(out, v.mask(), 8);
+    } else {
+        T::fields(v, [&out](std::string_view, const auto& field) { put_value(out, field); });
+    }
+}
+
+inline void put_value(std::vector<std::uint8_t>& out, const leds& l) {
+    put_value(out, l.red);
+    put_value(out, l.green);
+    put_value(out, l.blue);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const object_value& v) {
+    out.push_back(7);
+    put_integer(out, v.raw);
+    put_value(out, v.map);
+    out.push_back(v.size);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const command& c) {
+    out.push_back(1);
+    put_value(out, c.code);
+    put_value(out, c.key);
+    put_value(out, c.state);
+    put_value(out, c.level);
+    put_value(out, c.colour);
+    put_value(out, c.enabled);
+    put_value(out, c.baud);
+    put_value(out, c.period_10ms);
+    put_value(out, c.node_id);
+    put_value(out, c.show);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const sdo_read& m) { put_value(out, m.object); }
+inline void put_value(std::vector<std::uint8_t>& out, const sdo_write_reply& m) {
+    put_value(out, m.object);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const sdo_read_reply& m) {
+    put_value(out, m.object);
+    put_value(out, m.value);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const sdo_write& m) {
+    put_value(out, m.object);
+    put_value(out, m.value);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const led_on& m) { put_value(out, m.map); }
+inline void put_value(std::vector<std::uint8_t>& out, const led_blink& m) { put_value(out, m.map); }
+
+template <class M>
+void put_any(std::vector<std::uint8_t>& out, const M& m) {
+    if constexpr (is_variant<M>::value) {
+        out.push_back(static_cast<std::uint8_t>(m.index()));
+        std::visit([&out](const auto& alt) { put_any(out, alt); }, m);
+    } else {
+        put_value(out, m);
+    }
+}
+
+// Is the error one of the listed codes (a named errc)?
 inline bool is_listed(errc e) {
-    return std::find(std::begin(all_errc), std::end(all_errc), e) != std::end(all_errc);
+    const auto all = enum_values<errc>();
+    return is_named(e) && std::find(all.begin(), all.end(), e) != all.end();
 }
 
 }  // namespace powerkey_fuzz

@@ -1,7 +1,10 @@
 // Writes the seed corpus of every fuzz target into the directory given, one file per seed:
 //   <dir>/<target>/<n>
 // The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
-// binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic.
+// binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic;
+// the encoder's seeds are the same frames decoded, written in the form fill_any reads (put_any).
+// The rows are tests/decoder_rows.hpp's types: every table (core, PK1000, PKP) seeds the decoder
+// for each model of its row, and the encode_error_rows seed the encoder with refused messages.
 #include "decoder_rows.hpp"
 #include "fuzz.hpp"
 #include "pk1000_rows.hpp"
@@ -10,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <type_traits>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -111,43 +115,55 @@ int main(int argc, char** argv) {
         w.add("sdo_upload", s);
     }
 
-    // The profiles' manual rows: for the profile decoders, the any-frame decoder (mode byte: model
-    // << 1, decode), the candump parser, and as bus logs for the session follower (each frame as
-    // an arbitrary frame: kind byte 0).
-    constexpr std::uint8_t pkp_models[] = {1, 2, 3};  // decoder.cpp's models[] index of each
-    std::vector<std::uint8_t> pk1000_log{0, node_byte(0x15)}, pkp_log{3, node_byte(0x15)};
+    // The manual rows, for the keypad decoder (model byte, node, frame) of every model the row
+    // applies to, the encoder (model byte, node, the row's message), the candump parser, and as
+    // bus logs for the session follower (model byte, node, then each frame as an arbitrary frame:
+    // kind byte 0).
+    std::vector<std::uint8_t> pk1000_log{0, node_byte(0x15)}, pkp_log{2, node_byte(0x15)};
     auto log_frame = [](std::vector<std::uint8_t>& log, const can::frame& f) {
         if (log.size() > 600) return;
         log.push_back(0);
         put_frame(log, f);
     };
-    for (const auto& r : pk1000_rows::rows) {
-        const auto f = can::parse_candump(r.frame).value();
-        w.add_text("candump", r.frame);
-        w.add("pk1000_decode", node_and_frame(node_byte(r.node.value()), f));
-        auto d = node_and_frame(node_byte(r.node.value()), f);
-        d.insert(d.begin(), std::uint8_t{0});
-        w.add("decoder", d);
-        log_frame(pk1000_log, f);
-    }
-    for (const auto& r : pk1000_rows::bad_rows) {
-        const auto f = can::parse_candump(r.frame).value();
-        w.add("pk1000_decode", node_and_frame(node_byte(r.node.value()), f));
-    }
-    for (const auto& r : pkp_rows::rows) {
-        const auto f = can::parse_candump(r.frame).value();
-        w.add_text("candump", r.frame);
-        for (std::uint8_t m = 0; m < 3; ++m) {
-            if (!pkp_rows::applies(r.models, static_cast<pkp::model>(m))) continue;
-            auto p = node_and_frame(node_byte(r.node), f);
-            p.insert(p.begin(), m);
-            w.add("pkp_decode", p);
-            auto d = node_and_frame(node_byte(r.node), f);
-            d.insert(d.begin(), static_cast<std::uint8_t>(pkp_models[m] << 1));
-            w.add("decoder", d);
+    auto for_models = [](std::uint16_t models, auto f) {
+        for (std::size_t i = 0; i < model_count; ++i)
+            if (decoder_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+    };
+    auto model_node = [](model m, unsigned node) {
+        return std::vector<std::uint8_t>{static_cast<std::uint8_t>(m), node_byte(node)};
+    };
+    auto add_frame = [&](std::string_view text, std::uint16_t models, unsigned node) {
+        const auto f = can::parse_candump(text).value();
+        w.add_text("candump", text);
+        for_models(models, [&](model m) {
+            auto d = model_node(m, node);
+            put_frame(d, f);
+            w.add("decode", d);
+        });
+        return f;
+    };
+    auto add_message = [&](std::uint16_t models, unsigned node, const message& msg) {
+        for_models(models, [&](model m) {
+            auto e = model_node(m, node);
+            put_any(e, msg);
+            w.add("encode", e);
+        });
+    };
+    auto add_table = [&](const auto& rows, std::vector<std::uint8_t>* log) {
+        for (const auto& r : rows) {
+            const auto f = add_frame(r.frame, r.models, r.node);
+            add_message(r.models, r.node, r.expected);
+            if (log != nullptr && r.node == 0x15) log_frame(*log, f);
         }
-        log_frame(pkp_log, f);
-    }
+    };
+    add_table(decoder_rows::core_rows, nullptr);
+    add_table(pk1000_rows::rows, &pk1000_log);
+    add_table(pkp_rows::rows, &pkp_log);
+    for (const auto& r : decoder_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : pk1000_rows::error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : pkp_rows::error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : pk1000_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
+    for (const auto& r : pkp_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
     for (const auto& r : decoder_rows::core_rows)
         w.add("core_decode", node_and_frame(node_byte(0x15), can::parse_candump(r.frame).value()));
     w.add("session", pk1000_log);
@@ -156,18 +172,15 @@ int main(int argc, char** argv) {
     // One seed per core message kind: the selector, a node, zero fields.
     for (std::uint8_t which = 0; which < 13; ++which)
         w.add("core_encode", {which, node_byte(0x15), 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
-    // The profile encoders: each message kind with zero fields (the fuzzer varies the rest).
-    const std::vector<std::uint8_t> zeros(24, 0);
-    for (std::size_t k = 0; k < std::variant_size_v<pk1000::message>; ++k) {
-        std::vector<std::uint8_t> v{node_byte(0x15), static_cast<std::uint8_t>(k)};
-        v.insert(v.end(), zeros.begin(), zeros.end());
-        w.add("pk1000_encode", v);
-    }
-    for (std::size_t k = 0; k < std::variant_size_v<pkp::message>; ++k) {
-        for (std::uint8_t m = 0; m < 3; ++m) {
-            std::vector<std::uint8_t> v{m, node_byte(0x15), static_cast<std::uint8_t>(k)};
+    // The keypad encoder: each message kind with zero fields for every model, and a value that
+    // is no model (the fuzzer varies the rest).
+    const std::vector<std::uint8_t> zeros(40, 0);
+    for (std::size_t k = 0; k < std::variant_size_v<message>; ++k) {
+        for (std::size_t m = 0; m <= model_count; ++m) {
+            std::vector<std::uint8_t> v{static_cast<std::uint8_t>(m), node_byte(0x15),
+                                        static_cast<std::uint8_t>(k)};
             v.insert(v.end(), zeros.begin(), zeros.end());
-            w.add("pkp_encode", v);
+            w.add("encode", v);
         }
     }
     return 0;

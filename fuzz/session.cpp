@@ -2,16 +2,14 @@
 // Properties: no crash and no read past any frame's dlc; each event's decoding is exactly the
 // any-frame decoder's for the node the event names; the followed node id and protocol change
 // only with an event that says so; the upload text never exceeds its capacity.
-#include "profile.hpp"
+#include "fuzz.hpp"
 
-#include <powerkey/decoder.hpp>
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/session.hpp>
 
 namespace {
 using namespace powerkey;
 using namespace powerkey_fuzz;
-
-constexpr model models[] = {model::pk1000, model::pkp2200, model::pkp2400, model::pkp2600};
 
 // Most frames are SDO traffic of the followed node, where the state lives; one in four is an
 // arbitrary frame.
@@ -28,7 +26,7 @@ can::frame take_bus_frame(input& in, canopen::node_id node) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     input in(data, size);
-    const model m = models[in.u8() % std::size(models)];
+    const auto m = static_cast<model>(in.u8() % model_count);
     session<16> s(m, take_node(in));
     for (int i = 0; i < 64 && !in.empty(); ++i) {
         aligned_frame held{take_bus_frame(in, s.node())};

@@ -1,0 +1,34 @@
+// The keypad decoder powerkey::decode(frame, node, model) on arbitrary frames, for every model of
+// the model table (and, one input in five, a value that is no model). Properties: no crash, no
+// read past the dlc, every refusal a listed errc, decode -> encode -> decode a fixed point; and
+// the accessors never answer for a frame that decodes to nothing.
+#include "properties.hpp"
+
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace powerkey;
+    using namespace powerkey_fuzz;
+    input in(data, size);
+    // model_count + 1 choices: the last is a value outside the enum (decode refuses it).
+    const auto m = static_cast<model>(in.u8() % (model_count + 1));
+    const canopen::node_id node = take_node(in);
+    const can::frame f = take_frame(in);
+    const bool decoded = decode_fixed_point(
+        f, [&](const can::frame& x) { return decode(x, node, m); },
+        [&](const message& msg) { return encode(node, m, msg); });
+    if (!info(m)) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
+    if (decoded) {
+        // The accessors read the decoded message without touching anything else.
+        const auto msg = *decode(f, node, m);
+        (void)pressed_keys(msg);
+        (void)led_on_map(msg);
+        (void)led_blink_map(msg);
+        (void)brightness(msg);
+        (void)backlight_of(msg);
+        (void)node_id_change(msg);
+        (void)nmt_state_of(msg);
+    }
+    return 0;
+}
