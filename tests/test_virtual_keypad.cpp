@@ -16,6 +16,17 @@
 #include <string_view>
 #include <vector>
 
+namespace doctest {
+template <>
+struct StringMaker<std::vector<std::string>> {
+    static String convert(const std::vector<std::string>& v) {
+        std::string s = "{";
+        for (const auto& x : v) s += (s.size() > 1 ? ", \"" : "\"") + x + "\"";
+        return (s + "}").c_str();
+    }
+};
+}  // namespace doctest
+
 using namespace powerkey;
 using behaviour::millis;
 using behaviour::duration_ms;
@@ -338,8 +349,6 @@ std::string ask(virtual_keypad<N>& k, std::string_view request, millis t = {10})
     return f ? text_of(*f) : std::string("nothing");
 }
 
-std::string frame_text(std::string_view s) { return text_of(frame_of(s)); }
-
 }  // namespace
 
 // --- the manuals' transcripts -------------------------------------------------------------------
@@ -350,3 +359,336 @@ TEST_CASE("It answers like the manuals") {
     SUBCASE("PKP-2400") { report(model::pkp2400, run_transcript(pkp_rows::rows, model::pkp2400)); }
     SUBCASE("PKP-2600") { report(model::pkp2600, run_transcript(pkp_rows::rows, model::pkp2600)); }
 }
+
+// --- one test per behaviour ------------------------------------------------------------------------
+
+using strings = std::vector<std::string>;
+
+TEST_CASE("boot-up: into pre-operational, or operational when 2012h says so; none when 2011h = 0") {
+    virtual_keypad<> k(model::pk1000);
+    CHECK(k.state() == run_state::off);
+    k.power_on(millis{0});
+    CHECK(k.state() == run_state::pre_operational);
+    CHECK(text_of(*k.transmit()) == "715#00");
+    CHECK_FALSE(k.transmit());
+    CHECK(ask(k, "615#2F12200001000000") == "595#6012200000000000");  // active on start-up
+    CHECK(ask(k, "615#2F11200000000000", {20}) == "595#6011200000000000");  // no boot-up
+    k.power_cycle(millis{100});
+    CHECK(k.state() == run_state::operational);
+    CHECK_FALSE(k.transmit());
+    // PKP: commands 10h and 13h
+    auto p = booted(model::pkp2400);
+    CHECK(ask(p, "615#2300650110010000") == "595#6000650100000000");
+    CHECK(ask(p, "615#2300650113000000", {20}) == "595#6000650100000000");
+    p.power_cycle(millis{100});
+    CHECK(p.state() == run_state::operational);
+    CHECK_FALSE(p.transmit());
+}
+
+TEST_CASE("NMT: start, stop, legacy stop, pre-operational, reset node, reset communication") {
+    for (const auto m : {model::pk1000, model::pkp2200, model::pkp2400, model::pkp2600}) {
+        CAPTURE(m);
+        auto k = booted(m);
+        k.receive(frame_of("000#0116"), millis{1});  // another node
+        CHECK(k.state() == run_state::pre_operational);
+        k.receive(frame_of("000#0115"), millis{2});
+        CHECK(k.state() == run_state::operational);
+        k.receive(frame_of("000#0200"), millis{3});  // all nodes
+        CHECK(k.state() == run_state::stopped);
+        CHECK(ask(k, "615#4017100000000000", {4}) == "nothing");  // no SDO when stopped
+        k.receive(frame_of("000#8015"), millis{10});
+        CHECK(k.state() == run_state::pre_operational);
+        k.receive(frame_of("000#0115"), millis{11});
+        k.receive(frame_of("000#0015"), millis{12});  // 00h: stop, old software (section 7)
+        CHECK(k.state() == run_state::stopped);
+        // reset node: boots again, keeping the stored settings (the heartbeat time here)
+        CHECK(ask(k, "000#8015", {20}) == "nothing");
+        CHECK(ask(k, "615#2B17100064000000", {30}) == "595#6017100000000000");
+        k.receive(frame_of("000#8115"), millis{40});
+        CHECK(text_of(*k.transmit()) == "715#00");
+        CHECK(k.state() == run_state::pre_operational);
+        CHECK(run_until(k, millis{41}, millis{140}) == strings{"140 715#7F"});
+        k.receive(frame_of("000#8215"), millis{150});  // reset communication
+        CHECK(text_of(*k.transmit()) == "715#00");
+    }
+}
+
+TEST_CASE("heartbeat producer: every heartbeat_time ms, the NMT state; 0 stops it") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2B17100064000000", {10}) == "595#6017100000000000");
+    CHECK(run_until(k, millis{12}, millis{310}) == strings{"110 715#7F", "210 715#7F", "310 715#7F"});
+    k.receive(frame_of("000#0115"), millis{350});
+    CHECK(run_until(k, millis{351}, millis{410}) == strings{"410 715#05"});
+    k.receive(frame_of("000#0215"), millis{420});
+    CHECK(run_until(k, millis{421}, millis{510}) == strings{"510 715#04"});
+    k.receive(frame_of("000#8015"), millis{520});
+    CHECK(ask(k, "615#2B17100000000000", {530}) == "595#6017100000000000");
+    CHECK(run_until(k, millis{532}, millis{2000}).empty());
+}
+
+TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-operational") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2316100164000100") == "595#6016100100000000");  // 100 ms from node 1
+    k.receive(frame_of("000#0115"), millis{20});
+    k.receive(frame_of("215#0100000001000000"), millis{21});
+    k.receive(frame_of("515#2003000000000000"), millis{22});
+    CHECK(k.led_on().red.contains(1));
+    CHECK(k.backlight().level == powerkey::level{0x20});
+    // not monitored before the first heartbeat
+    k.advance(millis{500});
+    CHECK(k.state() == run_state::operational);
+    k.receive(frame_of("701#05"), millis{600});
+    k.receive(frame_of("701#05"), millis{690});
+    k.advance(millis{789});
+    CHECK(k.state() == run_state::operational);
+    k.advance(millis{790});
+    CHECK(k.state() == run_state::pre_operational);
+    CHECK(k.led_on() == leds{});
+    CHECK(k.backlight().level == powerkey::level{0});
+    // the producer comes back: the keypad stays pre-operational until a new NMT start
+    k.receive(frame_of("701#05"), millis{800});
+    CHECK(k.state() == run_state::pre_operational);
+    k.receive(frame_of("000#0115"), millis{810});
+    CHECK(k.state() == run_state::operational);
+}
+
+TEST_CASE("key-state TPDO: on change when operational, with the 100 ms tick timer") {
+    auto k = booted(model::pk1000);
+    CHECK(k.press(1, millis{10}));
+    CHECK_FALSE(k.transmit());  // PDOs only when operational (section 11)
+    k.receive(frame_of("000#0115"), millis{20});
+    CHECK(k.press(4, millis{250}));
+    CHECK(text_of(*k.transmit()) == "195#0900000002");  // keys 1 and 4, tick 2
+    CHECK(k.release(1, millis{1000}));
+    CHECK(text_of(*k.transmit()) == "195#080000000A");
+    CHECK_FALSE(k.press(11, millis{1001}));  // the PK1000 has 10 keys
+    CHECK(k.press(10, millis{1100}));
+    CHECK(text_of(*k.transmit()) == "195#080200000B");
+    CHECK(k.tick(millis{25'700}) == 1);  // wraps after 25.6 s
+}
+
+TEST_CASE("event timer (1800h/5) and PKP command 12h: the key state periodically") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2B00180532000000") == "595#6000180500000000");  // 50 ms
+    k.receive(frame_of("000#0115"), millis{100});
+    CHECK(run_until(k, millis{100}, millis{200}) ==
+          strings{"150 195#0000000001", "200 195#0000000002"});
+    k.press(2, millis{220});  // an event restarts the timer
+    CHECK(run_until(k, millis{220}, millis{270}) ==
+          strings{"220 195#0200000002", "270 195#0200000002"});
+    auto p = booted(model::pkp2400);
+    CHECK(ask(p, "615#2300650112013200") == "595#6000650100000000");  // on, 50 x 10 ms
+    CHECK(ask(p, "615#4000180500000000", {20}) == "595#4B001805F4010000");
+    p.receive(frame_of("000#0115"), millis{100});
+    CHECK(run_until(p, millis{100}, millis{1100}) ==
+          strings{"600 195#0000000006", "1100 195#000000000B"});
+}
+
+TEST_CASE("SYNC: RPDOs of types 00h..F0h wait for the next SYNC, the TPDO every n-th SYNC") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2F00140201000000") == "595#6000140200000000");
+    CHECK(ask(k, "615#2F00180202000000", {20}) == "595#6000180200000000");  // every 2nd SYNC
+    k.receive(frame_of("000#0115"), millis{30});
+    k.receive(frame_of("215#0000000001000000"), millis{40});  // green 1, buffered
+    CHECK(k.led_on() == leds{});
+    k.receive(frame_of("315#0100000000000000"), millis{41});  // blink: type FEh, at once
+    CHECK(k.led_blink().red.contains(1));
+    k.press(3, millis{45});
+    CHECK_FALSE(k.transmit());  // synchronous: no event
+    k.receive(frame_of("080#"), millis{50});
+    CHECK(k.led_on().green.contains(1));
+    CHECK_FALSE(k.transmit());
+    k.receive(frame_of("080#"), millis{60});
+    CHECK(text_of(*k.transmit()) == "195#0400000000");
+    k.receive(frame_of("080#"), millis{70});
+    CHECK_FALSE(k.transmit());
+}
+
+TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command module") {
+    auto k = booted(model::pk1000);
+    CHECK(k.brightness() == powerkey::level{0x3F});
+    CHECK(k.backlight() == behaviour::backlight_state{0, backlight_colour::amber});
+    k.receive(frame_of("215#0500000000200000"), millis{1});
+    CHECK(k.led_on() == leds{});  // pre-operational: PDOs ignored
+    k.receive(frame_of("000#0115"), millis{2});
+    k.receive(frame_of("215#0500000000200000"), millis{3});
+    CHECK(k.led_on() == leds{{1, 3}, {14}, {}});
+    k.receive(frame_of("415#0800000000000000"), millis{4});
+    CHECK(k.brightness() == powerkey::level{8});
+    k.receive(frame_of("515#2003000000000000"), millis{5});
+    CHECK(k.backlight() == behaviour::backlight_state{0x20, backlight_colour::blue});
+    k.receive(frame_of("515#1000000000000000"), millis{6});  // colour 0: keep
+    CHECK(k.backlight() == behaviour::backlight_state{0x10, backlight_colour::blue});
+    CHECK(ask(k, "615#2302200200008000", {10}) == "595#6002200200000000");
+    CHECK(k.led_blink().green.contains(24));
+    CHECK(ask(k, "615#4001200100000000", {20}) == "595#4301200105000000");
+    CHECK(ask(k, "615#2F03200305000000", {30}) == "595#6003200300000000");
+    CHECK(k.backlight().colour == backlight_colour::cyan);
+
+    auto p = booted(model::pkp2600);
+    CHECK(ask(p, "615#23006501010C0900") == "595#6000650100000000");  // 12 blue alternate
+    CHECK(p.led_on().blue.contains(12));
+    CHECK(p.led_blink().blue.contains(12));
+    CHECK(ask(p, "615#2300650101020500", {20}) == "595#6000650100000000");  // 2 green blink
+    CHECK(p.led_blink().green.contains(2));
+    CHECK_FALSE(p.led_on().green.contains(2));
+    CHECK(ask(p, "615#2300650102100000", {30}) == "595#6000650100000000");
+    CHECK(p.brightness() == powerkey::level{0x10});
+    CHECK(ask(p, "615#23006501032F0000", {40}) == "595#6000650100000000");
+    CHECK(ask(p, "615#2300650104010000", {50}) == "595#6000650100000000");
+    CHECK(p.backlight() == behaviour::backlight_state{0x2F, backlight_colour::red});
+    CHECK(ask(p, "615#4001620200000000", {60}) == "595#4F0162022F000000");
+    p.receive(frame_of("000#0115"), millis{70});
+    p.receive(frame_of("215#0000000001000000"), millis{71});  // blue 9 (stride 12)
+    CHECK(p.led_on() == leds{{}, {}, {9}});
+}
+
+TEST_CASE("SDO aborts with the CiA 301 codes") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#4004200000000000") == "595#8004200000000206");  // no object
+    CHECK(ask(k, "615#4001200300000000", {20}) == "595#8001200311000906");  // no sub-index
+    CHECK(ask(k, "615#2B00200101000000", {30}) == "595#8000200102000106");  // read only
+    CHECK(ask(k, "615#2F03200140000000", {40}) == "595#8003200131000906");  // too high
+    CHECK(ask(k, "615#2B17100005000000", {50}) == "595#8017100032000906");  // too low
+    CHECK(ask(k, "615#2B03200109000000", {60}) == "595#8003200110000706");  // length
+    CHECK(ask(k, "615#4001100000000000", {70}) == "595#8001100000000206");  // 1001h (31)
+    CHECK(ask(k, "615#2311100161626364", {80}) == "595#8011100120000008");  // not "load"
+    CHECK(ask(k, "615#2301200100000010", {90}) == "595#8001200130000906");  // LED 29
+    CHECK(ask(k, "615#6000000000000000", {100}) == "595#8000000001000405");  // no upload
+    CHECK(ask(k, "615#4008100000000000", {110}) == "595#410810000B000000");
+    CHECK(ask(k, "615#7000000000000000", {120}) == "595#8008100000000305");  // toggle
+    auto p = booted(model::pkp2400);
+    CHECK(ask(p, "615#4000650100000000") == "595#8000650101000106");  // write only
+    CHECK(ask(p, "615#2300650101090100", {20}) == "595#8000650130000906");  // key 9 of 8
+    CHECK(ask(p, "615#2BFF200101000000", {30}) == "595#80FF200100000206");  // no J1939
+}
+
+TEST_CASE("one SDO at a time: a request while the keypad is answering is dropped (option)") {
+    auto k = booted(model::pk1000);
+    k.receive(frame_of("615#4010200000000000"), millis{10});
+    k.receive(frame_of("615#4011200000000000"), millis{10});  // still answering: dropped
+    CHECK(run_until(k, millis{10}, millis{50}) == strings{"11 595#4F10200004000000"});
+    behaviour::keypad_options o;
+    o.drop_sdo_while_busy = false;
+    auto q = booted(model::pk1000, o);
+    q.receive(frame_of("615#4010200000000000"), millis{10});
+    q.receive(frame_of("615#4011200000000000"), millis{10});
+    CHECK(run_until(q, millis{10}, millis{50}) ==
+          strings{"11 595#4F11200001000000"});  // the later one replaces the earlier
+}
+
+TEST_CASE("node-id change: PK1000 answers from the new id, PKP from the old, then boots") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2F1320003A000000") == "5BA#6013200000000000");
+    CHECK(k.node() == canopen::node_id{0x3A});
+    CHECK(ask(k, "615#4013200000000000", {20}) == "nothing");
+    CHECK(ask(k, "63A#4013200000000000", {30}) == "5BA#4F1320003A000000");
+    k.power_cycle(millis{40});
+    CHECK(text_of(*k.transmit()) == "73A#00");
+
+    auto p = booted(model::pkp2200);
+    p.receive(frame_of("000#0115"), millis{5});
+    p.receive(frame_of("615#2300650170180000"), millis{10});
+    CHECK(run_until(p, millis{10}, millis{20}) == strings{"11 595#6000650100000000", "11 718#00"});
+    CHECK(p.node() == canopen::node_id{0x18});
+    CHECK(p.state() == run_state::pre_operational);
+    CHECK(ask(p, "618#4017100000000000", {30}) == "598#4B17100000000000");
+}
+
+TEST_CASE("baud rate: a stored setting, effective after a reset") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2F10200002000000") == "595#6010200000000000");
+    CHECK(k.baud() == baud_rate::kbit_125);
+    CHECK(ask(k, "615#4010200000000000", {20}) == "595#4F10200002000000");
+    k.receive(frame_of("000#8115"), millis{30});
+    CHECK(k.baud() == baud_rate::kbit_500);
+    auto p = booted(model::pkp2400);
+    CHECK(ask(p, "615#2300650111010000") == "595#6000650100000000");  // 250k
+    p.power_cycle(millis{20});
+    CHECK(p.baud() == baud_rate::kbit_250);
+}
+
+TEST_CASE("J1939: 20FFh/1 = 1 switches after the reply; 18EF2100h switches back") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2BFF200101000000") == "595#60FF200100000000");
+    CHECK(k.state() == run_state::j1939);
+    CHECK(ask(k, "615#4010200000000000", {20}) == "nothing");
+    k.power_cycle(millis{30});  // a stored setting
+    CHECK(k.state() == run_state::j1939);
+    CHECK_FALSE(k.transmit());
+    k.receive(frame_of("18EF2100#041B8000FFFFFFFF"), millis{40});
+    CHECK(k.state() == run_state::pre_operational);
+    CHECK(text_of(*k.transmit()) == "715#00");
+    CHECK(ask(k, "615#40FF200100000000", {50}) == "595#4BFF200100000000");
+}
+
+TEST_CASE("restore defaults: 1011h/1 \"load\", effective after the reset") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2F03200513000000") == "595#6003200500000000");
+    CHECK(ask(k, "615#2B17100064000000", {20}) == "595#6017100000000000");
+    CHECK(ask(k, "615#2F1320003A000000", {30}) == "5BA#6013200000000000");
+    CHECK(ask(k, "63A#231110016C6F6164", {40}) == "5BA#6011100100000000");
+    CHECK(ask(k, "63A#4003200500000000", {50}) == "5BA#4F03200513000000");  // not yet
+    k.receive(frame_of("000#813A"), millis{60});
+    CHECK(text_of(*k.transmit()) == "715#00");
+    CHECK(ask(k, "615#4003200500000000", {70}) == "595#4F0320053F000000");
+    CHECK(ask(k, "615#4017100000000000", {80}) == "595#4B17100000000000");
+}
+
+TEST_CASE("faults: power cycle, silence, lost frames") {
+    auto k = booted(model::pk1000);
+    CHECK(ask(k, "615#2B17100064000000") == "595#6017100000000000");
+    k.receive(frame_of("000#0115"), millis{20});
+    k.receive(frame_of("215#0100000000000000"), millis{21});
+    k.power_cycle(millis{50});  // reboots mid-session: LEDs off, pre-operational
+    CHECK(k.led_on() == leds{});
+    CHECK(k.state() == run_state::pre_operational);
+    CHECK(run_until(k, millis{50}, millis{150}) == strings{"50 715#00", "150 715#7F"});
+    k.silence(millis{151}, duration_ms{200});
+    CHECK(run_until(k, millis{151}, millis{450}) == strings{"450 715#7F"});
+    k.drop_transmitted(1);
+    CHECK(run_until(k, millis{451}, millis{650}) == strings{"650 715#7F"});
+    k.drop_received(1);
+    CHECK(ask(k, "615#4010200000000000", {660}) == "nothing");
+    CHECK(ask(k, "615#4010200000000000", {670}) == "595#4F10200004000000");
+    k.power_off();
+    CHECK(k.state() == run_state::off);
+    CHECK(run_until(k, millis{700}, millis{1000}).empty());
+}
+
+TEST_CASE("segmented uploads of the strings, per model") {
+    // after the last segment, a segment request is no transfer's: invalid command specifier
+    const auto read_string = [](model m, std::string_view request) {
+        auto k = booted(m);
+        strings out{ask(k, request)};
+        for (int i = 0; i < 4; ++i)
+            out.push_back(ask(k, i % 2 == 0 ? "615#6000000000000000" : "615#7000000000000000",
+                              millis{static_cast<std::uint32_t>(20 + 10 * i)}));
+        return out;
+    };
+    CHECK(read_string(model::pk1000, "615#4008100000000000") ==
+          strings{"595#410810000B000000", "595#00426C696E6B4D61", "595#1772696E65000000",
+                  "595#8000000001000405", "595#8000000001000405"});
+    CHECK(read_string(model::pkp2200, "615#400B100000000000") ==
+          strings{"595#410B100007000000", "595#00504B5532323030", "595#1D00000000000000",
+                  "595#8000000001000405", "595#8000000001000405"});
+    CHECK(behaviour::string_of(model::pk1000, object::software_version)->bytes == "V2.8");
+}
+
+namespace {
+// One session in a constant expression: boot, start, a key, an SDO read.
+constexpr bool scenario() {
+    virtual_keypad<8> k(model::pkp2400);
+    k.power_on(millis{0});
+    if (k.transmit() != frame_of("715#00")) return false;
+    k.receive(frame_of("000#0115"), millis{1});
+    k.press(3, millis{150});
+    if (k.transmit() != frame_of("195#0400000001")) return false;
+    k.receive(frame_of("615#4000600000000000"), millis{200});
+    k.advance(millis{201});
+    return k.transmit() == frame_of("595#4300600004000000") && !k.transmit();
+}
+static_assert(scenario());
+}  // namespace
+
+TEST_CASE("a whole session is a constant expression") { CHECK(scenario()); }

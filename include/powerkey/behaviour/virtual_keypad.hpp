@@ -221,10 +221,7 @@ public:
         // periodic key state: the event timer (PK1000 46 b) or PKP command 12h (PKP 13 f)
         const std::uint32_t period = periodic_ms();
         if (state_ == run_state::operational && period != 0) {
-            while (reached(next_periodic_, t)) {
-                send_keys(next_periodic_);
-                next_periodic_ = next_periodic_ + duration_ms{period};
-            }
+            while (reached(next_periodic_, t)) send_keys(next_periodic_);  // reschedules
         }
     }
 
@@ -306,9 +303,12 @@ private:
         for (const auto& r : rows_of(info_.dictionary)) value_[idx(r.id)] = r.initial;
         value_[idx(object::node_id)] = canopen::default_node_id.value();
         if (info_.dictionary == dictionary::pkp_li) {
-            // PKP 32: the key and LED counts of the model
+            // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
+            // (4 keys x RGB), 6 external LEDs; the other models by the same rule (inferred),
+            // with no external LEDs.
             value_[idx(object::total_keys)] = info_.keys;
-            value_[idx(object::total_leds)] = info_.leds;
+            value_[idx(object::total_leds)] = std::uint32_t{info_.leds} * info_.planes;
+            value_[idx(object::external_leds)] = model_ == model::pkp2200 ? 6u : 0u;
             value_[idx(object::tpdo1_event_timer)] = 0;  // PKP 3: periodic transmission off
         }
     }
