@@ -1,0 +1,268 @@
+// The bus-log checker (behaviour/checker.hpp): each problem kind from a small log, a clean log
+// with none, and the explanations. A log row is (time in ms, frame); its line is its position
+// from 1. The controller's own sessions against the virtual keypad are checked in
+// test_controller.cpp.
+#include "support.hpp"
+
+#include <powerkey/behaviour/checker.hpp>
+#include <powerkey/names.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+using namespace powerkey;
+using namespace powerkey::behaviour;
+
+namespace {
+
+struct entry {
+    std::uint32_t ms;
+    std::string_view frame;
+};
+
+struct case_row {
+    std::string_view name;
+    model m;
+    std::vector<entry> log;
+    std::vector<problem> expected;
+};
+
+std::vector<problem> check(model m, const std::vector<entry>& log, checker_config cfg = {}) {
+    cfg.keypad_model = m;
+    checker<> c(cfg);
+    std::vector<problem> out;
+    std::uint32_t line = 0;
+    std::uint32_t last = 0;
+    for (const auto& e : log) {
+        const auto f = can::parse_candump(e.frame);
+        REQUIRE(f.has_value());
+        for (const auto& p : c.step(*f, millis{e.ms}, ++line)) out.push_back(p);
+        last = e.ms;
+    }
+    for (const auto& p : c.finish(millis{last})) out.push_back(p);
+    return out;
+}
+
+std::string text_of(const problem& p) {
+    std::array<char, 160> buf{};
+    const auto t = explain(p, buf);
+    REQUIRE(t.has_value());
+    return std::string(to_string(p.kind)) + " line " + std::to_string(p.line) + ": " +
+           std::string(*t);
+}
+
+std::string text_of(const std::vector<problem>& ps) {
+    std::string s;
+    for (const auto& p : ps) s += text_of(p) + "\n";
+    return s;
+}
+
+using pk = problem_kind;
+
+}  // namespace
+
+TEST_CASE("checker: one small log per problem kind") {
+    const case_row rows[] = {
+        {"an SDO request while another is outstanding (the keypad drops it)",
+         model::pk1000,
+         {{0, "715#00"},
+          {10, "615#2F14200002000000"},
+          {11, "615#4011200000000000"},
+          {12, "595#6014200000000000"}},
+         {{3, pk::sdo_overlap, {2, 0x2014, 0}}}},
+        {"a request never answered",
+         model::pk1000,
+         {{0, "715#00"}, {10, "615#4011200000000000"}, {500, "715#7F"}},
+         {{2, pk::sdo_no_reply, {0x2011, 0, 490}}}},
+        {"a request never answered, at the end of the log",
+         model::pkp2400,
+         {{0, "715#00"},
+          {10, "615#4001620100000000"},
+          {400, "715#7F"},
+          {410, "615#4001620200000000"}},
+         {{2, pk::sdo_no_reply, {0x6201, 1, 390}}}},
+        {"an abort with its CiA 301 meaning",
+         model::pk1000,
+         {{0, "715#00"}, {10, "615#4001100000000000"}, {11, "595#8001100000000206"}},
+         {{3, pk::sdo_abort, {0x0602'0000, 0x1001, 0}}}},
+        {"LEDs sent to a keypad that was never started",
+         model::pkp2400,
+         {{0, "715#00"}, {10, "215#0100000000000000"}, {20, "315#0100000000000000"}},
+         {{2, pk::pdo_not_operational, {0x215, 0x7F, 0}}}},
+        {"LEDs sent after a reboot without a new NMT start",
+         model::pk1000,
+         {{0, "715#00"},
+          {5, "000#0115"},
+          {10, "215#0100000000000000"},
+          {900, "715#00"},
+          {910, "215#0100000000000000"}},
+         {{5, pk::pdo_not_operational, {0x215, 0x7F, 0}}}},
+        {"heartbeat silence longer than 1017h allows",
+         model::pk1000,
+         {{0, "615#2B17100064000000"},
+          {1, "595#6017100000000000"},
+          {100, "715#7F"},
+          {200, "715#7F"},
+          {400, "000#0115"}},
+         {{5, pk::heartbeat_silence, {200, 100, 4}}}},
+        {"key-state silence longer than the event timer allows",
+         model::pk1000,
+         {{0, "615#2B00180532000000"},
+          {1, "595#6000180500000000"},
+          {2, "000#0115"},
+          {100, "195#0000000001"},
+          {150, "195#0000000001"},
+          {300, "215#0000000000000000"}},
+         {{6, pk::key_state_silence, {150, 50, 5}}}},
+        {"key-state silence, PKP periodic transmission (command 12h)",
+         model::pkp2400,
+         {{0, "615#2300650112010A00"},
+          {1, "595#6000650100000000"},
+          {2, "000#0115"},
+          {100, "195#0000000001"},
+          {300, "215#0000000000000000"}},
+         {{5, pk::key_state_silence, {200, 100, 4}}}},
+        {"traffic to the old node id after a node-id change (PK1000 23)",
+         model::pk1000,
+         {{0, "615#2F1320003A000000"}, {1, "5BA#6013200000000000"}, {10, "615#4013200000000000"}},
+         {{3, pk::old_node_traffic, {0x615, 0x15, 0x3A}}}},
+        {"traffic to the old node id after a node-id change (PKP 13 h)",
+         model::pkp2400,
+         {{0, "615#2300650170180000"},
+          {1, "595#6000650100000000"},
+          {2, "718#00"},
+          {10, "000#0118"},
+          {20, "215#0100000000000000"}},
+         {{5, pk::old_node_traffic, {0x215, 0x15, 0x18}}}},
+        {"a segment request with the wrong toggle bit",
+         model::pk1000,
+         {{0, "615#400B100000000000"},
+          {1, "595#410B100007000000"},
+          {2, "615#7000000000000000"},
+          {3, "595#11504B3130303000"}},
+         {{3, pk::segment_toggle, {0, 1, 0}}}},
+        {"a segment response with the wrong toggle bit",
+         model::pk1000,
+         {{0, "615#400B100000000000"},
+          {1, "595#410B100007000000"},
+          {2, "615#6000000000000000"},
+          {3, "595#11504B3130303000"}},
+         {{4, pk::segment_toggle, {0, 1, 1}}}},
+        {"a segmented upload shorter than announced",
+         model::pk1000,
+         {{0, "615#400B100000000000"},
+          {1, "595#410B100009000000"},
+          {2, "615#6000000000000000"},
+          {3, "595#01504B3130303000"}},
+         {{4, pk::segment_size, {9, 7, 0x100B}}}},
+    };
+    for (const auto& r : rows) {
+        INFO(std::string(r.name));
+        const auto got = check(r.m, r.log);
+        CHECK_MESSAGE(got == r.expected, text_of(got));
+    }
+}
+
+TEST_CASE("checker: every problem kind has a test row and a name") {
+    for (const auto k : enum_values<problem_kind>()) CHECK(!to_string(k).empty());
+    CHECK(enum_values<problem_kind>().size() == 9);
+}
+
+TEST_CASE("checker: a clean controller session has no problem") {
+    // A PK1000 at 15h: boot-up, the model read (PK1000 35), the heartbeat (29), the start (4),
+    // the LEDs (12, 13), heartbeats and key states, a brightness PDO (14).
+    const std::vector<entry> clean = {
+        {0, "715#00"},
+        {2, "615#400B100000000000"},
+        {3, "595#410B100007000000"},
+        {4, "615#6000000000000000"},
+        {5, "595#01504B3130303000"},
+        {6, "615#2B17100064000000"},
+        {7, "595#6017100000000000"},
+        {8, "000#0115"},
+        {9, "215#0000000000000000"},
+        {10, "315#0000000000000000"},
+        {106, "715#05"},
+        {206, "715#05"},
+        {250, "195#0100000002"},
+        {251, "215#0100000000000000"},
+        {306, "715#05"},
+        {380, "195#0000000003"},
+        {381, "215#0000000000000000"},
+        {382, "415#1000000000000000"},
+        {406, "715#05"},
+        {506, "715#05"},
+    };
+    const auto got = check(model::pk1000, clean);
+    CHECK_MESSAGE(got.empty(), text_of(got));
+}
+
+TEST_CASE("checker: the keypads' string padding is not a size error (E-CORE-2, E-CORE-5)") {
+    // PKP 22 as the manual prints it: 7 bytes announced, "PKU2400" and a NUL sent.
+    const std::vector<entry> log = {{0, "615#400B100000000000"}, {1, "595#410B100007000000"},
+                                    {2, "615#6000000000000000"}, {3, "595#00504B5532343030"},
+                                    {4, "615#7000000000000000"}, {5, "595#1D00000000000000"}};
+    const auto got = check(model::pkp2400, log);
+    CHECK_MESSAGE(got.empty(), text_of(got));
+}
+
+TEST_CASE("checker: periods and timeout from the configuration") {
+    checker_config cfg;
+    cfg.heartbeat_period = duration_ms{100};  // set before the log starts
+    cfg.sdo_timeout = duration_ms{1000};
+    const std::vector<entry> log = {{0, "715#05"},
+                                    {10, "615#4011200000000000"},
+                                    {300, "715#05"},
+                                    {310, "595#4F11200001000000"}};
+    const auto got = check(model::pk1000, log, cfg);
+    REQUIRE(got.size() == 1);
+    CHECK(got[0] == problem{3, pk::heartbeat_silence, {300, 100, 1}});
+}
+
+TEST_CASE("checker: explanations") {
+    struct row {
+        problem p;
+        std::string_view text;
+    };
+    const row rows[] = {
+        {{3, pk::sdo_overlap, {2, 0x2014, 0}},
+         "SDO request sent while the request of line 2 (2014h/0) is unanswered: the keypad drops "
+         "it (one request at a time)"},
+        {{2, pk::sdo_no_reply, {0x2011, 0, 490}},
+         "SDO request 2011h/0 never answered (490 ms without a reply)"},
+        {{3, pk::sdo_abort, {0x0602'0000, 0x1001, 0}},
+         "the keypad aborted 1001h/0 with 06020000h: object does not exist in the object "
+         "dictionary"},
+        {{3, pk::sdo_abort, {0x1234'5678, 0x1001, 0}},
+         "the keypad aborted 1001h/0 with 12345678h: a code CiA 301 does not define"},
+        {{2, pk::pdo_not_operational, {0x215, 0x7F, 0}},
+         "PDO 215h sent while the keypad is pre_operational: it ignores PDOs until an NMT start"},
+        {{5, pk::heartbeat_silence, {200, 100, 4}},
+         "no heartbeat for 200 ms since line 4, the configured period is 100 ms"},
+        {{6, pk::key_state_silence, {150, 50, 5}},
+         "no key state for 150 ms since line 5, the configured period is 50 ms"},
+        {{3, pk::old_node_traffic, {0x615, 0x15, 0x3A}},
+         "frame 615h to the old node id 15h: the keypad moved to 3Ah and does not answer it"},
+        {{3, pk::segment_toggle, {0, 1, 0}},
+         "segment request with toggle bit 1, expected 0: the keypad aborts with 05030000h"},
+        {{4, pk::segment_toggle, {0, 1, 1}},
+         "segment response with toggle bit 1, expected 0: the keypad repeated or skipped a "
+         "segment"},
+        {{4, pk::segment_size, {9, 7, 0x100B}},
+         "segmented upload of 100Bh announced 9 bytes and sent 7"},
+    };
+    for (const auto& r : rows) {
+        std::array<char, 160> buf{};
+        const auto t = explain(r.p, buf);
+        REQUIRE(t.has_value());
+        CHECK(*t == r.text);
+    }
+    std::array<char, 10> small{};
+    CHECK(explain(rows[0].p, small).error() == errc::buffer_too_small);
+    // Every CiA 301 code has a meaning.
+    for (const auto c : enum_values<canopen::sdo_abort_code>())
+        CHECK(!abort_meaning_of(static_cast<std::uint32_t>(c)).empty());
+}
