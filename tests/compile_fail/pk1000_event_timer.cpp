@@ -1,8 +1,14 @@
-// A PK1000 event timer literal above FEFFh must not compile (manual section 46 b).
-#include <powerkey/pk1000/objects.hpp>
+// A PK1000 event timer above FEFFh (manual section 46 b) must not compile where it is a constant:
+// encode refuses it (value_out_of_range), and the value of a refused result is no constant.
+#include <powerkey/keypad/codec.hpp>
 
-constexpr powerkey::pk1000::event_timer_value ok{true, 0xFEFF};
+using namespace powerkey;
+constexpr canopen::node_id node = 0x15;
+
+constexpr auto ok =
+    encode(node, model::pk1000, sdo_write{object::tpdo1_event_timer, number_value(0xFEFF)}).value();
 #ifdef POWERKEY_COMPILE_FAIL
-constexpr powerkey::pk1000::event_timer_value bad{true, 0xFF00};
+constexpr auto bad =
+    encode(node, model::pk1000, sdo_write{object::tpdo1_event_timer, number_value(0xFF00)}).value();
 #endif
-int main() { return ok.period_ms.value() == 0xFEFF ? 0 : 1; }
+int main() { return ok.size() == 8 ? 0 : 1; }

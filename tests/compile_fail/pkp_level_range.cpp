@@ -1,8 +1,8 @@
-// A brightness level is 00h..3Fh: the literal 40h must not compile.
-#include <powerkey/pkp/command.hpp>
+// A brightness level is 00h..3Fh: the literal 40h in a command must not compile.
+#include <powerkey/keypad/commands.hpp>
 
-constexpr powerkey::pkp::set_led_brightness ok{0x3F};
+constexpr powerkey::command ok{.code = powerkey::command_code::set_led_brightness, .level = 0x3F};
 #ifdef POWERKEY_COMPILE_FAIL
-constexpr powerkey::pkp::set_led_brightness bad{0x40};
+constexpr powerkey::command bad{.code = powerkey::command_code::set_led_brightness, .level = 0x40};
 #endif
-int main() { return ok.value.value() == 0x3F ? 0 : 1; }
+int main() { return ok.level.value() == 0x3F ? 0 : 1; }
