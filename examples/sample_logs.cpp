@@ -4,11 +4,12 @@
 // Each frame is a candump -l line with a made-up timestamp, 10 ms apart. The manuals show some
 // frames for another node id (after a node-id change); where the next row is for another node
 // than the keypad has at that point, the log moves the keypad there with the model's own node-id
-// command, marked "not in the manual", so that the log reads as one session.
+// change, marked "not in the manual", so that the log reads as one session.
 #include "../tests/pk1000_rows.hpp"
 #include "../tests/pkp_rows.hpp"
 
 #include <powerkey/can/candump.hpp>
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/session.hpp>
 
 #include <cstdio>
@@ -33,20 +34,22 @@ struct writer {
     }
     void text(std::string_view candump) { frame(can::parse_candump(candump).value()); }
 
-    // Moves the keypad to `target` the way its profile does it.
+    // Moves the keypad to `target` the way its model does it: a write of node_id (2013h) answered
+    // from the new id (PK1000 section 23), or command 70h answered from the old id, then the
+    // boot-up from the new one (PKP section 13 h).
     void move_to(canopen::node_id target) {
         const auto from = s.node();
         std::printf("# (not in the manual) node id %02Xh -> %02Xh\n", from.value(), target.value());
-        const std::uint8_t t = target.value();
-        if (keypad == model::pk1000) {
-            frame(canopen::encode(
-                from, canopen::sdo_download_request{{0x2013, 0}, canopen::expedited_data::u8(t)}));
-            frame(canopen::encode(target, canopen::sdo_download_response{{0x2013, 0}}));
+        if (info(keypad)->replies_from_new_id) {
+            frame(*encode(from, keypad, sdo_write{object::node_id, node_value(target)}));
+            frame(*encode(target, keypad, sdo_write_reply{object::node_id}));
         } else {
-            frame(canopen::encode(
-                from, canopen::sdo_download_request{{0x6500, 1}, {4, {0x70, t, 0, 0}}}));
-            frame(canopen::encode(from, canopen::sdo_download_response{{0x6500, 1}}));
-            frame(canopen::encode(target, canopen::heartbeat_message{}));
+            command c;
+            c.code = command_code::set_node_id;
+            c.node_id = target;
+            frame(*encode(from, keypad, c));
+            frame(*encode(from, keypad, sdo_write_reply{object::command_module}));
+            frame(*encode(target, keypad, canopen::heartbeat_message{}));
         }
     }
 
@@ -74,14 +77,12 @@ int main(int argc, char** argv) {
                 argv[1]);
     if (m == model::pk1000) {
         std::printf("# from PK1000_CANopen_UM_rev1.13 (tests/pk1000_rows.hpp)\n");
-        for (const auto& r : pk1000_rows::rows) w.row(r.section, r.node.value(), r.frame);
+        for (const auto& r : pk1000_rows::rows) w.row(r.section, r.node, r.frame);
     } else {
         std::printf(
-            "# from PKP-2200-2400-LI_CANopen_UM_rev1.1 and reference/pkp-2600.md "
-            "(tests/pkp_rows.hpp)\n");
-        const auto pm = *pkp_model(m);
+            "# from PKP-2200-2400-LI_CANopen_UM_rev1.1 and docs/pkp.md (tests/pkp_rows.hpp)\n");
         for (const auto& r : pkp_rows::rows)
-            if (pkp_rows::applies(r.models, pm)) w.row(r.section, r.node, r.frame);
+            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
     }
     if (w.s.node() != canopen::default_node_id) w.move_to(canopen::default_node_id);
 }

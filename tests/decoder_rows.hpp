@@ -1,99 +1,231 @@
-// Manual rows of the core messages, as the any-frame decoder sees them: every keypad speaks
-// these (NMT, SYNC, boot-up, the SDO frames that carry no profile meaning, the J1939 switch).
-// Shared by the decoder, describe and session tests.
+// The row types every frame table uses, the checks that run them, and the core rows: the frames
+// every keypad speaks or hears whatever its dictionary (NMT, SYNC, boot-up, heartbeat, the SDOs of
+// 1008h and 1017h, aborts, the J1939 switch back). tests/pk1000_rows.hpp and tests/pkp_rows.hpp
+// hold the rest of the manuals' frames in the same row types, so that one check serves every
+// table:
+//
+//   row               a frame of the manual: each model of `models` decodes it to `expected`, and
+//                     encodes `expected` back to the same bytes
+//   error_row         a frame each model of `models` refuses with `error`
+//   encode_error_row  a message encode refuses for each model of `models` with `error`; `frame`
+//                     is what a field-by-field encoder would build from the raw fields (decode
+//                     refuses it or reads another meaning), "" where there is no frame at all
+//
+//   static_assert(first_failing(rows, round_trips) == std::size(rows));
+//   TEST_CASE("...") { check_rows(rows, round_trips); }
 #ifndef POWERKEY_TESTS_DECODER_ROWS_HPP
 #define POWERKEY_TESTS_DECODER_ROWS_HPP
 
-#include <powerkey/decoder.hpp>
+#include <powerkey/can/candump.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 namespace decoder_rows {
 using namespace powerkey;
+using canopen::nmt_command;
+using canopen::nmt_state;
+
+// --- row types and their checks -----------------------------------------------------------------
+
+// The models a row applies to: bit m for model m (models.hpp order); `all` = the four keypads of
+// the manuals.
+inline constexpr std::uint16_t m1000 = 1, m2200 = 2, m2400 = 4, m2600 = 8, pkp = 14, all = 15;
+
+constexpr bool applies(std::uint16_t models, model m) noexcept {
+    return ((models >> static_cast<unsigned>(m)) & 1u) != 0;
+}
 
 struct row {
-    std::string_view section;
+    std::string_view section;  // manual and section (PK1000 "n", PKP "PKP n", "ref" PKP-2600)
+    std::uint16_t models;
+    std::uint8_t node;  // the keypad's node id when the frame is sent
     std::string_view frame;
-    core::message expected;
+    message expected;
 };
 
-using canopen::nmt_command;
-constexpr canopen::sdo_address dev_name{0x1008, 0};
+struct error_row {
+    std::string_view section;
+    std::uint16_t models;
+    std::uint8_t node;
+    std::string_view frame;
+    errc error;
+};
+
+struct encode_error_row {
+    std::string_view section;
+    std::uint16_t models;
+    std::uint8_t node;
+    std::string_view frame;
+    message msg;
+    errc error;
+};
+
+constexpr canopen::node_id node_of(std::uint8_t n) noexcept {
+    return canopen::node_id::make(n).value();
+}
+
+// Calls f(m) for every model of the mask; false when the mask names none or f fails once.
+template <class F>
+constexpr bool for_models(std::uint16_t models, F f) {
+    bool any = false;
+    for (std::size_t i = 0; i < model_count; ++i) {
+        const auto m = static_cast<model>(i);
+        if (!applies(models, m)) continue;
+        any = true;
+        if (!f(m)) return false;
+    }
+    return any;
+}
+
+// Decodes to its meaning and re-encodes byte for byte, for every model of the row.
+constexpr bool round_trips(const row& r) {
+    const auto f = can::parse_candump(r.frame);
+    if (!f) return false;
+    return for_models(r.models, [&](model m) {
+        const auto d = decode(*f, node_of(r.node), m);
+        if (!d || !(*d == r.expected)) return false;
+        const auto e = encode(node_of(r.node), m, r.expected);
+        return e && *e == *f;
+    });
+}
+
+// Refused with the row's error by every model of the row.
+constexpr bool refused(const error_row& r) {
+    const auto f = can::parse_candump(r.frame);
+    if (!f) return false;
+    return for_models(r.models,
+                      [&](model m) { return decode(*f, node_of(r.node), m) == r.error; });
+}
+
+// encode refuses the message with the row's error, and the frame a raw encoder would build does
+// not decode to the message.
+constexpr bool encode_refused(const encode_error_row& r) {
+    return for_models(r.models, [&](model m) {
+        if (!(encode(node_of(r.node), m, r.msg) == r.error)) return false;
+        if (r.frame.empty()) return true;
+        const auto f = can::parse_candump(r.frame);
+        if (!f) return false;
+        const auto d = decode(*f, node_of(r.node), m);
+        return !d || !(*d == r.msg);
+    });
+}
+
+// --- builders shared by the tables --------------------------------------------------------------
+
+constexpr message nmt(nmt_command c, std::uint8_t target = 0x15) noexcept {
+    return canopen::nmt_message{c, canopen::nmt_target::make(target).value()};
+}
+constexpr message hb(nmt_state s) noexcept { return canopen::heartbeat_message{s}; }
+constexpr message sync() noexcept { return canopen::sync_message{}; }
+constexpr message read(object o) noexcept { return sdo_read{o}; }
+constexpr message written(object o) noexcept { return sdo_write_reply{o}; }
+constexpr message write(object o, object_value v) noexcept { return sdo_write{o, v}; }
+constexpr message reply(object o, object_value v) noexcept { return sdo_read_reply{o, v}; }
+// A number write or reply (counts, identity, COB-ID and mapping words, times, levels).
+constexpr message write(object o, std::uint32_t v) noexcept { return sdo_write{o, number_value(v)}; }
+constexpr message value(object o, std::uint32_t v) noexcept {
+    return sdo_read_reply{o, number_value(v)};
+}
+constexpr message initiate(std::uint16_t index, std::uint8_t sub, bool indicated,
+                           std::uint32_t size) noexcept {
+    return canopen::sdo_upload_initiate_response{{index, sub}, indicated, size};
+}
+constexpr message next(bool toggle) noexcept { return canopen::sdo_segment_request{toggle}; }
+constexpr message segment(bool toggle, std::uint8_t unused, bool last,
+                          std::array<std::uint8_t, 7> bytes) noexcept {
+    return canopen::sdo_segment_response{toggle, canopen::segment_unused::make(unused).value(),
+                                         last, bytes};
+}
+constexpr leds rgb(led_set r, led_set g = {}, led_set b = {}) noexcept { return {r, g, b}; }
+constexpr led_set span(unsigned from, unsigned to) noexcept {
+    led_set s;
+    for (unsigned k = from; k <= to; ++k) s.insert(k);
+    return s;
+}
+
+// --- the core rows ------------------------------------------------------------------------------
 
 inline constexpr row core_rows[] = {
-    {"PK1000 4", "000#0115", canopen::nmt_message{nmt_command::start, 0x15}},
-    {"PK1000 5", "000#8015", canopen::nmt_message{nmt_command::enter_pre_operational, 0x15}},
-    {"PK1000 6", "000#8115", canopen::nmt_message{nmt_command::reset_node, 0x15}},
-    {"PK1000 7", "000#0215", canopen::nmt_message{nmt_command::stop, 0x15}},
-    {"PK1000 7 (old sw)", "000#0015", canopen::nmt_message{nmt_command::legacy_stop, 0x15}},
-    {"PKP 4", "000#0100", canopen::nmt_message{nmt_command::start, 0}},
-    {"PK1000 8", "715#00", canopen::heartbeat_message{canopen::nmt_state::boot_up}},
-    {"PK1000 29", "715#7F", canopen::heartbeat_message{canopen::nmt_state::pre_operational}},
-    {"PK1000 29", "715#05", canopen::heartbeat_message{canopen::nmt_state::operational}},
-    {"PK1000 10", "080#", canopen::sync_message{}},
-    {"PK1000 32", "615#4008100000000000", canopen::sdo_upload_request{dev_name}},
-    {"PK1000 32", "595#410810000B000000",
-     canopen::sdo_upload_initiate_response{dev_name, true, 11}},
-    {"PK1000 32", "615#6000000000000000", canopen::sdo_segment_request{false}},
-    {"PK1000 32", "595#00426C696E6B4D61",
-     canopen::sdo_segment_response{false, 0, false, {0x42, 0x6C, 0x69, 0x6E, 0x6B, 0x4D, 0x61}}},
-    {"PK1000 32", "615#7000000000000000", canopen::sdo_segment_request{true}},
-    {"PK1000 32", "595#1772696E65000000",
-     canopen::sdo_segment_response{true, 3, true, {0x72, 0x69, 0x6E, 0x65, 0, 0, 0}}},
-    {"PK1000 29", "615#4017100000000000", canopen::sdo_upload_request{{0x1017, 0}}},
-    {"PK1000 29", "615#2B17100032000000",
-     canopen::sdo_download_request{{0x1017, 0}, canopen::expedited_data::u16(50)}},
-    {"PK1000 29", "615#2B171000F4010000",
-     canopen::sdo_download_request{{0x1017, 0}, canopen::expedited_data::u16(500)}},
-    {"PK1000 29", "595#6017100000000000", canopen::sdo_download_response{{0x1017, 0}}},
-    {"PK1000 29", "595#4B17100064000000",
-     canopen::sdo_upload_response{{0x1017, 0}, canopen::expedited_data::u16(100)}},
-    {"CiA 301 7.2.4.3.17 (PK1000 31: 1001h not implemented)", "595#8001100000000206",
-     core::sdo_abort_response{{{0x1001, 0}, canopen::sdo_abort_code::object_does_not_exist}}},
-    {"CiA 301 7.2.4.3.17", "615#8008100000000405",
-     core::sdo_abort_request{{{0x1008, 0}, canopen::sdo_abort_code::timed_out}}},
-    {"PK1000 49", "18EF2100#041B8000FFFFFFFF", j1939::switch_to_canopen{}},
+    {"PK1000 4", all, 0x15, "000#0115", nmt(nmt_command::start)},
+    {"PK1000 5", all, 0x15, "000#8015", nmt(nmt_command::enter_pre_operational)},
+    {"PK1000 6", all, 0x15, "000#8115", nmt(nmt_command::reset_node)},
+    {"PK1000 7", all, 0x15, "000#0215", nmt(nmt_command::stop)},
+    {"PK1000 7 (old sw)", all, 0x15, "000#0015", nmt(nmt_command::legacy_stop)},
+    {"PKP 4", all, 0x15, "000#0100", nmt(nmt_command::start, 0)},
+    {"PK1000 8", all, 0x15, "715#00", hb(nmt_state::boot_up)},
+    {"PK1000 29", all, 0x15, "715#7F", hb(nmt_state::pre_operational)},
+    {"PK1000 29", all, 0x15, "715#05", hb(nmt_state::operational)},
+    {"PK1000 10", all, 0x15, "080#", sync()},
+    {"PK1000 32", all, 0x15, "615#4008100000000000", read(object::device_name)},
+    {"PK1000 32", all, 0x15, "595#410810000B000000", initiate(0x1008, 0, true, 11)},
+    {"PK1000 32", all, 0x15, "615#6000000000000000", next(false)},
+    {"PK1000 32", all, 0x15, "595#00426C696E6B4D61",
+     segment(false, 0, false, {0x42, 0x6C, 0x69, 0x6E, 0x6B, 0x4D, 0x61})},
+    {"PK1000 32", all, 0x15, "615#7000000000000000", next(true)},
+    {"PK1000 32", all, 0x15, "595#1772696E65000000",
+     segment(true, 3, true, {0x72, 0x69, 0x6E, 0x65, 0, 0, 0})},
+    {"PK1000 29", all, 0x15, "615#4017100000000000", read(object::heartbeat_time)},
+    {"PK1000 29", all, 0x15, "615#2B17100032000000", write(object::heartbeat_time, 50)},
+    {"PK1000 29", all, 0x15, "615#2B171000F4010000", write(object::heartbeat_time, 500)},
+    {"PK1000 29", all, 0x15, "595#6017100000000000", written(object::heartbeat_time)},
+    {"PK1000 29", all, 0x15, "595#4B17100064000000", value(object::heartbeat_time, 100)},
+    {"CiA 301 7.2.4.3.17 (PK1000 31: 1001h not implemented)", all, 0x15, "595#8001100000000206",
+     canopen::sdo_abort_response{{{0x1001, 0}, canopen::sdo_abort_code::object_does_not_exist}}},
+    {"CiA 301 7.2.4.3.17", all, 0x15, "615#8008100000000405",
+     canopen::sdo_abort_request{{{0x1008, 0}, canopen::sdo_abort_code::timed_out}}},
+    {"PK1000 49", m1000, 0x15, "18EF2100#041B8000FFFFFFFF", j1939::switch_to_canopen{}},
 };
 
-// Frames that are not the keypad's (node 15h): classified, refused, never mis-decoded.
+// Frames that are not keypad 15h's (another node, another function): classified, refused by
+// every model, never mis-decoded.
 struct foreign_row {
+    std::string_view section;
     std::string_view frame;
-    frame_class cls;
+    canopen::cob_info cls;
     errc error;
 };
 
 inline constexpr foreign_row foreign_rows[] = {
-    {"616#4008100000000000", {bus_function::sdo_rx, 0x16}, errc::wrong_id},
-    {"5BA#6013200000000000", {bus_function::sdo_tx, 0x3A}, errc::wrong_id},
-    {"718#00", {bus_function::heartbeat, 0x18}, errc::wrong_id},
-    {"196#0100000000", {bus_function::tpdo1, 0x16}, errc::wrong_id},
-    {"081#00", {bus_function::other, 0}, errc::wrong_id},                // EMCY of node 1
-    {"100#00", {bus_function::other, 0}, errc::wrong_id},                // TIME
-    {"7E5#0400000000000000", {bus_function::other, 0}, errc::wrong_id},  // LSS
-    {"280#0102", {bus_function::other, 0}, errc::wrong_id},              // TPDO2 base, no node
+    {"SDO request to node 16h", "616#4008100000000000", {canopen::function::sdo_rx, 0x16},
+     errc::wrong_id},
+    {"SDO reply of node 3Ah", "5BA#6013200000000000", {canopen::function::sdo_tx, 0x3A},
+     errc::wrong_id},
+    {"heartbeat of node 18h", "718#00", {canopen::function::heartbeat, 0x18}, errc::wrong_id},
+    {"key state of node 16h", "196#0100000000", {canopen::function::tpdo1, 0x16}, errc::wrong_id},
+    {"EMCY of node 1", "081#00", {canopen::function::other, 0}, errc::wrong_id},
+    {"TIME", "100#00", {canopen::function::other, 0}, errc::wrong_id},
+    {"LSS", "7E5#0400000000000000", {canopen::function::other, 0}, errc::wrong_id},
+    {"TPDO2 base, no node", "280#0102", {canopen::function::other, 0}, errc::wrong_id},
 };
 
-// Frames of the keypad that are malformed: the core decoder's precise error.
-struct bad_row {
-    std::string_view frame;
-    errc error;
-};
-
-inline constexpr bad_row bad_rows[] = {
-    {"000#01", errc::wrong_length},
-    {"000#0315", errc::unknown_command},
-    {"000#0180", errc::value_out_of_range},
-    {"080#00", errc::wrong_length},
-    {"715#01", errc::value_out_of_range},
-    {"715#0000", errc::wrong_length},
-    {"615#40081000", errc::wrong_length},
-    {"615#4108100000000000", errc::reserved_not_zero},  // E-PKP: 6300h request printed 41h
-    {"615#2008100000000000", errc::unknown_command},
-    {"595#E008100000000000", errc::unknown_command},
-    {"18EF2100#041B8000FFFFFF00", errc::unknown_command},
-    {"18EE2100#041B8000FFFFFFFF", errc::wrong_id},
+// Malformed frames of keypad 15h that no dictionary makes valid: the precise error.
+inline constexpr error_row core_error_rows[] = {
+    {"NMT of 1 byte", all, 0x15, "000#01", errc::wrong_length},
+    {"NMT command 03h", all, 0x15, "000#0315", errc::unknown_command},
+    {"NMT node 80h", all, 0x15, "000#0180", errc::value_out_of_range},
+    {"SYNC with data", all, 0x15, "080#00", errc::wrong_length},
+    {"heartbeat state 01h", all, 0x15, "715#01", errc::value_out_of_range},
+    {"heartbeat of 2 bytes", all, 0x15, "715#0000", errc::wrong_length},
+    {"SDO of 4 bytes", all, 0x15, "615#40081000", errc::wrong_length},
+    {"E-CORE-4 upload request 41h", all, 0x15, "615#4108100000000000", errc::reserved_not_zero},
+    {"segmented download 20h", all, 0x15, "615#2008100000000000", errc::unknown_command},
+    {"SDO reply specifier E0h", all, 0x15, "595#E008100000000000", errc::unknown_command},
+    {"PK1000 49 switch, byte 7 not FFh", m1000, 0x15, "18EF2100#041B8000FFFFFF00",
+     errc::unknown_command},
+    {"PK1000 49 switch on PGN EE00h", m1000, 0x15, "18EE2100#041B8000FFFFFFFF", errc::wrong_id},
+    {"PK1000 49 switch to a PKP (no J1939)", pkp, 0x15, "18EF2100#041B8000FFFFFFFF",
+     errc::wrong_id_format},
+    {"29-bit frame to a PKP (no J1939)", pkp, 0x15, "18EE2100#041B8000FFFFFFFF",
+     errc::wrong_id_format},
 };
 
 }  // namespace decoder_rows
 
-#endif
+#endif  // POWERKEY_TESTS_DECODER_ROWS_HPP

@@ -1,107 +1,177 @@
-// The any-frame decoder on the core rows: classification, decoding both ways, foreign frames.
+// The codec on the core rows (the frames every keypad speaks whatever its dictionary): decoding
+// and encoding both ways per model, classification of foreign frames, malformed frames; and the
+// model-independent accessors, which answer from every manual row as its PDO's fields do.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
-#include <powerkey/decoder.hpp>
+#include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/names.hpp>
+
+#include <iterator>
+#include <optional>
+#include <variant>
 
 #include "decoder_rows.hpp"
+#include "pk1000_rows.hpp"
+#include "pkp_rows.hpp"
+#include "support.hpp"
 
 namespace {
 using namespace powerkey;
 using namespace decoder_rows;
+using powerkey_tests::check_rows;
+using powerkey_tests::first_failing;
+using powerkey_tests::frame_of;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
-constexpr bool encodes_every_row() {
-    for (const auto& r : core_rows)
-        if (core::encode(keypad, r.expected) != can::parse_candump(r.frame).value()) return false;
-    return true;
-}
-static_assert(encodes_every_row());
+static_assert(first_failing(core_rows, round_trips) == std::size(core_rows));
+static_assert(first_failing(core_error_rows, refused) == std::size(core_error_rows));
 
-constexpr bool decodes_every_row() {
-    for (const auto& r : core_rows) {
-        const auto m = core::decode(can::parse_candump(r.frame).value(), keypad);
-        if (!m || *m != r.expected) return false;
-    }
-    return true;
+// Classified as the row says, of no concern to keypad 15h, refused by every model.
+constexpr bool foreign(const foreign_row& r) {
+    const auto f = frame_of(r.frame);
+    if (!(canopen::classify(f) == r.cls) || canopen::concerns(canopen::classify(f), keypad))
+        return false;
+    return for_models(all, [&](model m) { return decode(f, keypad, m) == r.error; });
 }
-static_assert(decodes_every_row());
+static_assert(first_failing(foreign_rows, foreign) == std::size(foreign_rows));
 
-static_assert(classify(can::candump("615#00")) == frame_class{bus_function::sdo_rx, 0x15});
-static_assert(classify(can::candump("18EF2100#00")) == frame_class{bus_function::j1939, 0});
-static_assert(classify(can::candump("00000615#00")) == frame_class{bus_function::j1939, 0});
+static_assert(canopen::classify(can::candump("615#00")) ==
+              canopen::cob_info{canopen::function::sdo_rx, 0x15});
+static_assert(canopen::classify(can::candump("18EF2100#00")) ==
+              canopen::cob_info{canopen::function::j1939, 0});
+static_assert(canopen::classify(can::candump("00000615#00")) ==
+              canopen::cob_info{canopen::function::j1939, 0});
 static_assert(parse_model("pkp2400") == model::pkp2400);
+static_assert(parse_model("PKP-2400-LI") == model::pkp2400);
 static_assert(parse_model("pkp2500") == errc::value_out_of_range);
-static_assert(kind_of(core::message{canopen::sync_message{}}) == "sync");
+static_assert(kind_of(message{canopen::sync_message{}}) == "sync");
+
+// --- the accessors against the rows ---------------------------------------------------------------
+
+// For every model of the row, the accessors answer from the decoded message what its fields say:
+// pressed_keys from a key-state PDO or a read reply of `keys`; led_on_map and led_blink_map from
+// an LED PDO (every plane) or a write or read reply of an LED object (its planes); nothing from
+// any other message.
+constexpr std::uint8_t planes_of(object o) {
+    switch (o) {
+        case object::led_on:
+        case object::led_blink: return 7;
+        case object::led_on_red:
+        case object::led_blink_red: return 1;
+        case object::led_on_green:
+        case object::led_blink_green: return 2;
+        default: return 0;
+    }
+}
+constexpr bool is_on(object o) {
+    return o == object::led_on || o == object::led_on_red || o == object::led_on_green;
+}
+
+constexpr std::optional<led_map_update> want_map(const message& m, bool on) {
+    if (const auto* p = std::get_if<powerkey::led_on>(&m); p && on)
+        return led_map_update{p->map, 7};
+    if (const auto* p = std::get_if<powerkey::led_blink>(&m); p && !on)
+        return led_map_update{p->map, 7};
+    auto of = [on](object o, const object_value& v) -> std::optional<led_map_update> {
+        if (planes_of(o) == 0 || is_on(o) != on) return std::nullopt;
+        return led_map_update{v.map, planes_of(o)};
+    };
+    if (const auto* w = std::get_if<sdo_write>(&m)) return of(w->object, w->value);
+    if (const auto* r = std::get_if<sdo_read_reply>(&m)) return of(r->object, r->value);
+    return std::nullopt;
+}
+
+constexpr std::optional<key_set> want_keys(const message& m) {
+    if (const auto* k = std::get_if<key_state>(&m)) return k->keys;
+    if (const auto* r = std::get_if<sdo_read_reply>(&m); r && r->object == object::keys)
+        return key_set::from_mask(r->value.raw);
+    return std::nullopt;
+}
+
+constexpr bool accessors_agree(const row& r) {
+    return for_models(r.models, [&](model m) {
+        const auto d = decode(frame_of(r.frame), node_of(r.node), m);
+        if (!d) return false;
+        return pressed_keys(*d) == want_keys(*d) && led_on_map(*d) == want_map(*d, true) &&
+               led_blink_map(*d) == want_map(*d, false);
+    });
+}
+static_assert(first_failing(core_rows, accessors_agree) == std::size(core_rows));
+static_assert(first_failing(pk1000_rows::rows, accessors_agree) == std::size(pk1000_rows::rows));
+static_assert(first_failing(pkp_rows::rows, accessors_agree) == std::size(pkp_rows::rows));
+
+// The same keys, whichever frame carries them: the key-state PDO and the read reply of `keys`
+// (PK1000 2000h/1, PKP 6000h) answer pressed_keys alike, on every model.
+constexpr bool keys_alike(model m, key_set k) {
+    const auto pdo = decode(*encode(keypad, m, key_state{k, 0}), keypad, m);
+    const auto sdo = decode(*encode(keypad, m, sdo_read_reply{object::keys, keys_value(k)}),
+                            keypad, m);
+    return pdo && sdo && pressed_keys(*pdo) == k && pressed_keys(*sdo) == k;
+}
+static_assert(keys_alike(model::pk1000, {1, 4, 10}));
+static_assert(keys_alike(model::pkp2200, {1, 4}));
+static_assert(keys_alike(model::pkp2400, {2, 7, 8}));
+static_assert(keys_alike(model::pkp2600, {9, 12}));
 }  // namespace
 
-TEST_CASE("core rows decode to their meaning and encode back to the same bytes") {
-    CHECK(encodes_every_row());
-    CHECK(decodes_every_row());
-    for (const auto& r : core_rows) {
-        CAPTURE(r.section);
-        CAPTURE(r.frame);
-        const auto f = can::parse_candump(r.frame);
-        REQUIRE(f.has_value());
-        const auto c = core::decode(*f, keypad);
-        REQUIRE(c.has_value());
-        CHECK(*c == r.expected);
-        CHECK(core::encode(keypad, *c) == *f);
-    }
-}
-
-TEST_CASE("the NMT, SYNC, heartbeat and J1939 rows mean the same to every model that has them") {
-    for (const auto& r : core_rows) {
-        const auto kind = kind_of(r.expected);
-        if (kind.substr(0, 4) == "sdo_") continue;  // the profiles type their SDOs per object
-        for (model m : all_models) {
-            if (kind == "j1939_switch_to_canopen" && m != model::pk1000) continue;
-            CAPTURE(r.frame);
-            CAPTURE(to_string(m));
-            const auto f = can::parse_candump(r.frame).value();
-            const auto d = decode(f, keypad, m);
-            REQUIRE(d.has_value());
-            CHECK(kind_of(*d) == kind);
-            const auto back = encode(keypad, m, *d);
-            REQUIRE(back.has_value());
-            CHECK(*back == f);
-        }
-    }
+TEST_CASE("core rows decode to their meaning and encode back to the same bytes, per model") {
+    check_rows(core_rows, round_trips);
 }
 
 TEST_CASE("frames of another node or function are classified and refused") {
-    for (const auto& r : foreign_rows) {
-        CAPTURE(r.frame);
-        const auto f = can::parse_candump(r.frame).value();
-        CHECK(classify(f) == r.cls);
-        CHECK_FALSE(concerns(classify(f), keypad));
-        for (model m : all_models) CHECK(decode(f, keypad, m) == r.error);
-    }
+    check_rows(foreign_rows, foreign);
 }
 
-TEST_CASE("malformed frames of the keypad give the core decoder's error") {
-    for (const auto& r : bad_rows) {
-        CAPTURE(r.frame);
-        CHECK(core::decode(can::parse_candump(r.frame).value(), keypad) == r.error);
-    }
+TEST_CASE("malformed frames of the keypad give the precise error, per model") {
+    check_rows(core_error_rows, refused);
+}
+
+TEST_CASE("pressed_keys, led_on_map and led_blink_map answer every row as its fields do") {
+    check_rows(core_rows, accessors_agree);
+    check_rows(pk1000_rows::rows, accessors_agree);
+    check_rows(pkp_rows::rows, accessors_agree);
+}
+
+TEST_CASE("a read reply of keys answers pressed_keys as the key-state PDO does") {
+    CHECK(keys_alike(model::pk1000, {1, 4, 10}));
+    CHECK(keys_alike(model::pkp2200, {1, 4}));
+    CHECK(keys_alike(model::pkp2400, {2, 7, 8}));
+    CHECK(keys_alike(model::pkp2600, {9, 12}));
+    // PK1000 16: 2000h/1 keys 4, 8, 9; PKP 14: 6000h keys 2, 6 on a PKP-2400.
+    const auto pk = decode(frame_of("595#4B00200188010000"), keypad, model::pk1000);
+    REQUIRE(pk.has_value());
+    CHECK(pressed_keys(*pk) == key_set{4, 8, 9});
+    const auto p2400 = decode(frame_of("595#4300600022000000"), keypad, model::pkp2400);
+    REQUIRE(p2400.has_value());
+    CHECK(pressed_keys(*p2400) == key_set{2, 6});
+    CHECK_FALSE(pressed_keys(message{sdo_read{object::keys}}).has_value());
 }
 
 TEST_CASE("an abort keeps its direction") {
-    const auto from_client = can::candump("615#8008100000000405");
-    const auto from_keypad = can::candump("595#8008100000000405");
-    const auto a = core::decode(from_client, keypad);
-    const auto b = core::decode(from_keypad, keypad);
-    REQUIRE(a.has_value());
-    REQUIRE(b.has_value());
-    CHECK(kind_of(*a) == "sdo_abort_request");
-    CHECK(kind_of(*b) == "sdo_abort_response");
-    CHECK(core::encode(keypad, *a) == from_client);
-    CHECK(core::encode(keypad, *b) == from_keypad);
+    const auto from_client = frame_of("615#8008100000000405");
+    const auto from_keypad = frame_of("595#8008100000000405");
+    for (std::size_t i = 0; i < model_count; ++i) {
+        const auto m = static_cast<model>(i);
+        CAPTURE(to_string(m));
+        const auto a = decode(from_client, keypad, m);
+        const auto b = decode(from_keypad, keypad, m);
+        REQUIRE(a.has_value());
+        REQUIRE(b.has_value());
+        CHECK(kind_of(*a) == "sdo_abort_request");
+        CHECK(kind_of(*b) == "sdo_abort_response");
+        CHECK(encode(keypad, m, *a) == from_client);
+        CHECK(encode(keypad, m, *b) == from_keypad);
+    }
 }
 
 TEST_CASE("model names") {
-    for (model m : all_models) CHECK(parse_model(to_string(m)) == m);
-    CHECK(parse_model("PK1000") == errc::value_out_of_range);
+    for (const auto m : enum_values<model>()) CHECK(parse_model(to_string(m)) == m);
+    CHECK(parse_model("PK1000") == model::pk1000);
+    CHECK(model_from_report("PKU2400") == model::pkp2400);
     CHECK(parse_model("") == errc::value_out_of_range);
 }
