@@ -65,10 +65,10 @@ constexpr bool classify_matches_scan() {
         if (v == 0x000) expected = {co::function::nmt, 0};
         if (v == 0x080) expected = {co::function::sync, 0};
         const auto n = static_cast<std::uint8_t>(v & 0x7F);
-        for (co::function f : {co::function::tpdo1, co::function::rpdo1, co::function::rpdo2,
-                               co::function::rpdo3, co::function::rpdo4, co::function::sdo_tx,
-                               co::function::sdo_rx, co::function::heartbeat})
-            if (n != 0 && co::detail::per_node_base(f) + n == v) expected = {f, n};
+        for (co::function f : powerkey::enum_values<co::function>())
+            if (n != 0 && co::detail::per_node_base(f) != 0 &&
+                co::detail::per_node_base(f) + n == v)
+                expected = {f, n};
         if (co::classify(pc::standard_id::make(v).value()) != expected) return false;
     }
     return true;
@@ -176,7 +176,8 @@ inline void floor_read(std::size_t calls) {
     cycle(core_frames, calls, [](const pc::frame& f) {
         const auto& b = f.bytes();
         return f.raw_id() ^ (f.is_extended() ? 0x8000'0000u : 0u) ^ f.size() ^
-               powerkey::detail::load_le_u32(b, 0) ^ powerkey::detail::load_le_u32(b, 4);
+               static_cast<std::uint32_t>(powerkey::detail::load_le<4>(b, 0)) ^
+               static_cast<std::uint32_t>(powerkey::detail::load_le<4>(b, 4));
     });
 }
 

@@ -1,32 +1,49 @@
-// PK1000 profile operations at node 15h. The inputs are the manual's own rows (tests/
-// pk1000_rows.hpp, shared with the test suite), picked by family at compile time, so every row the
-// manual prints for a family is measured and every input is known to decode.
+// PK1000 operations at node 15h, all through the one codec (powerkey::decode / encode with
+// model::pk1000). The inputs are the manual's own rows (tests/pk1000_rows.hpp, shared with the
+// test suite), picked by family at compile time, so every row the manual prints for a family is
+// measured; the messages the encoders measure are those rows decoded at compile time, and every
+// input is proved to decode. Only a row's `frame`, `models` and `node` are read here.
 #ifndef POWERKEY_BENCH_OPS_PK1000_HPP
 #define POWERKEY_BENCH_OPS_PK1000_HPP
 
-#include <powerkey/decoder.hpp>
-#include <powerkey/pk1000/pdo.hpp>
-#include <powerkey/pk1000/profile.hpp>
+#include <powerkey/keypad/codec.hpp>
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
-#include "../tests/pk1000_rows.hpp"
 #include "ops.hpp"
+#include "pk1000_rows.hpp"
 
 namespace bench {
 
-namespace pk = powerkey::pk1000;
+namespace pk_detail {
+constexpr auto pk1000 = powerkey::model::pk1000;
 
-namespace detail {
-constexpr pc::frame frame_of(const pk1000_rows::row& r) {
+// The keypad's node id of a row: 15h unless the row names another (a number or a node_id).
+template <class Row>
+constexpr unsigned node_of(const Row& r) {
+    if constexpr (requires { r.node; }) {
+        if constexpr (std::is_integral_v<std::remove_cvref_t<decltype(r.node)>>)
+            return r.node;
+        else
+            return r.node.value();
+    } else {
+        return 0x15;
+    }
+}
+
+template <class Row>
+constexpr pc::frame frame_of(const Row& r) {
     return pc::parse_candump(r.frame).value();
 }
 
-// Rows of keypad 15h whose frame has function `fn` and, for SDOs, an expedited specifier.
-template <co::function Fn>
-constexpr bool in_family(const pk1000_rows::row& r) {
-    if (r.node != node) return false;
+// Rows of a PK1000 at node 15h whose frame has function `fn` and, for SDOs, an expedited specifier.
+template <co::function Fn, class Row>
+constexpr bool in_family(const Row& r) {
+    if constexpr (requires { r.models; })
+        if (((r.models >> static_cast<unsigned>(pk1000)) & 1u) == 0) return false;
+    if (node_of(r) != node.value()) return false;
     const auto f = pc::parse_candump(r.frame);
     if (!f || co::classify(*f).fn != Fn) return false;
     if constexpr (Fn == co::function::sdo_rx) {
@@ -53,42 +70,30 @@ constexpr auto family_frames() {
         if (in_family<Fn>(r)) a[i++] = frame_of(r);
     return a;
 }
-template <co::function Fn>
-constexpr auto family_messages() {
-    std::array<pk::message, family_size<Fn>()> a{};
-    std::size_t i = 0;
-    for (const auto& r : pk1000_rows::rows)
-        if (in_family<Fn>(r)) a[i++] = r.expected;
+// The frames decoded: what the encoders are given.
+template <std::size_t N>
+constexpr auto messages_of(const std::array<pc::frame, N>& frames) {
+    std::array<powerkey::message, N> a{};
+    for (std::size_t i = 0; i < N; ++i) a[i] = powerkey::decode(frames[i], node, pk1000).value();
     return a;
 }
-template <class T, co::function Fn>
-constexpr auto family_alternative() {
-    std::array<T, family_size<Fn>()> a{};
-    std::size_t i = 0;
-    for (const auto& r : pk1000_rows::rows)
-        if (in_family<Fn>(r)) a[i++] = std::get<T>(r.expected);
-    return a;
-}
-}  // namespace detail
+}  // namespace pk_detail
 
-inline constexpr auto pk_key_frames = detail::family_frames<co::function::tpdo1>();
-inline constexpr auto pk_key_messages =
-    detail::family_alternative<pk::key_state, co::function::tpdo1>();
-inline constexpr auto pk_led_on_frames = detail::family_frames<co::function::rpdo1>();
-inline constexpr auto pk_led_on_messages =
-    detail::family_alternative<pk::led_on, co::function::rpdo1>();
-inline constexpr auto pk_led_blink_frames = detail::family_frames<co::function::rpdo2>();
-inline constexpr auto pk_backlight_frames = detail::family_frames<co::function::rpdo4>();
-inline constexpr auto pk_backlight_messages =
-    detail::family_alternative<pk::backlight, co::function::rpdo4>();
-inline constexpr auto pk_sdo_request_frames = detail::family_frames<co::function::sdo_rx>();
-inline constexpr auto pk_sdo_request_messages = detail::family_messages<co::function::sdo_rx>();
-inline constexpr auto pk_sdo_response_frames = detail::family_frames<co::function::sdo_tx>();
-inline constexpr auto pk_sdo_response_messages = detail::family_messages<co::function::sdo_tx>();
+inline constexpr auto pk_key_frames = pk_detail::family_frames<co::function::tpdo1>();
+inline constexpr auto pk_key_messages = pk_detail::messages_of(pk_key_frames);
+inline constexpr auto pk_led_on_frames = pk_detail::family_frames<co::function::rpdo1>();
+inline constexpr auto pk_led_on_messages = pk_detail::messages_of(pk_led_on_frames);
+inline constexpr auto pk_led_blink_frames = pk_detail::family_frames<co::function::rpdo2>();
+inline constexpr auto pk_backlight_frames = pk_detail::family_frames<co::function::rpdo4>();
+inline constexpr auto pk_backlight_messages = pk_detail::messages_of(pk_backlight_frames);
+inline constexpr auto pk_sdo_request_frames = pk_detail::family_frames<co::function::sdo_rx>();
+inline constexpr auto pk_sdo_request_messages = pk_detail::messages_of(pk_sdo_request_frames);
+inline constexpr auto pk_sdo_response_frames = pk_detail::family_frames<co::function::sdo_tx>();
+inline constexpr auto pk_sdo_response_messages = pk_detail::messages_of(pk_sdo_response_frames);
 
 inline constexpr auto pk_all_rows = [] {
     std::array<pc::frame, std::size(pk1000_rows::rows)> a{};
-    for (std::size_t i = 0; i < a.size(); ++i) a[i] = detail::frame_of(pk1000_rows::rows[i]);
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = pk_detail::frame_of(pk1000_rows::rows[i]);
     return a;
 }();
 
@@ -161,84 +166,87 @@ inline constexpr std::array pk_mixed_log = {
     candump("215#0100000000000000"),
 };
 
-namespace detail {
-constexpr auto pk_decode = [](const pc::frame& f) { return pk::decode(f, node); };
-}  // namespace detail
-static_assert(detail::all_decode(pk_key_frames, detail::pk_decode) && pk_key_frames.size() >= 6);
-static_assert(detail::all_decode(pk_led_on_frames, detail::pk_decode));
-static_assert(detail::all_decode(pk_sdo_request_frames, detail::pk_decode));
-static_assert(detail::all_decode(pk_sdo_response_frames, detail::pk_decode));
+namespace pk_detail {
+constexpr auto decode_pk = [](const pc::frame& f) { return powerkey::decode(f, node, pk1000); };
+}  // namespace pk_detail
+static_assert(detail::all_decode(pk_key_frames, pk_detail::decode_pk) && pk_key_frames.size() >= 6);
+static_assert(detail::all_decode(pk_led_on_frames, pk_detail::decode_pk));
+static_assert(detail::all_decode(pk_led_blink_frames, pk_detail::decode_pk));
+static_assert(detail::all_decode(pk_backlight_frames, pk_detail::decode_pk));
+static_assert(detail::all_decode(pk_sdo_request_frames, pk_detail::decode_pk));
+static_assert(detail::all_decode(pk_sdo_response_frames, pk_detail::decode_pk));
 
 // 57 of the 64 frames are the keypad's; the J1939 frames and those of node 16h are refused.
 inline constexpr std::size_t pk_mixed_log_keypad_frames = [] {
     std::size_t n = 0;
     for (const auto& f : pk_mixed_log)
-        if (pk::decode(f, node).has_value()) ++n;
+        if (pk_detail::decode_pk(f).has_value()) ++n;
     return n;
 }();
 static_assert(pk_mixed_log_keypad_frames == pk_mixed_log.size() - 7);
-// The any-frame decoder agrees: the same 57 frames are the PK1000's.
-static_assert([] {
+
+inline constexpr auto pk_mixed_log_messages = [] {
+    std::array<powerkey::message, pk_mixed_log_keypad_frames> m{};
     std::size_t n = 0;
     for (const auto& f : pk_mixed_log)
-        if (powerkey::decode(f, node, powerkey::model::pk1000).has_value()) ++n;
-    return n;
-}() == pk_mixed_log_keypad_frames);
+        if (const auto r = pk_detail::decode_pk(f)) m[n++] = *r;
+    return m;
+}();
 
-inline void pk_key_state_decode(std::size_t calls) {
+namespace pk_detail {
+// Decodes every frame of `frames` at node 15h as a PK1000.
+template <std::size_t N>
+[[gnu::always_inline]] inline void decode_all(const std::array<pc::frame, N>& frames,
+                                              std::size_t calls) {
     const auto n = opaque(node);
-    cycle(pk_key_frames, calls, [n](const pc::frame& f) { return pk::decode_key_state(f, n); });
+    const auto m = opaque(pk1000);
+    cycle(frames, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
 }
+template <std::size_t N>
+[[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
+                                              std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pk1000);
+    cycle(messages, calls,
+          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+}
+}  // namespace pk_detail
+
+inline void pk_key_state_decode(std::size_t calls) { pk_detail::decode_all(pk_key_frames, calls); }
 inline void pk_key_state_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_key_messages, calls, [n](const pk::key_state& m) { return pk::encode(n, m); });
+    pk_detail::encode_all(pk_key_messages, calls);
 }
-inline void pk_led_on_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_led_on_frames, calls, [n](const pc::frame& f) { return pk::decode_led_on(f, n); });
-}
+inline void pk_led_on_decode(std::size_t calls) { pk_detail::decode_all(pk_led_on_frames, calls); }
 inline void pk_led_on_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_led_on_messages, calls, [n](const pk::led_on& m) { return pk::encode(n, m); });
+    pk_detail::encode_all(pk_led_on_messages, calls);
 }
 inline void pk_led_blink_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_led_blink_frames, calls,
-          [n](const pc::frame& f) { return pk::decode_led_blink(f, n); });
+    pk_detail::decode_all(pk_led_blink_frames, calls);
 }
 inline void pk_backlight_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_backlight_frames, calls,
-          [n](const pc::frame& f) { return pk::decode_backlight(f, n); });
+    pk_detail::decode_all(pk_backlight_frames, calls);
 }
 inline void pk_backlight_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_backlight_messages, calls, [n](const pk::backlight& m) { return pk::encode(n, m); });
+    pk_detail::encode_all(pk_backlight_messages, calls);
 }
 inline void pk_sdo_request_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_sdo_request_frames, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
+    pk_detail::decode_all(pk_sdo_request_frames, calls);
 }
 inline void pk_sdo_response_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_sdo_response_frames, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
+    pk_detail::decode_all(pk_sdo_response_frames, calls);
 }
 inline void pk_sdo_request_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_sdo_request_messages, calls, [n](const pk::message& m) { return pk::encode(n, m); });
+    pk_detail::encode_all(pk_sdo_request_messages, calls);
 }
 inline void pk_sdo_response_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_sdo_response_messages, calls, [n](const pk::message& m) { return pk::encode(n, m); });
+    pk_detail::encode_all(pk_sdo_response_messages, calls);
 }
-inline void pk_decode_all_rows(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pk_all_rows, calls, [n](const pc::frame& f) { return pk::decode(f, n); });
-}
+inline void pk_decode_all_rows(std::size_t calls) { pk_detail::decode_all(pk_all_rows, calls); }
 inline void any_pk1000_decode_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(powerkey::model::pk1000);
-    cycle(pk_mixed_log, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+    pk_detail::decode_all(pk_mixed_log, calls);
+}
+inline void any_pk1000_encode_mixed_log(std::size_t calls) {
+    pk_detail::encode_all(pk_mixed_log_messages, calls);
 }
 
 inline constexpr op pk1000_ops[] = {
@@ -255,6 +263,7 @@ inline constexpr op pk1000_ops[] = {
     {"pk1000/sdo/encode_response", pk_sdo_response_encode},
     {"pk1000/decode/all_manual_rows", pk_decode_all_rows},
     {"any/pk1000/decode_mixed_log", any_pk1000_decode_mixed_log},
+    {"any/pk1000/encode_mixed_log", any_pk1000_encode_mixed_log, "frame (keypad frames only)"},
 };
 
 }  // namespace bench

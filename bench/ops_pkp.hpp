@@ -1,25 +1,21 @@
-// PKP profile operations (PKP-2400 at node 15h) and the any-frame decoder on a mixed log. Inputs
-// are frames printed in the PKP manual (sections 10-13, 14-17); each is proved at compile time to
-// decode, so that no benchmark silently measures an error path.
+// PKP-2400 operations at node 15h through the one codec (powerkey::decode / encode with
+// model::pkp2400), and the any-frame decoder on a mixed log. Inputs are frames printed in the PKP
+// manual (sections 10-13, 14-17); each is proved at compile time to decode, so that no benchmark
+// silently measures an error path.
 #ifndef POWERKEY_BENCH_OPS_PKP_HPP
 #define POWERKEY_BENCH_OPS_PKP_HPP
 
-#include <powerkey/decoder.hpp>
-#include <powerkey/pkp/command.hpp>
-#include <powerkey/pkp/model.hpp>
-#include <powerkey/pkp/objects.hpp>
-#include <powerkey/pkp/pdo.hpp>
-#include <powerkey/pkp/profile.hpp>
+#include <powerkey/keypad/codec.hpp>
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 
 #include "ops.hpp"
 
 namespace bench {
 
-namespace pkp = powerkey::pkp;
-inline constexpr pkp::model pkp_model = pkp::model::pkp2400;
+inline constexpr powerkey::model pkp_model = powerkey::model::pkp2400;
 
 // Section 10 (PKP-2400 table; the tick byte, XX in the manual, is filled in).
 inline constexpr std::array pkp_key_frames = {
@@ -55,23 +51,36 @@ inline constexpr std::array pkp_sdo_response_frames = {
     candump("595#4301600000FF0000"),
 };
 
-inline constexpr std::array pkp_key_messages = {pkp::key_state{{}, 0x11}, pkp::key_state{{1}, 0x12},
-                                                pkp::key_state{{2}, 0x13},
-                                                pkp::key_state{{2, 7}, 0x14}};
+inline constexpr std::array pkp_key_messages = {
+    powerkey::message{powerkey::key_state{{}, 0x11}}, powerkey::message{powerkey::key_state{{1}, 0x12}},
+    powerkey::message{powerkey::key_state{{2}, 0x13}},
+    powerkey::message{powerkey::key_state{{2, 7}, 0x14}}};
 inline constexpr std::array pkp_led_messages = {
-    pkp::led_on{pkp::leds{{1}, {}, {}}}, pkp::led_on{pkp::leds{{2, 7}, {}, {}}},
-    pkp::led_on{pkp::leds{{}, {1, 5}, {}}},
-    pkp::led_on{pkp::leds{{1, 4, 5, 7}, {2, 4, 6, 7}, {3, 5, 6, 7}}}};
-inline constexpr std::array pkp_led_maps = {
-    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::red}},
-    pkp::led_map<pkp::model::pkp2400>{{2, pkp::colour::red}, {7, pkp::colour::red}},
-    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::green}, {5, pkp::colour::green}},
-    pkp::led_map<pkp::model::pkp2400>{{1, pkp::colour::amber}, {8, pkp::colour::white}}};
+    powerkey::message{powerkey::led_on{powerkey::leds{{1}, {}, {}}}},
+    powerkey::message{powerkey::led_on{powerkey::leds{{2, 7}, {}, {}}}},
+    powerkey::message{powerkey::led_on{powerkey::leds{{}, {1, 5}, {}}}},
+    powerkey::message{powerkey::led_on{powerkey::leds{{1, 4, 5, 7}, {2, 4, 6, 7}, {3, 5, 6, 7}}}}};
+// The same maps as a firmware builds them from run-time key numbers: (key, colour) pairs.
+struct led_request {
+    unsigned key;
+    powerkey::colour c;
+    unsigned key2;
+    powerkey::colour c2;
+};
+inline constexpr std::array pkp_led_requests = {
+    led_request{1, powerkey::colour::red, 0, powerkey::colour::off},
+    led_request{2, powerkey::colour::red, 7, powerkey::colour::red},
+    led_request{1, powerkey::colour::green, 5, powerkey::colour::green},
+    led_request{1, powerkey::colour::amber, 8, powerkey::colour::white}};
 inline constexpr std::array pkp_sdo_messages = {
-    pkp::message{pkp::set_led_state{8, pkp::led_state{0x01}}},
-    pkp::message{pkp::set_led_brightness{0x10}},
-    pkp::message{pkp::write_request{pkp::object::heartbeat_time, 50}},
-    pkp::message{pkp::read_request{pkp::object::heartbeat_time}},
+    powerkey::message{powerkey::command{.code = powerkey::command_code::set_led_state,
+                                        .key = 8,
+                                        .state = powerkey::led_state::red_on}},
+    powerkey::message{
+        powerkey::command{.code = powerkey::command_code::set_led_brightness, .level = 0x10}},
+    powerkey::message{
+        powerkey::sdo_write{powerkey::object::heartbeat_time, powerkey::number_value(50)}},
+    powerkey::message{powerkey::sdo_read{powerkey::object::heartbeat_time}},
 };
 
 // A realistic minute on a bus, compressed to 64 frames: mostly key-state and LED PDOs, the
@@ -145,7 +154,7 @@ inline constexpr std::array mixed_log = {
 };
 
 namespace detail {
-constexpr auto pkp_decode = [](const pc::frame& f) { return pkp::decode(f, node, pkp_model); };
+constexpr auto pkp_decode = [](const pc::frame& f) { return powerkey::decode(f, node, pkp_model); };
 }  // namespace detail
 
 static_assert(detail::all_decode(pkp_key_frames, detail::pkp_decode));
@@ -173,58 +182,56 @@ inline constexpr auto mixed_log_messages = [] {
     return m;
 }();
 
-inline void pkp_key_state_decode(std::size_t calls) {
+namespace pkp_detail {
+template <std::size_t N>
+[[gnu::always_inline]] inline void decode_all(const std::array<pc::frame, N>& frames,
+                                              std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(pkp_model);
-    cycle(pkp_key_frames, calls,
-          [n, m](const pc::frame& f) { return pkp::decode_key_state(f, n, m); });
+    cycle(frames, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+}
+template <std::size_t N>
+[[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
+                                              std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(messages, calls,
+          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+}
+}  // namespace pkp_detail
+
+inline void pkp_key_state_decode(std::size_t calls) {
+    pkp_detail::decode_all(pkp_key_frames, calls);
 }
 inline void pkp_key_state_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_key_messages, calls,
-          [n, m](const pkp::key_state& s) { return pkp::encode(n, m, s); });
+    pkp_detail::encode_all(pkp_key_messages, calls);
 }
 inline void pkp_led_on_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_led_on_frames, calls,
-          [n, m](const pc::frame& f) { return pkp::decode_led_on(f, n, m); });
+    pkp_detail::decode_all(pkp_led_on_frames, calls);
 }
 inline void pkp_led_blink_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_led_blink_frames, calls,
-          [n, m](const pc::frame& f) { return pkp::decode_led_blink(f, n, m); });
+    pkp_detail::decode_all(pkp_led_blink_frames, calls);
 }
 inline void pkp_led_on_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_led_messages, calls, [n, m](const pkp::led_on& s) { return pkp::encode(n, m, s); });
+    pkp_detail::encode_all(pkp_led_messages, calls);
 }
+// The firmware's way: the map from run-time key numbers (leds::set), then encode.
 inline void pkp_led_on_encode_typed(std::size_t calls) {
     const auto n = opaque(node);
-    cycle(pkp_led_maps, calls,
-          [n](const pkp::led_map<pkp::model::pkp2400>& map) { return pkp::encode_led_on(n, map); });
+    const auto m = opaque(pkp_model);
+    cycle(pkp_led_requests, calls, [n, m](const led_request& r) {
+        powerkey::leds l;
+        l.set(r.key, r.c).set(r.key2, r.c2);
+        return powerkey::encode(n, m, powerkey::led_on{l});
+    });
 }
 inline void pkp_sdo_request_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_sdo_request_frames, calls,
-          [n, m](const pc::frame& f) { return pkp::decode(f, n, m); });
+    pkp_detail::decode_all(pkp_sdo_request_frames, calls);
 }
 inline void pkp_sdo_response_decode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_sdo_response_frames, calls,
-          [n, m](const pc::frame& f) { return pkp::decode(f, n, m); });
+    pkp_detail::decode_all(pkp_sdo_response_frames, calls);
 }
-inline void pkp_sdo_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(pkp_sdo_messages, calls,
-          [n, m](const pkp::message& msg) { return pkp::encode(n, m, msg); });
-}
+inline void pkp_sdo_encode(std::size_t calls) { pkp_detail::encode_all(pkp_sdo_messages, calls); }
 inline void any_decode_mixed_log(std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(powerkey::model::pkp2400);

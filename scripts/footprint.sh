@@ -37,7 +37,8 @@ for n in "${names[@]}"; do
       -T "$root/bench/firmware/link.ld" -Wl,-Map=fw.map fw.o startup.o libc_min.o -lgcc -o fw.elf
     "${prefix}size" -A fw.elf >sections.txt
     "${prefix}objdump" -d fw.elf >fw.dis
-    "${prefix}nm" -S --size-sort -C fw.elf >symbols.txt )
+    "${prefix}nm" -S --size-sort -C fw.elf >symbols.txt
+    "${prefix}nm" fw.elf >names.txt )
   python3 - "$dir" "$n" "$check" <<'PY' || status=1
 import re, sys, glob, os
 d, name, check = sys.argv[1], sys.argv[2], sys.argv[3] == "1"
@@ -70,8 +71,22 @@ for ci in glob.glob(os.path.join(d, "*.ci")):
 
 # Functions GCC did not compile here (libgcc helpers): read their pushes from the disassembly.
 dis = open(os.path.join(d, "fw.dis")).read()
+# Aliases: libgcc's __aeabi_idiv is __divsi3 under another name (the disassembly labels one).
+aliases = {}
+for line in open(os.path.join(d, "names.txt")):
+    p = line.split()
+    if len(p) == 3:
+        aliases.setdefault(p[0], []).append(p[2])
 def asm_frame(sym):
     m = re.search(r"<" + re.escape(sym) + r">:\n(.*?)(?:\n\n|\Z)", dis, re.S)
+    if not m:
+        for names in aliases.values():
+            if sym in names:
+                for other in names:
+                    if other != sym:
+                        m = re.search(r"<" + re.escape(other) + r">:\n(.*?)(?:\n\n|\Z)", dis, re.S)
+                        if m:
+                            break
     if not m:
         return None
     total = 0
@@ -92,6 +107,8 @@ def own(t):
     for cand in [sym] + [k for k in frame if k.endswith(":" + sym)]:
         if cand in frame:
             return frame[cand]
+    if not any(sym in names for names in aliases.values()):
+        return 0  # in GCC's call graph but not linked: the call was optimised away
     f = asm_frame(sym)
     if f is None:
         unknown.add(sym)

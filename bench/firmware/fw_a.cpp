@@ -2,24 +2,28 @@
 // smallest useful program (issue 7: must fit in 1 KiB of flash with no .data and no .bss).
 // Each pressed key lights its red LED; key 10 makes every lit LED blink.
 // Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
-// can report the stack each one needs.
-#include <powerkey/pk1000/pdo.hpp>
+// can report the stack each one needs. The calls are the one codec's (decode, encode) with the
+// model a constant, as a firmware for one keypad writes them, and the pressed_keys accessor.
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
 
 #include "mailbox.hpp"
 
 namespace co = powerkey::canopen;
 namespace pc = powerkey::can;
-namespace pk = powerkey::pk1000;
+namespace pk = powerkey;
 
 namespace calls {
-[[gnu::noinline]] powerkey::result<pk::key_state> read_keys(const pc::frame& f, co::node_id n) {
-    return pk::decode_key_state(f, n);
+[[gnu::noinline]] std::optional<pk::key_set> read_keys(const pc::frame& f, co::node_id n) {
+    const auto m = pk::decode(f, n, pk::model::pk1000);
+    if (!m) return std::nullopt;
+    return pk::pressed_keys(*m);
 }
-[[gnu::noinline]] pc::frame build_led_on(co::node_id n, const pk::led_on& m) {
-    return pk::encode(n, m);
+[[gnu::noinline]] pk::result<pc::frame> build_led_on(co::node_id n, const pk::led_on& m) {
+    return pk::encode(n, pk::model::pk1000, m);
 }
-[[gnu::noinline]] pc::frame build_led_blink(co::node_id n, const pk::led_blink& m) {
-    return pk::encode(n, m);
+[[gnu::noinline]] pk::result<pc::frame> build_led_blink(co::node_id n, const pk::led_blink& m) {
+    return pk::encode(n, pk::model::pk1000, m);
 }
 }  // namespace calls
 
@@ -30,9 +34,11 @@ namespace calls {
         if (!f) continue;
         const auto keys = calls::read_keys(*f, node);
         if (!keys) continue;
-        const auto lit = pk::led_set::from_mask(keys->pressed.mask());
-        firmware::transmit(calls::build_led_on(node, pk::led_on{lit, {}}));
-        firmware::transmit(calls::build_led_blink(
-            node, pk::led_blink{keys->pressed.contains(10) ? lit : pk::led_set{}, {}}));
+        const auto lit = pk::led_set::from_mask(keys->mask());
+        if (const auto on = calls::build_led_on(node, pk::led_on{{lit, {}, {}}}))
+            firmware::transmit(*on);
+        if (const auto blink = calls::build_led_blink(
+                node, pk::led_blink{{keys->contains(10) ? lit : pk::led_set{}, {}, {}}}))
+            firmware::transmit(*blink);
     }
 }

@@ -1,9 +1,9 @@
-// Footprint firmware (b): a bus monitor that carries the whole any-frame decoder, every profile
-// and every model (the model is read at run time from a configuration register, so nothing can be
+// Footprint firmware (b): a bus monitor that carries the whole any-frame decoder, both object
+// dictionaries and every model (the model is read at run time from a configuration register, so nothing can be
 // left out). For each frame it reports the kind of message, or the error, in a status register.
 // Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
 // can report the stack each one needs.
-#include <powerkey/decoder.hpp>
+#include <powerkey/keypad/codec.hpp>
 
 #include "mailbox.hpp"
 
@@ -18,11 +18,8 @@ struct monitor_registers {
 };
 monitor_registers& monitor() { return *reinterpret_cast<monitor_registers*>(0x4000'6440); }
 
-// The alternative index of the innermost message (profile variant inside the model variant).
-std::uint32_t kind_of(const powerkey::message& m) {
-    return static_cast<std::uint32_t>(m.index() << 8) |
-           static_cast<std::uint32_t>(std::visit([](const auto& v) { return v.index(); }, m));
-}
+// The alternative of the flat message: its index.
+std::uint32_t kind_of(const powerkey::message& m) { return static_cast<std::uint32_t>(m.index()); }
 }  // namespace
 
 namespace calls {

@@ -1,4 +1,5 @@
-// The three memory functions GCC emits calls to, written for size: newlib's versions are
+// The memory functions GCC emits calls to (memcmp: comparing byte arrays, e.g. the encoder's
+// check that a message decodes back equal), written for size: newlib's versions are
 // unrolled for speed and alone would take half of firmware (a)'s 1 KiB budget. Built with
 // -fno-tree-loop-distribute-patterns so that the loops are not turned back into calls to
 // themselves.
@@ -28,5 +29,13 @@ void* memmove(void* dst, const void* src, std::size_t n) {
         while (n-- != 0) d[n] = s[n];
     }
     return dst;
+}
+
+int memcmp(const void* a, const void* b, std::size_t n) {
+    const auto* x = static_cast<const unsigned char*>(a);
+    const auto* y = static_cast<const unsigned char*>(b);
+    for (; n != 0; --n, ++x, ++y)
+        if (*x != *y) return *x < *y ? -1 : 1;
+    return 0;
 }
 }
