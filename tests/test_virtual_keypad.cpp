@@ -28,15 +28,16 @@ struct StringMaker<std::vector<std::string>> {
 }  // namespace doctest
 
 using namespace powerkey;
-using behaviour::millis;
 using behaviour::duration_ms;
+using behaviour::millis;
 using behaviour::run_state;
 using behaviour::virtual_keypad;
 using powerkey_tests::frame_of;
 
 namespace {
 
-// --- the transcript runner ------------------------------------------------------------------------
+// --- the transcript runner
+// ------------------------------------------------------------------------
 
 // Whether the keypad sends a frame (heartbeat, TPDO, SDO reply) rather than hears it.
 bool from_keypad(const can::frame& f) {
@@ -71,7 +72,9 @@ bool same(const can::frame& want, const can::frame& got) {
     return want == got;
 }
 
-std::string text_of(const can::frame& f) { return doctest::StringMaker<can::frame>::convert(f).c_str(); }
+std::string text_of(const can::frame& f) {
+    return doctest::StringMaker<can::frame>::convert(f).c_str();
+}
 
 // The section a row belongs to: "17a" of "17a", "19f E-PK-3 corrected", "PKP 13a LED 8 red".
 std::string_view section_of(std::string_view s) {
@@ -109,8 +112,10 @@ constexpr expected_difference differences[] = {
      "no key: printed after a release; at power-on no key has changed"},
     {m1000, "17b", "595#4301200108000000", because::presumed, "reads red LED 4 on, never set"},
     {m1000, "17b", "595#4301200200020000", because::presumed, "reads green LED 10 on, never set"},
-    {m1000, "18b", "595#4302200108000000", because::presumed, "reads red LED 4 blinking, never set"},
-    {m1000, "18b", "595#4302200200010000", because::presumed, "reads green LED 9 blinking, never set"},
+    {m1000, "18b", "595#4302200108000000", because::presumed,
+     "reads red LED 4 blinking, never set"},
+    {m1000, "18b", "595#4302200200010000", because::presumed,
+     "reads green LED 9 blinking, never set"},
     {m1000, "19c E-PK-2", "595#4F03200304000000", because::erratum,
      "E-PK-2: 05h (cyan) was written, the manual reads 04h"},
     {m1000, "22", "595#4F12200000000000", because::presumed,
@@ -226,7 +231,8 @@ transcript_result run_transcript(const Row (&rows)[N], model m) {
         const auto first = frame_of(rs.front()->frame);
         if (!(from_keypad(first) && first.raw_id() == 0x715 && first[0] == 0)) {
             if (has_pdo && !has_nmt) k.receive(frame_of("000#0115"), t);
-            while (k.transmit()) {}
+            while (k.transmit()) {
+            }
         }
         std::optional<can::frame> last_request;
         bool replied_since_request = false;
@@ -270,8 +276,7 @@ transcript_result run_transcript(const Row (&rows)[N], model m) {
                 }
             }
             std::optional<can::frame> got = k.transmit();
-            if (!got && replied_since_request && last_request &&
-                (f.raw_id() & 0x780u) == 0x580) {
+            if (!got && replied_since_request && last_request && (f.raw_id() & 0x780u) == 0x580) {
                 k.receive(*last_request, t);  // one more read for one more printed reply
             }
             if (!got && (f.raw_id() & 0x780u) == 0x700 && f[0] == 0x00 &&
@@ -360,7 +365,8 @@ TEST_CASE("It answers like the manuals") {
     SUBCASE("PKP-2600") { report(model::pkp2600, run_transcript(pkp_rows::rows, model::pkp2600)); }
 }
 
-// --- one test per behaviour ------------------------------------------------------------------------
+// --- one test per behaviour
+// ------------------------------------------------------------------------
 
 using strings = std::vector<std::string>;
 
@@ -371,7 +377,7 @@ TEST_CASE("boot-up: into pre-operational, or operational when 2012h says so; non
     CHECK(k.state() == run_state::pre_operational);
     CHECK(text_of(*k.transmit()) == "715#00");
     CHECK_FALSE(k.transmit());
-    CHECK(ask(k, "615#2F12200001000000") == "595#6012200000000000");  // active on start-up
+    CHECK(ask(k, "615#2F12200001000000") == "595#6012200000000000");        // active on start-up
     CHECK(ask(k, "615#2F11200000000000", {20}) == "595#6011200000000000");  // no boot-up
     k.power_cycle(millis{100});
     CHECK(k.state() == run_state::operational);
@@ -416,7 +422,8 @@ TEST_CASE("NMT: start, stop, legacy stop, pre-operational, reset node, reset com
 TEST_CASE("heartbeat producer: every heartbeat_time ms, the NMT state; 0 stops it") {
     auto k = booted(model::pk1000);
     CHECK(ask(k, "615#2B17100064000000", {10}) == "595#6017100000000000");
-    CHECK(run_until(k, millis{12}, millis{310}) == strings{"110 715#7F", "210 715#7F", "310 715#7F"});
+    CHECK(run_until(k, millis{12}, millis{310}) ==
+          strings{"110 715#7F", "210 715#7F", "310 715#7F"});
     k.receive(frame_of("000#0115"), millis{350});
     CHECK(run_until(k, millis{351}, millis{410}) == strings{"410 715#05"});
     k.receive(frame_of("000#0215"), millis{420});
@@ -545,20 +552,20 @@ TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command mo
 
 TEST_CASE("SDO aborts with the CiA 301 codes") {
     auto k = booted(model::pk1000);
-    CHECK(ask(k, "615#4004200000000000") == "595#8004200000000206");  // no object
-    CHECK(ask(k, "615#4001200300000000", {20}) == "595#8001200311000906");  // no sub-index
-    CHECK(ask(k, "615#2B00200101000000", {30}) == "595#8000200102000106");  // read only
-    CHECK(ask(k, "615#2F03200140000000", {40}) == "595#8003200131000906");  // too high
-    CHECK(ask(k, "615#2B17100005000000", {50}) == "595#8017100032000906");  // too low
-    CHECK(ask(k, "615#2B03200109000000", {60}) == "595#8003200110000706");  // length
-    CHECK(ask(k, "615#4001100000000000", {70}) == "595#8001100000000206");  // 1001h (31)
-    CHECK(ask(k, "615#2311100161626364", {80}) == "595#8011100120000008");  // not "load"
-    CHECK(ask(k, "615#2301200100000010", {90}) == "595#8001200130000906");  // LED 29
+    CHECK(ask(k, "615#4004200000000000") == "595#8004200000000206");         // no object
+    CHECK(ask(k, "615#4001200300000000", {20}) == "595#8001200311000906");   // no sub-index
+    CHECK(ask(k, "615#2B00200101000000", {30}) == "595#8000200102000106");   // read only
+    CHECK(ask(k, "615#2F03200140000000", {40}) == "595#8003200131000906");   // too high
+    CHECK(ask(k, "615#2B17100005000000", {50}) == "595#8017100032000906");   // too low
+    CHECK(ask(k, "615#2B03200109000000", {60}) == "595#8003200110000706");   // length
+    CHECK(ask(k, "615#4001100000000000", {70}) == "595#8001100000000206");   // 1001h (31)
+    CHECK(ask(k, "615#2311100161626364", {80}) == "595#8011100120000008");   // not "load"
+    CHECK(ask(k, "615#2301200100000010", {90}) == "595#8001200130000906");   // LED 29
     CHECK(ask(k, "615#6000000000000000", {100}) == "595#8000000001000405");  // no upload
     CHECK(ask(k, "615#4008100000000000", {110}) == "595#410810000B000000");
     CHECK(ask(k, "615#7000000000000000", {120}) == "595#8008100000000305");  // toggle
     auto p = booted(model::pkp2400);
-    CHECK(ask(p, "615#4000650100000000") == "595#8000650101000106");  // write only
+    CHECK(ask(p, "615#4000650100000000") == "595#8000650101000106");        // write only
     CHECK(ask(p, "615#2300650101090100", {20}) == "595#8000650130000906");  // key 9 of 8
     CHECK(ask(p, "615#2BFF200101000000", {30}) == "595#80FF200100000206");  // no J1939
 }

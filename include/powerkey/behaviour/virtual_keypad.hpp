@@ -63,25 +63,36 @@ constexpr std::string_view bytes_of(const char (&s)[N]) noexcept {
 }  // namespace detail
 
 inline constexpr keypad_string keypad_strings[] = {
-    {detail::pk1000_bit, object::device_name, detail::bytes_of("BlinkMarine"), 11, true, "PK1000 32"},
+    {detail::pk1000_bit, object::device_name, detail::bytes_of("BlinkMarine"), 11, true,
+     "PK1000 32"},
     {detail::pk1000_bit, object::hardware_version, detail::bytes_of("V_03"), 4, true, "PK1000 33"},
     {detail::pk1000_bit, object::software_version, detail::bytes_of("V2.8"), 4, true, "PK1000 34"},
     // 7 bytes announced and sent: "PK1000" and a NUL (E-CORE-5)
     {detail::pk1000_bit, object::model_name, detail::bytes_of("PK1000\0"), 7, true, "PK1000 35"},
-    {detail::pk1000_bit, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true, "PK1000 48 (E-CORE-1)"},
+    {detail::pk1000_bit, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true,
+     "PK1000 48 (E-CORE-1)"},
     {detail::pkp_bits, object::device_name, detail::bytes_of("BlinkMarine"), 11, true, "PKP 19"},
-    {detail::pkp_bits, object::hardware_version, detail::bytes_of("Rev 1.0\0D\0"), 10, true, "PKP 20 (E-CORE-5)"},
-    {detail::pkp_bits, object::software_version, detail::bytes_of("Rev 1.0\0R\0"), 10, true, "PKP 21 (E-CORE-5)"},
+    {detail::pkp_bits, object::hardware_version, detail::bytes_of("Rev 1.0\0D\0"), 10, true,
+     "PKP 20 (E-CORE-5)"},
+    {detail::pkp_bits, object::software_version, detail::bytes_of("Rev 1.0\0R\0"), 10, true,
+     "PKP 21 (E-CORE-5)"},
     // 7 announced, 8 sent: the keypad goes on after the announced size (E-CORE-2)
-    {detail::pkp2400_bit, object::model_name, detail::bytes_of("PKU2400\0"), 7, true, "PKP 22 (E-CORE-2)"},
-    {detail::pkp2200_bit, object::model_name, detail::bytes_of("PKU2200\0"), 7, true, "inferred from PKP 22"},
-    {detail::pkp2600_bit, object::model_name, detail::bytes_of("PKU2600\0"), 7, true, "inferred from PKP 22"},
+    {detail::pkp2400_bit, object::model_name, detail::bytes_of("PKU2400\0"), 7, true,
+     "PKP 22 (E-CORE-2)"},
+    {detail::pkp2200_bit, object::model_name, detail::bytes_of("PKU2200\0"), 7, true,
+     "inferred from PKP 22"},
+    {detail::pkp2600_bit, object::model_name, detail::bytes_of("PKU2600\0"), 7, true,
+     "inferred from PKP 22"},
     // 40h, size not indicated, 08h in byte 4 (E-CORE-3)
-    {detail::pkp2400_bit, object::device_model, detail::bytes_of("PKU2400\0"), 8, false, "PKP 29 (E-CORE-3)"},
-    {detail::pkp2200_bit, object::device_model, detail::bytes_of("PKU2200\0"), 8, false, "inferred from PKP 29"},
-    {detail::pkp2600_bit, object::device_model, detail::bytes_of("PKU2600\0"), 8, false, "inferred from PKP 29"},
+    {detail::pkp2400_bit, object::device_model, detail::bytes_of("PKU2400\0"), 8, false,
+     "PKP 29 (E-CORE-3)"},
+    {detail::pkp2200_bit, object::device_model, detail::bytes_of("PKU2200\0"), 8, false,
+     "inferred from PKP 29"},
+    {detail::pkp2600_bit, object::device_model, detail::bytes_of("PKU2600\0"), 8, false,
+     "inferred from PKP 29"},
     // 6 announced, 8 sent (E-CORE-4)
-    {detail::pkp_bits, object::serial_number_string, detail::bytes_of("000000\0\0"), 6, true, "PKP 31 (E-CORE-4)"},
+    {detail::pkp_bits, object::serial_number_string, detail::bytes_of("000000\0\0"), 6, true,
+     "PKP 31 (E-CORE-4)"},
 };
 
 // The string object `o` of model m reports; nullopt when it has none.
@@ -113,7 +124,8 @@ struct keypad_options {
 struct backlight_state {
     powerkey::level level = 0;
     backlight_colour colour = backlight_colour::amber;
-    friend constexpr bool operator==(const backlight_state&, const backlight_state&) noexcept = default;
+    friend constexpr bool operator==(const backlight_state&,
+                                     const backlight_state&) noexcept = default;
 };
 
 template <std::size_t Outbox = 16>
@@ -121,8 +133,7 @@ class virtual_keypad {
 public:
     // A keypad of model m, unpowered, with the manual's default settings (PK1000 3, PKP 3) and
     // node id `node` (default 15h) as its stored node id.
-    constexpr explicit virtual_keypad(model m,
-                                      canopen::node_id node = canopen::default_node_id,
+    constexpr explicit virtual_keypad(model m, canopen::node_id node = canopen::default_node_id,
                                       keypad_options options = {}) noexcept
         : model_(powerkey::detail::is_model(m) ? m : model::pk1000),
           info_(powerkey::detail::row_of(model_)),
@@ -361,9 +372,10 @@ private:
         baud_ = static_cast<baud_rate>(value(object::baud_rate) & 7u);
         on_ = {};
         blink_ = {};
-        brightness_ = powerkey::level::make(value(object::default_led_brightness)).value_or(powerkey::level{0x3F});
-        backlight_.level =
-            powerkey::level::make(value(object::default_backlight_level)).value_or(powerkey::level{0});
+        brightness_ = powerkey::level::make(value(object::default_led_brightness))
+                          .value_or(powerkey::level{0x3F});
+        backlight_.level = powerkey::level::make(value(object::default_backlight_level))
+                               .value_or(powerkey::level{0});
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         keys_ = {};
         rpdo_buffer_ = {};
@@ -538,8 +550,7 @@ private:
             if (options_.drop_sdo_while_busy) return;  // busy: dropped, no reply, no abort
         }
         const std::uint8_t b0 = f[0];
-        const canopen::sdo_address a{
-            static_cast<std::uint16_t>(f[1] | (f[2] << 8)), f[3]};
+        const canopen::sdo_address a{static_cast<std::uint16_t>(f[1] | (f[2] << 8)), f[3]};
         switch (b0 >> 5) {
             case 2: return upload(a, t);
             case 1: return download(f, a, t);
@@ -589,7 +600,8 @@ private:
     }
 
     constexpr void segment(const can::frame& f, millis t) noexcept {
-        if (!upload_.active) return abort({}, canopen::sdo_abort_code::invalid_command_specifier, t);
+        if (!upload_.active)
+            return abort({}, canopen::sdo_abort_code::invalid_command_specifier, t);
         const bool toggle = (f[0] & 0x10) != 0;
         if (toggle != upload_.toggle) {
             const auto a = upload_.address;
@@ -622,8 +634,7 @@ private:
         const std::uint32_t v =
             static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
         after_reply then = after_reply::none;
-        if (const auto code = check_and_apply(*row, f, v, then, t))
-            return abort(a, *code, t);
+        if (const auto code = check_and_apply(*row, f, v, then, t)) return abort(a, *code, t);
         can::payload p{};
         p[0] = 0x60;
         p[1] = f[1];
@@ -684,8 +695,12 @@ private:
         switch (r.id) {
             // the run-time levels (PK1000 19 a-c, PKP 30)
             case object::led_brightness: brightness_ = powerkey::level::make(v).value(); break;
-            case object::backlight_level: backlight_.level = powerkey::level::make(v).value(); break;
-            case object::backlight_colour: backlight_.colour = static_cast<backlight_colour>(v); break;
+            case object::backlight_level:
+                backlight_.level = powerkey::level::make(v).value();
+                break;
+            case object::backlight_colour:
+                backlight_.colour = static_cast<backlight_colour>(v);
+                break;
             case object::heartbeat_time: next_heartbeat_ = t + duration_ms{v}; break;
             case object::tpdo1_event_timer:
             case object::tpdo1_transmission_type:
@@ -701,8 +716,7 @@ private:
     }
 
     // The PKP command module, 6500h sub 1 (PKP 13 a-m).
-    constexpr std::optional<canopen::sdo_abort_code> command(const can::frame& f,
-                                                             after_reply& then,
+    constexpr std::optional<canopen::sdo_abort_code> command(const can::frame& f, after_reply& then,
                                                              millis) noexcept {
         const auto m = powerkey::decode(f, node_, model_);
         const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
@@ -723,7 +737,9 @@ private:
                     c->enabled ? std::uint32_t{c->period_10ms} * 10u : 0u;
                 next_periodic_ = now_ + duration_ms{periodic_ms()};
                 break;
-            case command_code::set_boot_up: value_[idx(object::boot_up)] = c->enabled ? 1 : 0; break;
+            case command_code::set_boot_up:
+                value_[idx(object::boot_up)] = c->enabled ? 1 : 0;
+                break;
             case command_code::set_startup_show:
                 value_[idx(object::startup_show)] = static_cast<std::uint32_t>(c->show);
                 break;
@@ -741,7 +757,8 @@ private:
                 value_[idx(object::default_led_brightness)] = c->level.value();
                 break;
             case command_code::set_default_backlight_colour:
-                value_[idx(object::default_backlight_colour)] = static_cast<std::uint32_t>(c->colour);
+                value_[idx(object::default_backlight_colour)] =
+                    static_cast<std::uint32_t>(c->colour);
                 break;
         }
         return std::nullopt;
@@ -793,7 +810,8 @@ private:
         reply(p, t);
     }
     // An SDO reply leaves sdo_response_ms after the request (released by advance()).
-    constexpr void reply(const can::payload& p, millis t, after_reply then = after_reply::none) noexcept {
+    constexpr void reply(const can::payload& p, millis t,
+                         after_reply then = after_reply::none) noexcept {
         pending_ = pending_reply{p, t + duration_ms{options_.sdo_response_ms}, then, node_};
         release_reply(t);
     }

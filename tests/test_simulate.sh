@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Tests of `powerkey simulate` (examples/tool/cmd_simulate.cpp), registered by
+# examples/CMakeLists.txt:  test_simulate.sh SIMULATE_BINARY SOURCE_DIR
+# The shipped session log (examples/logs/session-pk1000.log) gives exactly the keypad's frames
+# below; bare frames on stdin, --node, bad lines and usage errors behave as documented.
+set -uo pipefail
+sim=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+# The session: boot-up first, one reply per request 1 ms after it, heartbeats every 100 ms from
+# the 1017h write, the scripted key 3 press and release as key-state PDOs (tick = 100 ms units).
+"$sim" --model pk1000 --press 0.42:3 --release 0.47:3 "$src/examples/logs/session-pk1000.log" \
+  > "$tmp/out" || fail "session: exit status $?"
+cat > "$tmp/want" <<'OUT'
+(1700000000.000000) can0 715#00
+(1700000000.101000) can0 595#43181001E2030000
+(1700000000.111000) can0 595#410B100007000000
+(1700000000.121000) can0 595#01504B3130303000
+(1700000000.131000) can0 595#6017100000000000
+(1700000000.141000) can0 595#6003200100000000
+(1700000000.151000) can0 595#6000140200000000
+(1700000000.230000) can0 715#05
+(1700000000.330000) can0 715#05
+(1700000000.420000) can0 195#0400000004
+(1700000000.430000) can0 715#05
+(1700000000.470000) can0 195#0000000004
+(1700000000.530000) can0 715#05
+OUT
+diff "$tmp/want" "$tmp/out" || fail "session output differs"
+
+# Bare frames on stdin (no timestamps: all at power-on), another node, a PKP model: the second
+# request arrives while the first is being answered and is dropped, as real keypads do.
+printf '621#4017100000000000\n621#4000100000000000\n' |
+  "$sim" --model pkp2400 --node 0x21 > "$tmp/out" || fail "stdin: exit status $?"
+printf '(0.000000) can0 721#00\n(0.001000) can0 5A1#4B17100000000000\n' > "$tmp/want"
+diff "$tmp/want" "$tmp/out" || fail "stdin output differs"
+
+# A node change on the PKP: the reply from the old id, then the boot-up from the new one.
+echo '(5.000000) can0 615#2300650170180000' | "$sim" --model PKP-2200-LI > "$tmp/out"
+printf '(5.000000) can0 715#00\n(5.001000) can0 595#6000650100000000\n(5.001000) can0 718#00\n' \
+  > "$tmp/want"
+diff "$tmp/want" "$tmp/out" || fail "node change output differs"
+
+# A bad line: reported with file and line on stderr, exit status 1, the rest still simulated.
+printf '615#4010200000000000\nnot a frame\n' > "$tmp/bad.log"
+"$sim" --model pk1000 "$tmp/bad.log" > "$tmp/out" 2> "$tmp/err"
+[ $? -eq 1 ] || fail "bad line: exit status not 1"
+grep -q "bad.log:2: error" "$tmp/err" || fail "bad line: no file:line error"
+grep -q "595#4F10200004000000" "$tmp/out" || fail "bad line: the good line was not answered"
+
+# Usage errors: exit status 2.
+"$sim" > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"
+"$sim" --model pk9999 > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown model: exit status not 2"
+"$sim" --model pk1000 --press 1:11 > /dev/null 2>&1; [ $? -eq 2 ] || fail "key 11: exit status not 2"
+
+exit $failed
