@@ -3,28 +3,35 @@
 
 #include <powerkey/can/candump.hpp>
 
+#include "support.hpp"
+
 #include <array>
 #include <string_view>
 
 namespace {
 using namespace powerkey;
 using can::candump;
+using powerkey_tests::check_rows;
+using powerkey_tests::first_failing;
 
+struct text_row {
+    std::string_view section;
+    std::string_view frame;
+};
 // Text that round-trips exactly, as logs print it.
-constexpr std::string_view round_trip_rows[] = {
-    "615#4000200100000000",       // PK1000 16, read key states
-    "18EF2100#041B8000FFFFFFFF",  // PK1000 49, switch back to CANopen
-    "080#",                       // PK1000 10, SYNC
-    "715#00",                     // PK1000 8, boot-up
-    "000#0115",                   // PK1000 4, start node 15h
+constexpr text_row round_trip_rows[] = {
+    {"PK1000 16, read key states", "615#4000200100000000"},
+    {"PK1000 49, switch back to CANopen", "18EF2100#041B8000FFFFFFFF"},
+    {"PK1000 10, SYNC", "080#"},
+    {"PK1000 8, boot-up", "715#00"},
+    {"PK1000 4, start node 15h", "000#0115"},
 };
 
-constexpr bool round_trips() {
-    for (auto text : round_trip_rows)
-        if (can::format_candump(can::parse_candump(text).value()).view() != text) return false;
-    return true;
+constexpr bool round_trips(const text_row& r) {
+    const auto f = can::parse_candump(r.frame);
+    return f && can::format_candump(*f).view() == r.frame;
 }
-static_assert(round_trips());
+static_assert(first_failing(round_trip_rows, round_trips) == std::size(round_trip_rows));
 
 static_assert(!candump("615#00").is_extended());
 static_assert(candump("18EF2100#00").is_extended());
@@ -36,45 +43,42 @@ static_assert(candump("615#01") != candump("615#0100"));
 static_assert(candump("615#0a") == candump("615#0A"));
 
 struct bad_text {
-    std::string_view text;
+    std::string_view section;
+    std::string_view frame;  // the text
     errc error;
 };
 constexpr bad_text bad_rows[] = {
-    {"", errc::syntax_error},
-    {"615", errc::syntax_error},
-    {"61#00", errc::syntax_error},
-    {"6150#00", errc::syntax_error},
-    {"615#0", errc::syntax_error},
-    {"615#0G", errc::syntax_error},
-    {"G15#00", errc::syntax_error},
-    {"615#R", errc::syntax_error},
-    {"800#00", errc::value_out_of_range},
-    {"20000000#00", errc::value_out_of_range},
-    {"615#000000000000000000", errc::wrong_length},
+    {"empty", "", errc::syntax_error},
+    {"no #", "615", errc::syntax_error},
+    {"2-digit id", "61#00", errc::syntax_error},
+    {"4-digit id", "6150#00", errc::syntax_error},
+    {"odd digits", "615#0", errc::syntax_error},
+    {"non-hex data", "615#0G", errc::syntax_error},
+    {"non-hex id", "G15#00", errc::syntax_error},
+    {"remote frame", "615#R", errc::syntax_error},
+    {"11-bit id above 7FFh", "800#00", errc::value_out_of_range},
+    {"29-bit id above 1FFFFFFFh", "20000000#00", errc::value_out_of_range},
+    {"9 bytes", "615#000000000000000000", errc::wrong_length},
 };
 
-constexpr bool bad_rows_fail() {
-    for (auto row : bad_rows)
-        if (can::parse_candump(row.text) != row.error) return false;
-    return true;
-}
-static_assert(bad_rows_fail());
+constexpr bool fails(const bad_text& r) { return can::parse_candump(r.frame) == r.error; }
+static_assert(first_failing(bad_rows, fails) == std::size(bad_rows));
 }  // namespace
 
 TEST_CASE("candump text round-trips the manual frames") {
-    CHECK(round_trips());
-    for (auto text : round_trip_rows) {
-        const auto f = can::parse_candump(text);
+    check_rows(round_trip_rows, round_trips);
+    for (const auto& r : round_trip_rows) {
+        const auto f = can::parse_candump(r.frame);
         REQUIRE(f.has_value());
-        CHECK(can::format_candump(*f).view() == text);
+        CHECK(can::format_candump(*f).view() == r.frame);
     }
 }
 
 TEST_CASE("malformed candump text is a clear error") {
-    CHECK(bad_rows_fail());
-    for (auto row : bad_rows) {
-        CAPTURE(row.text);
-        CHECK(can::parse_candump(row.text).error() == row.error);
+    check_rows(bad_rows, fails);
+    for (const auto& r : bad_rows) {
+        CAPTURE(r.frame);
+        CHECK(can::parse_candump(r.frame).error() == r.error);
     }
 }
 

@@ -10,11 +10,17 @@
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/names.hpp>
 
+#include "support.hpp"
+
 #include <string_view>
 
 namespace {
 using namespace powerkey;
 using namespace powerkey::canopen;
+
+using powerkey_tests::check_rows;
+using powerkey_tests::first_failing;
+using powerkey_tests::frame_of;
 
 constexpr node_id keypad = 0x15;
 
@@ -34,29 +40,45 @@ static_assert(cob_id(function::tpdo3, keypad).value() == 0x395);
 static_assert(cob_id(function::tpdo4, keypad).value() == 0x495);
 
 struct cob_row {
-    std::uint16_t id;
+    std::string_view section;
+    std::string_view frame;  // the COB-ID, as a frame without data
     cob_info info;
 };
 constexpr cob_row cob_rows[] = {
-    {0x000, {function::nmt, 0}},       {0x080, {function::sync, 0}},
-    {0x195, {function::tpdo1, 0x15}},  {0x215, {function::rpdo1, 0x15}},
-    {0x315, {function::rpdo2, 0x15}},  {0x415, {function::rpdo3, 0x15}},
-    {0x515, {function::rpdo4, 0x15}},  {0x595, {function::sdo_tx, 0x15}},
-    {0x615, {function::sdo_rx, 0x15}}, {0x715, {function::heartbeat, 0x15}},
-    {0x181, {function::tpdo1, 1}},     {0x77F, {function::heartbeat, 0x7F}},
-    {0x095, {function::other, 0}},  // EMCY 080h + node: not used by the keypads
-    {0x100, {function::other, 0}},     {0x280, {function::other, 0}},
-    {0x295, {function::tpdo2, 0x15}},  // TPDO2..4: the PKP-3500-MT's encoders and inputs
-    {0x395, {function::tpdo3, 0x15}},  {0x495, {function::tpdo4, 0x15}},
-    {0x5FF, {function::sdo_tx, 0x7F}}, {0x600, {function::other, 0}},
-    {0x7E5, {function::other, 0}},  // LSS: past 77Fh, the last heartbeat COB-ID
+    {"NMT", "000#", {function::nmt, 0}},
+    {"SYNC", "080#", {function::sync, 0}},
+    {"key state", "195#", {function::tpdo1, 0x15}},
+    {"LED on", "215#", {function::rpdo1, 0x15}},
+    {"LED blink", "315#", {function::rpdo2, 0x15}},
+    {"LED brightness", "415#", {function::rpdo3, 0x15}},
+    {"backlight", "515#", {function::rpdo4, 0x15}},
+    {"SDO reply", "595#", {function::sdo_tx, 0x15}},
+    {"SDO request", "615#", {function::sdo_rx, 0x15}},
+    {"heartbeat", "715#", {function::heartbeat, 0x15}},
+    {"key state of node 1", "181#", {function::tpdo1, 1}},
+    {"heartbeat of node 7Fh", "77F#", {function::heartbeat, 0x7F}},
+    {"EMCY 080h + node: not used by the keypads", "095#", {function::other, 0}},
+    {"TIME", "100#", {function::other, 0}},
+    {"TPDO2 base, no node", "280#", {function::other, 0}},
+    {"TPDO2..4: the PKP-3500-MT's encoders and inputs", "295#", {function::tpdo2, 0x15}},
+    {"TPDO3", "395#", {function::tpdo3, 0x15}},
+    {"TPDO4", "495#", {function::tpdo4, 0x15}},
+    {"SDO reply of node 7Fh", "5FF#", {function::sdo_tx, 0x7F}},
+    {"SDO request base, no node", "600#", {function::other, 0}},
+    {"LSS: past 77Fh, the last heartbeat COB-ID", "7E5#", {function::other, 0}},
 };
-constexpr bool cob_rows_hold() {
-    for (auto r : cob_rows)
-        if (classify(can::standard_id::make(r.id).value()) != r.info) return false;
+constexpr bool classifies(const cob_row& r) {
+    const auto f = frame_of(r.frame);
+    if (classify(f) != r.info) return false;
+    if (classify(f.std_id().value()) != r.info) return false;
+    // The per-node functions give the id back.
+    const auto node = node_id::make(r.info.node);
+    if (node && r.info.fn != function::nmt && r.info.fn != function::sync &&
+        r.info.fn != function::other)
+        return cob_id(r.info.fn, *node).value() == f.raw_id();
     return true;
 }
-static_assert(cob_rows_hold());
+static_assert(first_failing(cob_rows, classifies) == std::size(cob_rows));
 // Every 29-bit identifier is J1939 (where the keypads' protocol switch lives), with no node.
 static_assert(classify(can::candump("18EF2100#041B8000FFFFFFFF")) == cob_info{function::j1939, 0});
 static_assert(classify(can::candump("00000615#00")) == cob_info{function::j1939, 0});
@@ -88,12 +110,11 @@ constexpr nmt_row nmt_rows[] = {
     {"PK1000 29: start keypad 15h (heartbeat example)", "000#0115", {nmt_command::start, 0x15}},
     {"CiA 301: reset communication", "000#8200", {nmt_command::reset_communication, 0}},
 };
-constexpr bool nmt_encodes() {
-    for (auto r : nmt_rows)
-        if (encode(r.expected) != can::parse_candump(r.frame).value()) return false;
-    return true;
+constexpr bool nmt_both_ways(const nmt_row& r) {
+    return encode(r.expected) == frame_of(r.frame) &&
+           decode_nmt(frame_of(r.frame)) == result<nmt_message>(r.expected);
 }
-static_assert(nmt_encodes());
+static_assert(first_failing(nmt_rows, nmt_both_ways) == std::size(nmt_rows));
 
 // --- SYNC, boot-up, heartbeat -------------------------------------------------------------------
 static_assert(encode(sync_message{}) == can::candump("080#"));  // PK1000 10
@@ -110,12 +131,11 @@ constexpr heartbeat_row heartbeat_rows[] = {
     {"PK1000 29, PKP 9: operational", "715#05", {nmt_state::operational}},
     {"PK1000 29 table: stop", "715#04", {nmt_state::stopped}},
 };
-constexpr bool heartbeats_encode() {
-    for (auto r : heartbeat_rows)
-        if (encode(keypad, r.expected) != can::parse_candump(r.frame).value()) return false;
-    return true;
+constexpr bool heartbeat_both_ways(const heartbeat_row& r) {
+    return encode(keypad, r.expected) == frame_of(r.frame) &&
+           decode_heartbeat(frame_of(r.frame), keypad) == result<heartbeat_message>(r.expected);
 }
-static_assert(heartbeats_encode());
+static_assert(first_failing(heartbeat_rows, heartbeat_both_ways) == std::size(heartbeat_rows));
 
 // --- expedited SDO (PK1000 29 and PKP 17: object 1017h; PK1000 36: 1011h "load") ---------------
 struct sdo_request_row {
@@ -176,15 +196,17 @@ constexpr sdo_response_row sdo_response_rows[] = {
      sdo_abort{{0x2001, 0}, static_cast<sdo_abort_code>(0x12345678)}},
 };
 
-constexpr bool sdo_rows_encode() {
-    for (const auto& r : sdo_request_rows)
-        if (encode_request(keypad, r.expected) != can::parse_candump(r.frame).value()) return false;
-    for (const auto& r : sdo_response_rows)
-        if (encode_response(keypad, r.expected) != can::parse_candump(r.frame).value())
-            return false;
-    return true;
+constexpr bool request_both_ways(const sdo_request_row& r) {
+    return encode_request(keypad, r.expected) == frame_of(r.frame) &&
+           decode_sdo_request(frame_of(r.frame), keypad) == result<sdo_request>(r.expected);
 }
-static_assert(sdo_rows_encode());
+constexpr bool response_both_ways(const sdo_response_row& r) {
+    return encode_response(keypad, r.expected) == frame_of(r.frame) &&
+           decode_sdo_response(frame_of(r.frame), keypad) == result<sdo_response>(r.expected);
+}
+static_assert(first_failing(sdo_request_rows, request_both_ways) == std::size(sdo_request_rows));
+static_assert(first_failing(sdo_response_rows, response_both_ways) ==
+              std::size(sdo_response_rows));
 // A client abort as a message of its own keeps its direction: 600h + node.
 static_assert(encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
               can::candump("615#8000200100000405"));
@@ -197,7 +219,7 @@ static_assert(expedited_data{3, {1, 2, 3, 0xFF}}.value() == 0x030201);
 
 // --- what the decoders refuse -------------------------------------------------------------------
 struct bad_row {
-    std::string_view why;
+    std::string_view section;
     std::string_view frame;
     errc error;
 };
@@ -254,11 +276,13 @@ constexpr bad_row bad_sdo_response[] = {
     {"block download response A0h", "595#A000000000000000", errc::unknown_command},
 };
 
+template <class Decode>
+constexpr auto refused_by(Decode decode) {
+    return [decode](const bad_row& r) { return decode(frame_of(r.frame)) == r.error; };
+}
 template <class Decode, std::size_t N>
 constexpr bool all_refused(const bad_row (&rows)[N], Decode decode) {
-    for (const auto& r : rows)
-        if (decode(can::parse_candump(r.frame).value()) != r.error) return false;
-    return true;
+    return first_failing(rows, refused_by(decode)) == N;
 }
 constexpr auto nmt_decoder = [](const can::frame& f) { return decode_nmt(f); };
 constexpr auto sync_decoder = [](const can::frame& f) { return decode_sync(f); };
@@ -275,8 +299,9 @@ static_assert(all_refused(bad_sdo_response, response_decoder));
 
 template <class Decode, std::size_t N>
 void check_refused(const bad_row (&rows)[N], Decode decode) {
+    check_rows(rows, refused_by(decode));
     for (const auto& r : rows) {
-        CAPTURE(r.why);
+        CAPTURE(r.section);
         CAPTURE(r.frame);
         const auto f = can::parse_candump(r.frame);
         REQUIRE(f.has_value());
@@ -285,18 +310,10 @@ void check_refused(const bad_row (&rows)[N], Decode decode) {
 }
 }  // namespace
 
-TEST_CASE("COB-IDs both ways") {
-    CHECK(cob_rows_hold());
-    for (auto r : cob_rows) {
-        CAPTURE(r.id);
-        const auto info = classify(can::standard_id::make(r.id).value());
-        CHECK(info == r.info);
-        if (const auto node = node_id::make(info.node); node && info.fn != function::other)
-            CHECK(cob_id(info.fn, *node).value() == r.id);
-    }
-}
+TEST_CASE("COB-IDs both ways") { check_rows(cob_rows, classifies); }
 
 TEST_CASE("NMT rows both ways") {
+    check_rows(nmt_rows, nmt_both_ways);
     for (const auto& r : nmt_rows) {
         CAPTURE(r.section);
         const auto f = can::parse_candump(r.frame);
@@ -315,6 +332,7 @@ TEST_CASE("NMT rows both ways") {
 
 TEST_CASE("SYNC, boot-up and heartbeat rows both ways") {
     CHECK(decode_sync(can::candump("080#")).has_value());
+    check_rows(heartbeat_rows, heartbeat_both_ways);
     for (const auto& r : heartbeat_rows) {
         CAPTURE(r.section);
         const auto f = can::parse_candump(r.frame);
@@ -328,6 +346,8 @@ TEST_CASE("SYNC, boot-up and heartbeat rows both ways") {
 }
 
 TEST_CASE("SDO rows both ways") {
+    check_rows(sdo_request_rows, request_both_ways);
+    check_rows(sdo_response_rows, response_both_ways);
     for (const auto& r : sdo_request_rows) {
         CAPTURE(r.section);
         const auto f = can::parse_candump(r.frame);

@@ -5,33 +5,37 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 
+#include "support.hpp"
+
 #include <string_view>
 
 namespace {
 using namespace powerkey;
 using namespace powerkey::j1939;
 
+using powerkey_tests::check_rows;
+using powerkey_tests::first_failing;
+
 struct id_row {
-    std::string_view what;
-    std::uint32_t id;
+    std::string_view section;
+    std::string_view frame;  // the identifier, as a frame without data
     identifier fields;
 };
 constexpr id_row id_rows[] = {
-    {"PK1000 49: switch back, PDU1 to the keypad", 0x18EF2100, {6, 0xEF00, 0x21, 0x00}},
-    {"PDU1 with the data page bit", 0x19EF2100, {6, 0x1EF00, 0x21, 0x00}},
-    {"PDU1, priority 0, global destination", 0x00EAFFFE, {0, 0xEA00, 0xFF, 0xFE}},
-    {"PDU2 (PGN FEF1h, CCVS), no destination", 0x18FEF100, {6, 0xFEF1, global_address, 0x00}},
-    {"priority 7, extended data page", 0x1EF00021, {7, 0x2F000, global_address, 0x21}},
+    {"PK1000 49: switch back, PDU1 to the keypad", "18EF2100#", {6, 0xEF00, 0x21, 0x00}},
+    {"PDU1 with the data page bit", "19EF2100#", {6, 0x1EF00, 0x21, 0x00}},
+    {"PDU1, priority 0, global destination", "00EAFFFE#", {0, 0xEA00, 0xFF, 0xFE}},
+    {"PDU2 (PGN FEF1h, CCVS), no destination", "18FEF100#", {6, 0xFEF1, global_address, 0x00}},
+    {"priority 7, extended data page", "1EF00021#", {7, 0x2F000, global_address, 0x21}},
 };
-constexpr bool ids_hold() {
-    for (const auto& r : id_rows) {
-        const auto made = make_id(r.fields);
-        if (!made || made->value() != r.id) return false;
-        if (parse_id(can::extended_id::make(r.id).value()) != r.fields) return false;
-    }
-    return true;
+constexpr bool id_holds(const id_row& r) {
+    const auto id = powerkey_tests::frame_of(r.frame).raw_id();
+    const auto made = make_id(r.fields);
+    if (!made || made->value() != id) return false;
+    return parse_id(can::extended_id::make(id).value()) == r.fields &&
+           parse_id(powerkey_tests::frame_of(r.frame)) == r.fields;
 }
-static_assert(ids_hold());
+static_assert(first_failing(id_rows, id_holds) == std::size(id_rows));
 
 // PDU1 PGNs keep the destination in its own field; a PDU2 message has none.
 static_assert(make_id({6, 0xEF21, 0x21, 0}) == errc::value_out_of_range);
@@ -48,7 +52,7 @@ static_assert(decode_switch_to_canopen(can::candump("18EF2100#041B8000FFFFFFFF")
               switch_to_canopen{});
 
 struct bad_row {
-    std::string_view why;
+    std::string_view section;
     std::string_view frame;
     errc error;
 };
@@ -59,21 +63,19 @@ constexpr bad_row bad_rows[] = {
     {"7 bytes", "18EF2100#041B8000FFFFFF", errc::wrong_length},
     {"other proprietary data", "18EF2100#041B8000FFFFFFFE", errc::unknown_command},
 };
-constexpr bool all_refused() {
-    for (const auto& r : bad_rows)
-        if (decode_switch_to_canopen(can::parse_candump(r.frame).value()) != r.error) return false;
-    return true;
+constexpr bool refused(const bad_row& r) {
+    return decode_switch_to_canopen(powerkey_tests::frame_of(r.frame)) == r.error;
 }
-static_assert(all_refused());
+static_assert(first_failing(bad_rows, refused) == std::size(bad_rows));
 }  // namespace
 
 TEST_CASE("J1939 identifiers both ways") {
-    CHECK(ids_hold());
+    check_rows(id_rows, id_holds);
     for (const auto& r : id_rows) {
-        CAPTURE(r.what);
+        CAPTURE(r.section);
         const auto made = make_id(r.fields);
         REQUIRE(made.has_value());
-        CHECK(made->value() == r.id);
+        CHECK(made->value() == powerkey_tests::frame_of(r.frame).raw_id());
         CHECK(parse_id(*made) == r.fields);
     }
 }
@@ -88,8 +90,9 @@ TEST_CASE("the switch back to CANopen, PK1000 49") {
     CHECK(m->priority == six);
     CHECK(m->destination == 0x21);
     CHECK(m->source == 0x00);
+    check_rows(bad_rows, refused);
     for (const auto& r : bad_rows) {
-        CAPTURE(r.why);
+        CAPTURE(r.section);
         CHECK(decode_switch_to_canopen(can::parse_candump(r.frame).value()).error() == r.error);
     }
 }
