@@ -5,6 +5,8 @@
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
 
+#include "support.hpp"
+
 #include <array>
 #include <string_view>
 
@@ -128,23 +130,19 @@ constexpr bool replay(const transcript& t, canopen::upload_policy policy, errc e
     return r.text() == t.text && r.notes() == t.notes;
 }
 
-constexpr bool all_transcripts_report() {
-    for (const auto& t : transcripts)
-        if (!replay<32>(t, canopen::upload_policy::report, errc{})) return false;
-    return true;
+using powerkey_tests::first_failing;
+
+constexpr bool reports(const transcript& t) {
+    return replay<32>(t, canopen::upload_policy::report, errc{});
 }
-static_assert(all_transcripts_report());
+static_assert(first_failing(transcripts, reports) == std::size(transcripts));
 
 // Strict mode: the transcripts that break the size rules end in size_mismatch; the others pass.
-constexpr bool all_transcripts_strict() {
-    for (const auto& t : transcripts) {
-        const bool breaks = t.notes.size_mismatch || t.notes.continued_past_size;
-        if (!replay<32>(t, canopen::upload_policy::strict, breaks ? errc::size_mismatch : errc{}))
-            return false;
-    }
-    return true;
+constexpr bool strict(const transcript& t) {
+    const bool breaks = t.notes.size_mismatch || t.notes.continued_past_size;
+    return replay<32>(t, canopen::upload_policy::strict, breaks ? errc::size_mismatch : errc{});
 }
-static_assert(all_transcripts_strict());
+static_assert(first_failing(transcripts, strict) == std::size(transcripts));
 
 // A buffer one byte too small for "BlinkMarine" ends in buffer_too_small, never past the end.
 static_assert(replay<10>(transcripts[0], canopen::upload_policy::report, errc::buffer_too_small));
@@ -189,20 +187,15 @@ constexpr bool fault_ends_in(const fault& f) {
     return replay<32>({f.what, {0x1008, 0}, f.frames, "", "", clean},
                       canopen::upload_policy::report, f.error);
 }
-constexpr bool all_faults() {
-    for (const auto& f : faults)
-        if (!fault_ends_in(f)) return false;
-    return true;
-}
+constexpr bool all_faults() { return first_failing(faults, fault_ends_in) == std::size(faults); }
 static_assert(all_faults());
 }  // namespace
 
 TEST_CASE("segmented reader: every string read of both manuals") {
     for (const auto& t : transcripts) {
         CAPTURE(t.section);
-        CHECK(replay<32>(t, canopen::upload_policy::report, errc{}));
-        const bool breaks = t.notes.size_mismatch || t.notes.continued_past_size;
-        CHECK(replay<32>(t, canopen::upload_policy::strict, breaks ? errc::size_mismatch : errc{}));
+        CHECK(reports(t));
+        CHECK(strict(t));
     }
 }
 
