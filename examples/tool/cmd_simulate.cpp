@@ -2,7 +2,8 @@
 //
 // Runs the virtual keypad (include/powerkey/behaviour/virtual_keypad.hpp) as a filter: reads the
 // frames a controller sends, as candump log lines "(time) can0 ID#DATA" (or bare "ID#DATA", or
-// candump's "can0  615   [8]  40 00 .." form), from the files or standard input, and writes
+// candump's "can0  615   [8]  40 00 .." form; blank lines and lines starting with # or // are
+// skipped), from the files in order or standard input ("-" or none), and writes
 // the frames the keypad sends as candump log lines in time order, starting with its boot-up.
 //
 //   --model M       pk1000, pkp2200, pkp2400, pkp2600 (any name parse_model takes)
@@ -100,7 +101,7 @@ line_result parse_line(std::string_view line) {
         return s;
     };
     line = trim(line);
-    if (line.empty() || line.front() == '#') return {};
+    if (line.empty() || line.front() == '#' || line.substr(0, 2) == "//") return {};
     double time = std::nan("");
     if (line.front() == '(') {
         const auto close = line.find(')');
@@ -211,10 +212,13 @@ int run_simulate(int argc, char** argv) {
 
     std::vector<input_frame> frames;
     bool ok = true;
-    if (files.empty()) {
-        ok = read_log(std::cin, "<stdin>", frames);
-    } else {
+    if (files.empty()) files.emplace_back("-");
+    {
         for (const auto& f : files) {
+            if (f == "-") {
+                ok = read_log(std::cin, "<stdin>", frames) && ok;
+                continue;
+            }
             std::ifstream in(f);
             if (!in) {
                 std::fprintf(stderr, "powerkey simulate: cannot read %s\n", f.c_str());
