@@ -452,11 +452,22 @@ TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-o
     CHECK(k.state() == run_state::pre_operational);
     CHECK(k.led_on() == leds{});
     CHECK(k.backlight().level == powerkey::level{0});
-    // the producer comes back: the keypad stays pre-operational until a new NMT start
+    // the producer comes back: the keypad stays pre-operational until a new NMT start (NOTE 2)
     k.receive(frame_of("701#05"), millis{800});
     CHECK(k.state() == run_state::pre_operational);
     k.receive(frame_of("000#0115"), millis{810});
     CHECK(k.state() == run_state::operational);
+}
+
+TEST_CASE("heartbeat consumer time below the producer's: the keypad cannot stay operational") {
+    auto k = booted(model::pk1000);                                   // NOTE 3 of PK1000 28
+    CHECK(ask(k, "615#2316100132000100") == "595#6016100100000000");  // 50 ms from node 1
+    for (std::uint32_t t = 100; t <= 1000; t += 100) {  // the producer beats every 100 ms
+        k.receive(frame_of("701#05"), millis{t});
+        if (t == 300) k.receive(frame_of("000#0115"), millis{t});
+    }
+    k.advance(millis{1000});
+    CHECK(k.state() == run_state::pre_operational);
 }
 
 TEST_CASE("key-state TPDO: on change when operational, with the 100 ms tick timer") {
@@ -581,7 +592,7 @@ TEST_CASE("one SDO at a time: a request while the keypad is answering is dropped
     q.receive(frame_of("615#4010200000000000"), millis{10});
     q.receive(frame_of("615#4011200000000000"), millis{10});
     CHECK(run_until(q, millis{10}, millis{50}) ==
-          strings{"11 595#4F11200001000000"});  // the later one replaces the earlier
+          strings{"10 595#4F10200004000000", "11 595#4F11200001000000"});  // both, in order
 }
 
 TEST_CASE("node-id change: PK1000 answers from the new id, PKP from the old, then boots") {
@@ -609,6 +620,10 @@ TEST_CASE("baud rate: a stored setting, effective after a reset") {
     CHECK(ask(k, "615#4010200000000000", {20}) == "595#4F10200002000000");
     k.receive(frame_of("000#8115"), millis{30});
     CHECK(k.baud() == baud_rate::kbit_500);
+    CHECK(text_of(*k.transmit()) == "715#00");
+    CHECK(ask(k, "615#2F10200005000000", {40}) == "595#6010200000000000");  // reserved
+    k.power_cycle(millis{50});
+    CHECK(k.baud() == baud_rate::kbit_125);  // "force to 125k" (section 20)
     auto p = booted(model::pkp2400);
     CHECK(ask(p, "615#2300650111010000") == "595#6000650100000000");  // 250k
     p.power_cycle(millis{20});

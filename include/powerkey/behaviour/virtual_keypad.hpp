@@ -369,7 +369,7 @@ private:
             restore_pending_ = false;
         }
         node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
-        baud_ = static_cast<baud_rate>(value(object::baud_rate) & 7u);
+        baud_ = effective_baud();
         on_ = {};
         blink_ = {};
         brightness_ = powerkey::level::make(value(object::default_led_brightness))
@@ -377,7 +377,7 @@ private:
         backlight_.level = powerkey::level::make(value(object::default_backlight_level))
                                .value_or(powerkey::level{0});
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
-        keys_ = {};
+        // keys_ stay: a key held through a reboot is still held
         rpdo_buffer_ = {};
         sync_count_ = 0;
         monitoring_ = false;
@@ -400,7 +400,7 @@ private:
     // do not print 82h).
     constexpr void reset_communication(millis t) noexcept {
         node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
-        baud_ = static_cast<baud_rate>(value(object::baud_rate) & 7u);
+        baud_ = effective_baud();
         rpdo_buffer_ = {};
         sync_count_ = 0;
         monitoring_ = false;
@@ -409,6 +409,11 @@ private:
         state_ = run_state::pre_operational;
         restart_timers(t);
         if (value(object::boot_up) != 0) send_heartbeat(0x00);
+    }
+    // 2010h codes 01h and 05h are "Reserved (force to 125k)" (PK1000 20).
+    constexpr baud_rate effective_baud() const noexcept {
+        const std::uint32_t code = value(object::baud_rate) & 7u;
+        return code == 1 || code == 5 ? baud_rate::kbit_125 : static_cast<baud_rate>(code);
     }
     constexpr void restart_timers(millis t) noexcept {
         next_heartbeat_ = t + duration_ms{value(object::heartbeat_time)};
@@ -548,6 +553,7 @@ private:
         if (f.size() != 8) return;
         if (pending_) {
             if (options_.drop_sdo_while_busy) return;  // busy: dropped, no reply, no abort
+            flush_reply();  // not dropping: the earlier reply goes now, then this one
         }
         const std::uint8_t b0 = f[0];
         const canopen::sdo_address a{static_cast<std::uint16_t>(f[1] | (f[2] << 8)), f[3]};
@@ -816,7 +822,10 @@ private:
         release_reply(t);
     }
     constexpr void release_reply(millis t) noexcept {
-        if (!pending_ || !reached(pending_->due, t)) return;
+        if (pending_ && reached(pending_->due, t)) flush_reply();
+    }
+    constexpr void flush_reply() noexcept {
+        if (!pending_) return;
         const pending_reply r = *pending_;
         pending_.reset();
         send_from(r.from, 0x580, 8, r.payload);
