@@ -266,3 +266,15 @@ TEST_CASE("checker: explanations") {
     for (const auto c : enum_values<canopen::sdo_abort_code>())
         CHECK(!abort_meaning_of(static_cast<std::uint32_t>(c)).empty());
 }
+
+TEST_CASE("checker: a time that goes back restarts the timers") {
+    // Two logs in a row: the second starts at 0 again; no silence of 49 days.
+    const std::vector<entry> log = {{0, "615#2B17100064000000"},
+                                    {1, "595#6017100000000000"},
+                                    {100, "715#05"},
+                                    {200, "715#05"},
+                                    {50, "715#05"},
+                                    {150, "715#05"}};
+    const auto got = check(model::pk1000, log);
+    CHECK_MESSAGE(got.empty(), text_of(got));
+}

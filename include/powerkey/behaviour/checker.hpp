@@ -142,8 +142,15 @@ private:
                static_cast<std::uint32_t>(std::uint64_t{period} * cfg_.tolerance_percent / 100);
     }
 
-    // Deadlines that passed before this frame.
+    // Deadlines that passed before this frame. A time before the last one (a log that goes back,
+    // or two logs in a row) restarts the timers rather than reading as a 49-day silence.
     constexpr void timers() noexcept {
+        if (before(now_, last_time_)) {
+            if (pending_) pending_->sent = now_;
+            if (hb_last_) hb_last_->time = now_;
+            if (ks_last_) ks_last_->time = now_;
+        }
+        last_time_ = now_;
         if (pending_ && elapsed(pending_->sent, now_).value >= cfg_.sdo_timeout.value) {
             report(pending_->line, problem_kind::sdo_no_reply, pending_->address.index,
                    pending_->address.subindex, elapsed(pending_->sent, now_).value);
@@ -343,6 +350,7 @@ private:
     checker_config cfg_;
     session<TextCapacity> session_;
     millis now_{};
+    millis last_time_{};
     std::uint32_t line_ = 0;
     std::optional<outstanding> pending_;
     bool segmented_ = false;
