@@ -460,6 +460,13 @@ inline constexpr encode_error_row encode_error_rows[] = {
      errc::reserved_not_zero},
     {"green plane in 2001h/01 (red)", m1000, 0x15, "615#2301200100000000",
      write(o::led_on_red, green({1})), errc::value_out_of_range},
+    // members a value's kind does not use
+    {"a string size on a level", m1000, 0x15, "615#2F03200110000000",
+     write(o::led_brightness, object_value{0x10, {}, 3}), errc::value_out_of_range},
+    {"an LED map on a level", m1000, 0x15, "615#2F03200110000000",
+     write(o::led_brightness, object_value{0x10, rgb({1}), 0}), errc::value_out_of_range},
+    {"a raw number on an LED register", m1000, 0x15, "615#2301200100000000",
+     write(o::led_on_red, object_value{1, {}, 0}), errc::value_out_of_range},
     // accesses and objects the dictionary lacks
     {"write of read-only 2000h", m1000, 0x15, "615#2B00200101000000",
      write(o::keys, keys_value({1})), errc::unknown_command},

@@ -13,6 +13,7 @@
 
 #include <iterator>
 #include <optional>
+#include <string>
 #include <variant>
 
 #include "decoder_rows.hpp"
@@ -72,6 +73,12 @@ constexpr bool is_on(object o) {
     return o == object::led_on || o == object::led_on_red || o == object::led_on_green;
 }
 
+// BUG: (include/powerkey/keypad/accessors.hpp) led_map_update::planes is documented as "a
+// PKP-2600's 6001h two, a PDO all the model has", but led_on_map/led_blink_map answer 7 (all three
+// planes) for every PDO and every 6001h/6002h frame whatever the model. want_map follows the code
+// so that the static_assert below holds; the TEST_CASE "BUG: ..." at the end fails until the
+// accessor answers the model's planes (then make want_map model-aware: planes 3 for the PK1000
+// PDOs and the PKP-2600's 6001h/6002h).
 constexpr std::optional<led_map_update> want_map(const message& m, bool on) {
     if (const auto* p = std::get_if<powerkey::led_on>(&m); p && on)
         return led_map_update{p->map, 7};
@@ -174,4 +181,26 @@ TEST_CASE("model names") {
     CHECK(parse_model("PK1000") == model::pk1000);
     CHECK(model_from_report("PKU2400") == model::pkp2400);
     CHECK(parse_model("") == errc::value_out_of_range);
+}
+
+// BUG: see want_map above. A PKP-2600's 6001h/6002h carry red and green only
+// (model_info::object_planes() == 2): a frame that sets them leaves blue as it was, so the update
+// must say planes 3 (red, green), not 7. The PK1000's LED PDOs set the two planes it has (3).
+TEST_CASE("BUG: led_on_map and led_blink_map name the planes the frame sets on the model") {
+    for (const auto& r : pkp_rows::rows) {
+        if (!applies(r.models, model::pkp2600)) continue;
+        const auto d = decode(frame_of(r.frame), node_of(r.node), model::pkp2600);
+        REQUIRE(d.has_value());
+        const auto* w = std::get_if<sdo_write>(&*d);
+        const auto* v = std::get_if<sdo_read_reply>(&*d);
+        const object o = w ? w->object : v ? v->object : object::keys;
+        if (o != object::led_on && o != object::led_blink) continue;
+        INFO(std::string(r.section), "  ", std::string(r.frame));
+        const auto u = o == object::led_on ? led_on_map(*d) : led_blink_map(*d);
+        REQUIRE(u.has_value());
+        CHECK(u->planes == 3);
+    }
+    const auto pdo = decode(frame_of("215#0000010000000008"), keypad, model::pk1000);
+    REQUIRE(pdo.has_value());
+    CHECK(led_on_map(*pdo)->planes == 3);
 }
