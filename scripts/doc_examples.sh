@@ -3,6 +3,8 @@
 # the docs show (and their static_asserts) stay true. Each file's blocks go into one translation
 # unit, each block in a namespace of its own, after `#include <powerkey/powerkey.hpp>` and
 # `using namespace powerkey;` (a block's main() is then no global main, hence -Wno-return-type).
+# A ```cpp block must therefore be namespace-scope code (declarations, functions, static_asserts);
+# show a fragment of statements in a plain ``` block, or inside a function.
 # Usage: bash scripts/doc_examples.sh [FILE.md...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
