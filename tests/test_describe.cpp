@@ -6,6 +6,9 @@
 #include <powerkey/describe.hpp>
 #include <powerkey/keypad/codec.hpp>
 
+#include "decoder_rows.hpp"
+#include "pk1000_rows.hpp"
+#include "pkp_rows.hpp"
 #include "support.hpp"
 
 #include <array>
@@ -154,4 +157,20 @@ TEST_CASE("every frame of the table has a description that fits 160 characters")
         REQUIRE(m.has_value());
         CHECK(describe(*m, keypad, buf).has_value());
     }
+}
+
+template <class Row, std::size_t N>
+void check_fits(const Row (&table)[N]) {
+    for (const auto& r : table) {
+        std::array<char, 160> buf{};
+        CAPTURE(r.section);
+        CAPTURE(r.frame);
+        CHECK(describe(r.expected, decoder_rows::node_of(r.node), buf).has_value());
+    }
+}
+
+TEST_CASE("every manual row of every keypad has a description that fits 160 characters") {
+    check_fits(decoder_rows::core_rows);
+    check_fits(pk1000_rows::rows);
+    check_fits(pkp_rows::rows);
 }

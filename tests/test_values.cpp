@@ -245,3 +245,14 @@ TEST_CASE("every enum: names unique, each value reads back, unnamed values print
     CHECK(from_string<startup_show>("amber_fast_flash") ==
           result<startup_show>(startup_show::fast_flash));
 }
+
+// Every dictionary a model uses has a name (the tool prints it, and enum_values<dictionary>()
+// must list it for code that walks every dictionary).
+TEST_CASE("every model's dictionary is named") {
+    for (const model m : enum_values<model>()) {
+        CAPTURE(to_string(m));
+        const auto i = info(m);
+        REQUIRE(i.has_value());
+        CHECK(is_named(i->dictionary));
+    }
+}
