@@ -100,8 +100,7 @@ constexpr bool round_trips(const row& r) {
 constexpr bool refused(const error_row& r) {
     const auto f = can::parse_candump(r.frame);
     if (!f) return false;
-    return for_models(r.models,
-                      [&](model m) { return decode(*f, node_of(r.node), m) == r.error; });
+    return for_models(r.models, [&](model m) { return decode(*f, node_of(r.node), m) == r.error; });
 }
 
 // encode refuses the message with the row's error, and the frame a raw encoder would build does
@@ -129,7 +128,9 @@ constexpr message written(object o) noexcept { return sdo_write_reply{o}; }
 constexpr message write(object o, object_value v) noexcept { return sdo_write{o, v}; }
 constexpr message reply(object o, object_value v) noexcept { return sdo_read_reply{o, v}; }
 // A number write or reply (counts, identity, COB-ID and mapping words, times, levels).
-constexpr message write(object o, std::uint32_t v) noexcept { return sdo_write{o, number_value(v)}; }
+constexpr message write(object o, std::uint32_t v) noexcept {
+    return sdo_write{o, number_value(v)};
+}
 constexpr message value(object o, std::uint32_t v) noexcept {
     return sdo_read_reply{o, number_value(v)};
 }
@@ -193,9 +194,13 @@ struct foreign_row {
 };
 
 inline constexpr foreign_row foreign_rows[] = {
-    {"SDO request to node 16h", "616#4008100000000000", {canopen::function::sdo_rx, 0x16},
+    {"SDO request to node 16h",
+     "616#4008100000000000",
+     {canopen::function::sdo_rx, 0x16},
      errc::wrong_id},
-    {"SDO reply of node 3Ah", "5BA#6013200000000000", {canopen::function::sdo_tx, 0x3A},
+    {"SDO reply of node 3Ah",
+     "5BA#6013200000000000",
+     {canopen::function::sdo_tx, 0x3A},
      errc::wrong_id},
     {"heartbeat of node 18h", "718#00", {canopen::function::heartbeat, 0x18}, errc::wrong_id},
     {"key state of node 16h", "196#0100000000", {canopen::function::tpdo1, 0x16}, errc::wrong_id},

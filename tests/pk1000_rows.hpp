@@ -17,9 +17,9 @@ namespace pk1000_rows {
 
 using namespace powerkey;
 using namespace decoder_rows;
-using decoder_rows::row;
-using decoder_rows::error_row;
 using decoder_rows::encode_error_row;
+using decoder_rows::error_row;
+using decoder_rows::row;
 using o = object;
 
 constexpr message keys(key_set k) noexcept { return key_state{k, 0x2A}; }
@@ -137,10 +137,12 @@ inline constexpr row rows[] = {
     {"19f E-PK-3 corrected", m1000, 0x15, "595#4F03200616000000",
      reply(o::default_backlight_level, level_value(0x16))},
     // --- 20..27 settings ----------------------------------------------------------------------
-    {"20", m1000, 0x15, "615#2F10200004000000", write(o::baud_rate, baud_value(baud_rate::kbit_125))},
+    {"20", m1000, 0x15, "615#2F10200004000000",
+     write(o::baud_rate, baud_value(baud_rate::kbit_125))},
     {"20", m1000, 0x15, "595#6010200000000000", written(o::baud_rate)},
     {"20", m1000, 0x15, "615#4010200000000000", read(o::baud_rate)},
-    {"20", m1000, 0x15, "595#4F10200004000000", reply(o::baud_rate, baud_value(baud_rate::kbit_125))},
+    {"20", m1000, 0x15, "595#4F10200004000000",
+     reply(o::baud_rate, baud_value(baud_rate::kbit_125))},
     {"21", m1000, 0x15, "615#2F11200001000000", write(o::boot_up, flag_value(true))},
     {"21", m1000, 0x15, "595#6011200000000000", written(o::boot_up)},
     {"21", m1000, 0x15, "615#4011200000000000", read(o::boot_up)},
@@ -204,7 +206,8 @@ inline constexpr row rows[] = {
     {"32", m1000, 0x15, "595#00426C696E6B4D61",
      segment(false, 0, false, {'B', 'l', 'i', 'n', 'k', 'M', 'a'})},
     {"32", m1000, 0x15, "615#7000000000000000", next(true)},
-    {"32", m1000, 0x15, "595#1772696E65000000", segment(true, 3, true, {'r', 'i', 'n', 'e', 0, 0, 0})},
+    {"32", m1000, 0x15, "595#1772696E65000000",
+     segment(true, 3, true, {'r', 'i', 'n', 'e', 0, 0, 0})},
     {"33", m1000, 0x15, "615#4009100000000000", read(o::hardware_version)},
     {"33", m1000, 0x15, "595#43091000565F3033",
      reply(o::hardware_version, string_value(4, {'V', '_', '0', '3'}))},
@@ -214,7 +217,8 @@ inline constexpr row rows[] = {
     {"35", m1000, 0x15, "615#400B100000000000", read(o::model_name)},
     {"35", m1000, 0x15, "595#410B100007000000", initiate(0x100B, 0, true, 7)},
     {"35", m1000, 0x15, "615#6000000000000000", next(false)},
-    {"35", m1000, 0x15, "595#01504B3130303000", segment(false, 0, true, {'P', 'K', '1', '0', '0', '0', 0})},
+    {"35", m1000, 0x15, "595#01504B3130303000",
+     segment(false, 0, true, {'P', 'K', '1', '0', '0', '0', 0})},
     {"36", m1000, 0x15, "615#4011100000000000", read(o::restore_count)},
     {"36", m1000, 0x15, "595#4F11100001000000", value(o::restore_count, 1)},
     {"36", m1000, 0x15, "615#231110016C6F6164", write(o::restore_defaults, load_signature)},
@@ -271,7 +275,8 @@ inline constexpr row rows[] = {
     {"43", m1000, 0x15, "595#4301160120010220", mapping(o::rpdo2_mapping_1, 0x2002, 1, 0x20)},
     {"43", m1000, 0x15, "615#4001160200000000", read(o::rpdo2_mapping_2)},
     // the reply is labelled sub-index 01h: it is read as 1601h/01 carrying 2002h sub 2
-    {"43 E-PK-5", m1000, 0x15, "595#4301160120020220", mapping(o::rpdo2_mapping_1, 0x2002, 2, 0x20)},
+    {"43 E-PK-5", m1000, 0x15, "595#4301160120020220",
+     mapping(o::rpdo2_mapping_1, 0x2002, 2, 0x20)},
     {"44", m1000, 0x15, "615#4002160000000000", read(o::rpdo3_mapping_count)},
     {"44", m1000, 0x15, "595#4F02160001000000", value(o::rpdo3_mapping_count, 1)},
     {"44", m1000, 0x15, "615#4002160100000000", read(o::rpdo3_mapping_1)},
@@ -316,7 +321,8 @@ inline constexpr row rows[] = {
     {"48", m1000, 0x15, "615#7000000000000000", next(true)},
     {"48", m1000, 0x15, "595#1D46000000000000", segment(true, 6, true, {'F', 0, 0, 0, 0, 0, 0})},
     // --- 49 protocol switch -------------------------------------------------------------------
-    {"49 E-PK-10 corrected", m1000, 0x15, "615#2BFF200101000000", write(o::protocol_j1939, flag_value(true))},
+    {"49 E-PK-10 corrected", m1000, 0x15, "615#2BFF200101000000",
+     write(o::protocol_j1939, flag_value(true))},
     {"49", m1000, 0x15, "18EF2100#041B8000FFFFFFFF", j1939::switch_to_canopen{}},
 };
 

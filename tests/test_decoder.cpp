@@ -52,16 +52,17 @@ static_assert(parse_model("PKP-2400-LI") == model::pkp2400);
 static_assert(parse_model("pkp2500") == errc::value_out_of_range);
 static_assert(kind_of(message{canopen::sync_message{}}) == "sync");
 
-// --- the accessors against the rows ---------------------------------------------------------------
+// --- the accessors against the rows
+// ---------------------------------------------------------------
 
 // For every model of the row, the accessors answer from the decoded message what its fields say:
 // pressed_keys from a key-state PDO or a read reply of `keys`; led_on_map and led_blink_map from
-// an LED PDO (every plane) or a write or read reply of an LED object (its planes); nothing from
-// any other message.
-constexpr std::uint8_t planes_of(object o) {
+// an LED PDO (every plane of the model) or a write or read reply of an LED object (the planes it
+// carries), covering the model's LEDs of those planes; nothing from any other message.
+constexpr std::uint8_t planes_of(object o, const model_info& mi) {
     switch (o) {
         case object::led_on:
-        case object::led_blink: return 7;
+        case object::led_blink: return mi.object_planes() == 2 ? 3 : 7;  // red, green (, blue)
         case object::led_on_red:
         case object::led_blink_red: return 1;
         case object::led_on_green:
@@ -72,21 +73,24 @@ constexpr std::uint8_t planes_of(object o) {
 constexpr bool is_on(object o) {
     return o == object::led_on || o == object::led_on_red || o == object::led_on_green;
 }
+constexpr leds covering(std::uint8_t planes, const model_info& mi) {
+    leds c;
+    if (planes & 1) c.red = led_set::from_mask(mi.led_mask);
+    if (planes & 2) c.green = led_set::from_mask(mi.led_mask);
+    if (planes & 4) c.blue = led_set::from_mask(mi.led_mask);
+    return c;
+}
 
-// BUG: (include/powerkey/keypad/accessors.hpp) led_map_update::planes is documented as "a
-// PKP-2600's 6001h two, a PDO all the model has", but led_on_map/led_blink_map answer 7 (all three
-// planes) for every PDO and every 6001h/6002h frame whatever the model. want_map follows the code
-// so that the static_assert below holds; the TEST_CASE "BUG: ..." at the end fails until the
-// accessor answers the model's planes (then make want_map model-aware: planes 3 for the PK1000
-// PDOs and the PKP-2600's 6001h/6002h).
-constexpr std::optional<led_map_update> want_map(const message& m, bool on) {
+constexpr std::optional<led_map_update> want_map(const message& m, bool on, model md) {
+    const auto mi = *info(md);
+    const std::uint8_t all = mi.planes == 2 ? 3 : 7;
     if (const auto* p = std::get_if<powerkey::led_on>(&m); p && on)
-        return led_map_update{p->map, 7};
+        return led_map_update{p->map, covering(all, mi)};
     if (const auto* p = std::get_if<powerkey::led_blink>(&m); p && !on)
-        return led_map_update{p->map, 7};
-    auto of = [on](object o, const object_value& v) -> std::optional<led_map_update> {
-        if (planes_of(o) == 0 || is_on(o) != on) return std::nullopt;
-        return led_map_update{v.map, planes_of(o)};
+        return led_map_update{p->map, covering(all, mi)};
+    auto of = [on, &mi](object o, const object_value& v) -> std::optional<led_map_update> {
+        if (planes_of(o, mi) == 0 || is_on(o) != on) return std::nullopt;
+        return led_map_update{v.map, covering(planes_of(o, mi), mi)};
     };
     if (const auto* w = std::get_if<sdo_write>(&m)) return of(w->object, w->value);
     if (const auto* r = std::get_if<sdo_read_reply>(&m)) return of(r->object, r->value);
@@ -104,8 +108,8 @@ constexpr bool accessors_agree(const row& r) {
     return for_models(r.models, [&](model m) {
         const auto d = decode(frame_of(r.frame), node_of(r.node), m);
         if (!d) return false;
-        return pressed_keys(*d) == want_keys(*d) && led_on_map(*d) == want_map(*d, true) &&
-               led_blink_map(*d) == want_map(*d, false);
+        return pressed_keys(*d) == want_keys(*d) && led_on_map(*d, m) == want_map(*d, true, m) &&
+               led_blink_map(*d, m) == want_map(*d, false, m);
     });
 }
 static_assert(first_failing(core_rows, accessors_agree) == std::size(core_rows));
@@ -116,8 +120,8 @@ static_assert(first_failing(pkp_rows::rows, accessors_agree) == std::size(pkp_ro
 // (PK1000 2000h/1, PKP 6000h) answer pressed_keys alike, on every model.
 constexpr bool keys_alike(model m, key_set k) {
     const auto pdo = decode(*encode(keypad, m, key_state{k, 0}), keypad, m);
-    const auto sdo = decode(*encode(keypad, m, sdo_read_reply{object::keys, keys_value(k)}),
-                            keypad, m);
+    const auto sdo =
+        decode(*encode(keypad, m, sdo_read_reply{object::keys, keys_value(k)}), keypad, m);
     return pdo && sdo && pressed_keys(*pdo) == k && pressed_keys(*sdo) == k;
 }
 static_assert(keys_alike(model::pk1000, {1, 4, 10}));
@@ -183,10 +187,10 @@ TEST_CASE("model names") {
     CHECK(parse_model("") == errc::value_out_of_range);
 }
 
-// BUG: see want_map above. A PKP-2600's 6001h/6002h carry red and green only
-// (model_info::object_planes() == 2): a frame that sets them leaves blue as it was, so the update
-// must say planes 3 (red, green), not 7. The PK1000's LED PDOs set the two planes it has (3).
-TEST_CASE("BUG: led_on_map and led_blink_map name the planes the frame sets on the model") {
+// A PKP-2600's 6001h/6002h carry red and green only (model_info::object_planes() == 2): a frame
+// that sets them leaves blue as it was, so the update covers red and green only. The PK1000's LED
+// PDOs cover its two planes, LEDs 1..28.
+TEST_CASE("led_on_map and led_blink_map cover the LEDs the frame states on the model") {
     for (const auto& r : pkp_rows::rows) {
         if (!applies(r.models, model::pkp2600)) continue;
         const auto d = decode(frame_of(r.frame), node_of(r.node), model::pkp2600);
@@ -196,11 +200,18 @@ TEST_CASE("BUG: led_on_map and led_blink_map name the planes the frame sets on t
         const object o = w ? w->object : v ? v->object : object::keys;
         if (o != object::led_on && o != object::led_blink) continue;
         INFO(std::string(r.section), "  ", std::string(r.frame));
-        const auto u = o == object::led_on ? led_on_map(*d) : led_blink_map(*d);
+        const auto u = o == object::led_on ? led_on_map(*d, model::pkp2600)
+                                           : led_blink_map(*d, model::pkp2600);
         REQUIRE(u.has_value());
-        CHECK(u->planes == 3);
+        CHECK(u->covered.red == span(1, 12));
+        CHECK(u->covered.green == span(1, 12));
+        CHECK(u->covered.blue.empty());
     }
     const auto pdo = decode(frame_of("215#0000010000000008"), keypad, model::pk1000);
     REQUIRE(pdo.has_value());
-    CHECK(led_on_map(*pdo)->planes == 3);
+    const auto u = led_on_map(*pdo, model::pk1000);
+    REQUIRE(u.has_value());
+    CHECK(u->covered.red == span(1, 28));
+    CHECK(u->covered.green == span(1, 28));
+    CHECK(u->covered.blue.empty());
 }

@@ -48,7 +48,10 @@ constexpr row behaviour_rows[] = {
      led_on{leds{}.set(12, colour::white)}},
     // PKP 12, PKP-2200: all magenta LEDs blink, built LED by LED.
     {"PKP 12 PKP-2200 all magenta", m2200, 0x15, "315#0F0F000000000000",
-     led_blink{leds{}.set(1, colour::magenta).set(2, colour::magenta).set(3, colour::magenta)
+     led_blink{leds{}
+                   .set(1, colour::magenta)
+                   .set(2, colour::magenta)
+                   .set(3, colour::magenta)
                    .set(4, colour::magenta)}},
 };
 static_assert(first_failing(behaviour_rows, round_trips) == std::size(behaviour_rows));
@@ -80,7 +83,8 @@ constexpr bool erratum_holds(const error_row& r) {
 }
 static_assert(first_failing(errata, erratum_holds) == std::size(errata));
 
-// --- the one LED-map rule -------------------------------------------------------------------------
+// --- the one LED-map rule
+// -------------------------------------------------------------------------
 
 constexpr model pkps[] = {model::pkp2200, model::pkp2400, model::pkp2600};
 
@@ -146,7 +150,8 @@ static_assert(info(model::pkp2200)->keys == 4 && info(model::pkp2400)->keys == 8
 static_assert(info(model::pkp2600)->object_planes() == 2);
 static_assert(info(model::pkp2400)->object_planes() == 3);
 
-// --- the dictionary -------------------------------------------------------------------------------
+// --- the dictionary
+// -------------------------------------------------------------------------------
 
 // Every row is found again by its address and by its object.
 constexpr bool dictionary_is_consistent() {
