@@ -589,3 +589,38 @@ TEST_CASE("key modes: momentary, toggle, cycle") {
     CHECK(k.state(2) == 0);
     CHECK(k.mode(2) == key_mode::toggle);
 }
+
+// --- at compile time ----------------------------------------------------------------------------
+
+namespace {
+// The controller against the virtual keypad, in a constant expression: found, configured,
+// started, and a key press lights the LED through the key modes.
+constexpr bool closed_loop_session() {
+    controller_config cfg;
+    cfg.keypad_model = model::pkp2400;
+    controller<8, 16> c(cfg);
+    virtual_keypad<16> k(model::pkp2400);
+    key_modes<8> modes;
+    modes.set(3, key_mode::toggle);
+    k.power_on(millis{0});
+    for (std::uint32_t ms = 1; ms < 60; ++ms) {
+        const millis t{ms};
+        if (ms == 30) k.press(3, t);
+        k.advance(t);
+        while (const auto f = k.transmit()) c.step(*f, t);
+        c.tick(t);
+        while (const auto f = c.next_frame()) k.receive(*f, t);
+        while (const auto e = c.poll())
+            if (const auto change = modes.on_event(*e))
+                c.set_led(change->key, change->state != 0 ? colour::green : colour::off);
+    }
+    return c.state() == controller_state::running && k.state() == run_state::operational &&
+           c.model() == model::pkp2400 && k.led_on().green.contains(3) &&
+           !k.led_on().green.contains(2);
+}
+static_assert(closed_loop_session());
+}  // namespace
+
+TEST_CASE("controller + virtual keypad: the same session at compile time and at run time") {
+    CHECK(closed_loop_session());
+}
