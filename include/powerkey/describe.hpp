@@ -7,8 +7,8 @@
 // (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field as `name: value`. Values: key and
 // LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex, enumerators by name; numbers in
 // hex with h (node ids, COB-IDs, indexes, levels, words: 15h, 0215h, 2003h, 3Fh), except counts
-// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused, priority, the encoder
-// fields, and every name ending in _ms or _mv).
+// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused,
+// priority, the encoder fields, and every name ending in _ms or _mv).
 #ifndef POWERKEY_DESCRIBE_HPP
 #define POWERKEY_DESCRIBE_HPP
 
@@ -79,8 +79,11 @@ constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
         first = false;
         bool upper = false;
         for (auto u : upper_words) upper = upper || u == word;
-        for (char c : word)
-            w.put(upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c);
+        if (word == "canopen")
+            w.put("CANopen");
+        else
+            for (char c : word)
+                w.put(upper && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c);
         if (end == std::string_view::npos) break;
         kind.remove_prefix(end + 1);
     }
@@ -88,8 +91,8 @@ constexpr void put_title(text_writer& w, std::string_view kind) noexcept {
 
 // Field names whose numbers are counts or times, printed in decimal; all others print in hex.
 constexpr std::string_view decimal_fields[] = {
-    "tick", "period_ms", "period_10ms", "size",  "bits", "key", "subindex",
-    "unused", "priority", "encoder",    "ticks", "counter", "top"};
+    "tick",   "period_ms", "period_10ms", "size",  "bits",    "key", "subindex",
+    "unused", "priority",  "encoder",     "ticks", "counter", "top"};
 
 constexpr void put_number(text_writer& w, std::string_view name, std::uint64_t v,
                           int width) noexcept {

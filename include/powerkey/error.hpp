@@ -23,7 +23,7 @@ enum class errc : std::uint8_t {
     sdo_aborted,          // the peer answered with an SDO abort (80h)
     unexpected_frame,     // a valid frame that does not fit the current state of a transfer
     syntax_error,         // malformed text (candump form, numbers)
-    unknown_object,       // an SDO index or sub-index the keypad's profile does not define
+    unknown_object,       // an SDO index or sub-index the keypad's dictionary does not define
 };
 
 template <>

@@ -1,9 +1,9 @@
 // powerkey: generic access to messages through the kind/fields convention. Every message struct
 // has `static constexpr std::string_view kind` and `fields(self, f)`, which calls f(name, member)
 // for every field the frame carries. powerkey::message is a std::variant of such structs;
-// visit_message finds the struct inside (through nested variants too, for users' own types). The description writer, the session follower
-// and the command-line tool (JSON both ways) are all written on top of this, so a new message
-// needs no code outside its own header.
+// visit_message finds the struct inside (through nested variants too, for users' own types). The
+// description writer, the session follower and the command-line tool (JSON both ways) are all
+// written on top of this, so a new message needs no code outside its own header.
 #ifndef POWERKEY_FIELDS_HPP
 #define POWERKEY_FIELDS_HPP
 

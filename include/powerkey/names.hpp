@@ -24,7 +24,9 @@
 namespace powerkey {
 
 template <class E>
-concept named_enum = std::is_enum_v<E> && requires { enum_names<E>::entries; };
+concept named_enum = std::is_enum_v<E> && requires {
+    enum_names<E>::entries;
+};
 
 // The name of e, or "" when the table has none.
 template <named_enum E>

@@ -54,8 +54,10 @@ struct enum_names<bus_protocol> {
 template <>
 struct enum_names<sdo_pairing> {
     using p = sdo_pairing;
-    static constexpr enum_name_entry<p> entries[] = {
-        {p::none, "none"}, {p::request, "request"}, {p::reply, "reply"}, {p::unanswered, "unanswered"}};
+    static constexpr enum_name_entry<p> entries[] = {{p::none, "none"},
+                                                     {p::request, "request"},
+                                                     {p::reply, "reply"},
+                                                     {p::unanswered, "unanswered"}};
 };
 
 // What one frame meant, and what it changed.
@@ -65,7 +67,7 @@ struct session_event {
     result<message> decoded = errc::unexpected_frame;
     sdo_pairing sdo = sdo_pairing::none;
     canopen::sdo_address request{};  // the object of the request answered (sdo == reply)
-    bool upload_done = false;        // a segmented upload ended with this frame: see text()
+    bool upload_done = false;        // a string upload (segmented or not) ended here: see text()
     errc upload_error{};             // a segmented upload failed with this frame (toggle, abort..)
     std::optional<canopen::node_id> new_node;  // the keypad moved to this node id
     std::optional<bus_protocol> new_protocol;  // the keypad switched protocol
@@ -177,7 +179,12 @@ private:
                 step_upload(f, e);
             }
         } else if (const auto* u = std::get_if<canopen::sdo_upload_response>(&*r)) {
-            if (was == pending_kind::upload && answers(u->address)) pair(e);
+            if (was == pending_kind::upload && answers(u->address)) {
+                pair(e);
+                // A string of up to four bytes comes in one reply: it ends the upload too.
+                const auto* v = e.decoded ? std::get_if<sdo_read_reply>(&*e.decoded) : nullptr;
+                if (v && kind_of(v->object).kind == value_kind::string) step_upload(f, e);
+            }
         } else if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
             if (was == pending_kind::upload && answers(i->address)) {
                 pair(e);

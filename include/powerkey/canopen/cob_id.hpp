@@ -36,11 +36,21 @@ template <>
 struct powerkey::enum_names<powerkey::canopen::function> {
     using f = canopen::function;
     static constexpr enum_name_entry<f> entries[] = {
-        {f::nmt, "nmt"},         {f::sync, "sync"},     {f::tpdo1, "tpdo1"},
-        {f::tpdo2, "tpdo2"},     {f::tpdo3, "tpdo3"},   {f::tpdo4, "tpdo4"},
-        {f::rpdo1, "rpdo1"},     {f::rpdo2, "rpdo2"},   {f::rpdo3, "rpdo3"},
-        {f::rpdo4, "rpdo4"},     {f::sdo_tx, "sdo_tx"}, {f::sdo_rx, "sdo_rx"},
-        {f::heartbeat, "heartbeat"}, {f::j1939, "j1939"}, {f::other, "other"},
+        {f::nmt, "nmt"},
+        {f::sync, "sync"},
+        {f::tpdo1, "tpdo1"},
+        {f::tpdo2, "tpdo2"},
+        {f::tpdo3, "tpdo3"},
+        {f::tpdo4, "tpdo4"},
+        {f::rpdo1, "rpdo1"},
+        {f::rpdo2, "rpdo2"},
+        {f::rpdo3, "rpdo3"},
+        {f::rpdo4, "rpdo4"},
+        {f::sdo_tx, "sdo_tx"},
+        {f::sdo_rx, "sdo_rx"},
+        {f::heartbeat, "heartbeat"},
+        {f::j1939, "j1939"},
+        {f::other, "other"},
     };
 };
 
@@ -92,9 +102,9 @@ struct cob_info {
     // Bits 10..7 are the function code (580h is code 11): one table lookup, not a scan of the
     // bases (every decoder starts here).
     constexpr function by_code[16] = {
-        function::other, function::other,  function::other,  function::tpdo1,
-        function::rpdo1, function::tpdo2,  function::rpdo2,  function::tpdo3,
-        function::rpdo3, function::tpdo4,  function::rpdo4,  function::sdo_tx,
+        function::other,  function::other, function::other,     function::tpdo1,
+        function::rpdo1,  function::tpdo2, function::rpdo2,     function::tpdo3,
+        function::rpdo3,  function::tpdo4, function::rpdo4,     function::sdo_tx,
         function::sdo_rx, function::other, function::heartbeat, function::other};
     const function f = by_code[(v >> 7) & 0xF];
     if (node == 0 || f == function::other) return {function::other, 0};

@@ -426,8 +426,8 @@ constexpr expedited_data expedited_of(const can::frame& f) noexcept {
     return {expedited_size::make(4 - ((f[0] >> 2) & 3)).value(), data_of(f)};
 }
 constexpr sdo_abort abort_of(const can::frame& f) noexcept {
-    return {address_of(f),
-            static_cast<sdo_abort_code>(static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4)))};
+    return {address_of(f), static_cast<sdo_abort_code>(static_cast<std::uint32_t>(
+                               powerkey::detail::load_le<4>(f.bytes(), 4)))};
 }
 }  // namespace detail
 

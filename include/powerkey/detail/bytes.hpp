@@ -34,12 +34,14 @@ constexpr std::uint64_t load_le(const Bytes& b, std::size_t at, std::size_t widt
 }
 
 template <std::size_t N, class Bytes>
-requires(N >= 1 && N <= 8) constexpr std::uint64_t load_le(const Bytes& b, std::size_t at) noexcept {
+requires(N >= 1 && N <= 8) constexpr std::uint64_t
+    load_le(const Bytes& b, std::size_t at) noexcept {
     return load_le(b, at, N);
 }
 
 template <std::size_t N, class Bytes>
-requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at, std::uint64_t v) noexcept {
+requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at,
+                                                   std::uint64_t v) noexcept {
     for (std::size_t i = 0; i < N; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 

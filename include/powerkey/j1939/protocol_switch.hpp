@@ -2,7 +2,7 @@
 //   18EF2100#041B8000FFFFFFFF
 //   priority 6, PGN EF00h (proprietary A, PDU1), destination 21h (the keypad's default J1939
 //   address), source 00h; data 04 1B 80 00 FF FF FF FF, a fixed signature.
-// The opposite switch, CANopen to J1939, is an SDO write to object 20FFh sub 1 (pk1000 profile).
+// The opposite switch, CANopen to J1939, is an SDO write of object protocol_j1939 (20FFh sub 1).
 #ifndef POWERKEY_J1939_PROTOCOL_SWITCH_HPP
 #define POWERKEY_J1939_PROTOCOL_SWITCH_HPP
 

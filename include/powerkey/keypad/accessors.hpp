@@ -6,7 +6,8 @@
 //
 //   pressed_keys     key-state PDO, or a read reply of `keys` (2000h sub 1, 6000h)
 //   led_on_map       LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h, PK1000
-//   led_blink_map    2001h sub 1/2 per colour): the map, and which planes this frame sets
+//   led_blink_map    and SI 2001h per colour or in pieces): the map, and the LEDs it covers; these
+//                    two take the model, which says which LEDs a frame covers
 //   brightness       LED brightness PDO, a write or read reply of `led_brightness`, command 02h
 //   backlight_of     backlight PDO, writes and read replies of the backlight objects, commands
 //                    03h and 04h: the level and/or the colour the frame sets
@@ -34,40 +35,77 @@ namespace powerkey {
     return std::nullopt;
 }
 
-// An LED map a frame carries, and the planes it sets (bit 0 red, 1 green, 2 blue): a PK1000
-// register sets one plane, a PKP-2600's 6001h two, a PDO all the model has.
+// An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states (the
+// others keep theirs). A PDO covers every LED of the model; a PK1000 or SI register one plane; a
+// PKP 6001h the planes that fit 32 bits (red and green on the PKP-2600); a PKP-2600-SI piece the
+// LEDs of its bits.
 struct led_map_update {
     leds map;
-    std::uint8_t planes = 0;
-    friend constexpr bool operator==(const led_map_update&, const led_map_update&) noexcept = default;
+    leds covered;
+    friend constexpr bool operator==(const led_map_update&,
+                                     const led_map_update&) noexcept = default;
 };
 
 namespace detail {
-constexpr std::optional<led_map_update> map_of_object(object id, const object_value& v, object whole,
-                                                      object red, object green) noexcept {
-    if (id == whole) return led_map_update{v.map, 7};
-    if (id == red) return led_map_update{v.map, 1};
-    if (id == green) return led_map_update{v.map, 2};
-    return std::nullopt;
+constexpr leds planes_covered(const model_info& mi, unsigned planes) noexcept {
+    leds c;
+    for (unsigned p = 0; p < planes; ++p)
+        c.of(static_cast<plane>(p)) = led_set::from_mask(mi.led_mask);
+    return c;
+}
+// The carriers of one map: its PDO type and its objects (whole, per plane, pieces).
+struct led_objects {
+    object whole, red, green, blue, part1, part2, part3;
+};
+inline constexpr led_objects on_objects{
+    object::led_on,      object::led_on_red,        object::led_on_green,
+    object::led_on_blue, object::led_on_r1_12_g1_4, object::led_on_g5_12,
+    object::led_on_b1_12};
+inline constexpr led_objects blink_objects{
+    object::led_blink,      object::led_blink_red,        object::led_blink_green,
+    object::led_blink_blue, object::led_blink_r1_12_g1_4, object::led_blink_g5_12,
+    object::led_blink_b1_12};
+
+constexpr std::optional<led_map_update> map_of_object(const model_info& mi, object id,
+                                                      const object_value& v,
+                                                      const led_objects& o) noexcept {
+    leds c;
+    if (id == o.whole) {
+        c = planes_covered(mi, mi.object_planes());
+    } else if (id == o.red || id == o.green || id == o.blue) {
+        c.of(kind_of(id).holds) = led_set::from_mask(mi.led_mask);
+    } else if (id == o.part1 || id == o.part2 || id == o.part3) {
+        const auto k = kind_of(id);
+        c = unpack_leds(mi, ((std::uint64_t{1} << k.width) - 1) << k.offset, mi.planes)
+                .value_or(leds{});
+    } else {
+        return std::nullopt;
+    }
+    return led_map_update{v.map, c};
 }
 template <class Pdo>
-constexpr std::optional<led_map_update> led_map_of(const message& m, object whole, object red,
-                                                   object green) noexcept {
-    if (const auto* p = std::get_if<Pdo>(&m)) return led_map_update{p->map, 7};
+constexpr std::optional<led_map_update> led_map_of(const message& m, model md,
+                                                   const led_objects& o) noexcept {
+    const auto mi = info(md);
+    if (!mi) return std::nullopt;
+    if (const auto* p = std::get_if<Pdo>(&m))
+        return led_map_update{p->map, planes_covered(*mi, mi->planes)};
     if (const auto* w = std::get_if<sdo_write>(&m))
-        return map_of_object(w->object, w->value, whole, red, green);
+        return map_of_object(*mi, w->object, w->value, o);
     if (const auto* r = std::get_if<sdo_read_reply>(&m))
-        return map_of_object(r->object, r->value, whole, red, green);
+        return map_of_object(*mi, r->object, r->value, o);
     return std::nullopt;
 }
 }  // namespace detail
 
-[[nodiscard]] constexpr std::optional<led_map_update> led_on_map(const message& m) noexcept {
-    return detail::led_map_of<led_on>(m, object::led_on, object::led_on_red, object::led_on_green);
+// The LED-on (LED-blink) map a message of model md states, if it states one.
+[[nodiscard]] constexpr std::optional<led_map_update> led_on_map(const message& m,
+                                                                 model md) noexcept {
+    return detail::led_map_of<led_on>(m, md, detail::on_objects);
 }
-[[nodiscard]] constexpr std::optional<led_map_update> led_blink_map(const message& m) noexcept {
-    return detail::led_map_of<led_blink>(m, object::led_blink, object::led_blink_red,
-                                         object::led_blink_green);
+[[nodiscard]] constexpr std::optional<led_map_update> led_blink_map(const message& m,
+                                                                    model md) noexcept {
+    return detail::led_map_of<led_blink>(m, md, detail::blink_objects);
 }
 
 [[nodiscard]] constexpr std::optional<level> brightness(const message& m) noexcept {

@@ -236,8 +236,9 @@ constexpr result<command> read_command(const model_info& m,
 constexpr canopen::expedited_data write_command(const command& c) noexcept {
     const auto row = find_command(static_cast<std::uint8_t>(c.code));
     if (!row) return {4, {static_cast<std::uint8_t>(c.code), 0, 0, 0}};
-    return {4, {static_cast<std::uint8_t>(c.code), write_param(row->p1, c),
-                write_param(row->p2, c), 0}};
+    return {
+        4,
+        {static_cast<std::uint8_t>(c.code), write_param(row->p1, c), write_param(row->p2, c), 0}};
 }
 
 // --- SDO frames ---------------------------------------------------------------------------------
@@ -324,9 +325,10 @@ constexpr result<message> decode_pdo(const model_info& m, canopen::function fn,
             if (f.size() != 8) return errc::wrong_length;
             if (!all_zero(f.bytes(), 4, 8)) return errc::reserved_not_zero;
             if (f[3] == 1 || f[3] > 0x10) return errc::value_out_of_range;
-            return message{encoder_state{fn == canopen::function::tpdo2 ? std::uint8_t{1} : std::uint8_t{2},
-                                         (f[0] & 0x80) != 0, static_cast<std::uint8_t>(f[0] & 0x7F),
-                                         static_cast<std::uint16_t>(load_le<2>(f.bytes(), 1)), f[3]}};
+            return message{
+                encoder_state{fn == canopen::function::tpdo2 ? std::uint8_t{1} : std::uint8_t{2},
+                              (f[0] & 0x80) != 0, static_cast<std::uint8_t>(f[0] & 0x7F),
+                              static_cast<std::uint16_t>(load_le<2>(f.bytes(), 1)), f[3]}};
         }
         case canopen::function::tpdo4: {
             if (!m.encoders) return errc::wrong_id;
@@ -406,10 +408,9 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
                     bits |= std::uint64_t{static_cast<std::uint16_t>(v.mv[i] / 10)} << (16 * i);
                 return pdo_frame(function::tpdo4, node, 8, bits);
             } else if constexpr (std::is_same_v<T, backlight>) {
-                return pdo_frame(function::rpdo4, node, 8,
-                                 v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(
-                                                        v.colour)}
-                                                    << 8));
+                return pdo_frame(
+                    function::rpdo4, node, 8,
+                    v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(v.colour)} << 8));
             } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply> ||
                                  std::is_same_v<T, sdo_write_reply>) {
@@ -422,17 +423,17 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
                 } else if constexpr (std::is_same_v<T, sdo_write>) {
                     if (kind_of(v.object).kind == value_kind::commands)
                         return errc::unknown_object;  // a command is a `command`
-                    return canopen::encode(
-                        node, canopen::sdo_download_request{row->address, write_value(m, *row, v.value)});
+                    return canopen::encode(node, canopen::sdo_download_request{
+                                                     row->address, write_value(m, *row, v.value)});
                 } else {
-                    return canopen::encode(
-                        node, canopen::sdo_upload_response{row->address, write_value(m, *row, v.value)});
+                    return canopen::encode(node, canopen::sdo_upload_response{
+                                                     row->address, write_value(m, *row, v.value)});
                 }
             } else if constexpr (std::is_same_v<T, command>) {
                 const auto row = find_row(m.dictionary, object::command_module);
                 if (!row) return errc::unknown_object;
-                return canopen::encode(node,
-                                       canopen::sdo_download_request{row->address, write_command(v)});
+                return canopen::encode(
+                    node, canopen::sdo_download_request{row->address, write_command(v)});
             } else {
                 return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
             }

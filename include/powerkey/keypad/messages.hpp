@@ -11,7 +11,7 @@
 // f)`, which names every field the frame carries. The names are the same for every model: the
 // key-state PDO's "keys" and "tick", an LED map's "red", "green", "blue", a level's "level".
 // An SDO value's fields depend on its object's value kind (objects.hpp):
-//   number, restore "value"        flag "enabled"          level "level"     colour "colour"
+//   number, restore "value"        flag "enabled"          brightness "level"  colour "colour"
 //   baud "baud_rate"               show "startup_show"     node "node_id"    period "period_ms"
 //   keys "keys"                    led_plane "red" | "green" | "blue"        led_map all three
 //   consumer_heartbeat "period_ms", "producer"     cob_id "invalid", "no_rtr", "can_id"
@@ -214,7 +214,9 @@ constexpr void value_fields(object id, V& v, F& f) {
             bits("colour", 0, 8, std::type_identity<backlight_colour>{});
             break;
         case value_kind::baud: bits("baud_rate", 0, 8, std::type_identity<baud_rate>{}); break;
-        case value_kind::show: bits("startup_show", 0, 8, std::type_identity<startup_show>{}); break;
+        case value_kind::show:
+            bits("startup_show", 0, 8, std::type_identity<startup_show>{});
+            break;
         case value_kind::node:
             checked("node_id", 0, 8, std::type_identity<canopen::node_id>{});
             break;
@@ -224,7 +226,9 @@ constexpr void value_fields(object id, V& v, F& f) {
                 [](auto& s, key_set x) { s.raw = static_cast<u32>(x.mask()); });
             break;
         case value_kind::led_plane:
-            f(k.holds == plane::red ? "red" : k.holds == plane::green ? "green" : "blue",
+            f(k.holds == plane::red     ? "red"
+              : k.holds == plane::green ? "green"
+                                        : "blue",
               v.map.of(k.holds));
             break;
         case value_kind::led_map:
@@ -264,10 +268,10 @@ constexpr void value_fields(object id, V& v, F& f) {
             raw_field<std::array<std::uint8_t, 4>>(
                 v, f, "bytes",
                 [](const auto& s) {
-                    return std::array<std::uint8_t, 4>{
-                        static_cast<std::uint8_t>(s.raw), static_cast<std::uint8_t>(s.raw >> 8),
-                        static_cast<std::uint8_t>(s.raw >> 16),
-                        static_cast<std::uint8_t>(s.raw >> 24)};
+                    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(s.raw),
+                                                       static_cast<std::uint8_t>(s.raw >> 8),
+                                                       static_cast<std::uint8_t>(s.raw >> 16),
+                                                       static_cast<std::uint8_t>(s.raw >> 24)};
                 },
                 [](auto& s, const std::array<std::uint8_t, 4>& b) {
                     s.raw = u32{b[0]} | (u32{b[1]} << 8) | (u32{b[2]} << 16) | (u32{b[3]} << 24);
@@ -300,7 +304,8 @@ struct sdo_read_reply {
     }
     powerkey::object object = powerkey::object::keys;
     object_value value;
-    friend constexpr bool operator==(const sdo_read_reply&, const sdo_read_reply&) noexcept = default;
+    friend constexpr bool operator==(const sdo_read_reply&,
+                                     const sdo_read_reply&) noexcept = default;
 };
 
 // Host -> keypad, 600h + node: write an object (expedited download 23h/27h/2Bh/2Fh).
@@ -339,7 +344,7 @@ using message =
 
 // --- building values ----------------------------------------------------------------------------
 // The value of an object of each kind, for code that writes one: sdo_write{object::node_id,
-// value_of(canopen::node_id{0x3A})}. Kinds of several fields are set through fields().
+// node_value(canopen::node_id{0x3A})}. Kinds of several fields are set through fields().
 
 [[nodiscard]] constexpr object_value number_value(std::uint32_t v) noexcept { return {v, {}, 0}; }
 [[nodiscard]] constexpr object_value flag_value(bool on) noexcept { return {on ? 1u : 0u, {}, 0}; }

@@ -41,10 +41,10 @@ enum class model : std::uint8_t {
 struct model_info {
     powerkey::model id;
     powerkey::dictionary dictionary;
-    std::uint8_t keys;    // keys 1..keys
-    std::uint8_t leds;    // LEDs 1..leds in each colour plane (some may be missing: led_mask)
-    std::uint8_t planes;  // colour planes: 2 red and green, 3 RGB
-    std::uint8_t stride;  // bits from one plane to the next in an LED map
+    std::uint8_t keys;       // keys 1..keys
+    std::uint8_t leds;       // LEDs 1..leds in each colour plane (some may be missing: led_mask)
+    std::uint8_t planes;     // colour planes: 2 red and green, 3 RGB
+    std::uint8_t stride;     // bits from one plane to the next in an LED map
     std::uint32_t led_mask;  // the LEDs of one plane: bit k-1 for LED k (PKP-3500-MT: no 1, 11)
     bool brightness_pdo;     // RPDO3 400h + node: LED brightness (PK1000 section 14)
     bool encoder_leds_pdo;   // RPDO3 400h + node: the encoder LED rings (PKP-3500-MT 17)
@@ -68,28 +68,33 @@ using dict = dictionary;
 //                                             keys leds planes stride led_mask     brightness
 //                                                                                  rings
 //                                                                                  backlight colour
-//                                                                                  encoders j1939 new-id
+//                                                                                  encoders j1939
+//                                                                                  new-id
 inline constexpr model_info model_table[] = {
-    {model::pk1000, dict::pk1000, 10, 28, 2, 32, 0x0FFF'FFFF, true, false, true, true, false, true, true},
-    {model::pkp2200, dict::pkp_li, 4, 4, 3, 4, 0xF, false, false, false, false, false, false, false},
-    {model::pkp2400, dict::pkp_li, 8, 8, 3, 8, 0xFF, false, false, false, false, false, false, false},
+    {model::pk1000, dict::pk1000, 10, 28, 2, 32, 0x0FFF'FFFF, true, false, true, true, false, true,
+     true},
+    {model::pkp2200, dict::pkp_li, 4, 4, 3, 4, 0xF, false, false, false, false, false, false,
+     false},
+    {model::pkp2400, dict::pkp_li, 8, 8, 3, 8, 0xFF, false, false, false, false, false, false,
+     false},
     {model::pkp2600, dict::pkp_li, 12, 12, 3, 12, 0xFFF, false, false, false, false, false, false,
      false},
     {model::pkp2600si, dict::si_packed, 12, 12, 3, 12, 0xFFF, true, false, true, true, false, true,
      true},
-    {model::pkp3500mt, dict::si_mt, 15, 15, 3, 16, 0x7BFE, false, true, true, true, true, true, true},
+    {model::pkp3500mt, dict::si_mt, 15, 15, 3, 16, 0x7BFE, false, true, true, true, true, true,
+     true},
     {model::pkp3500si, dict::si_per_colour, 15, 15, 3, 16, 0x7FFF, true, false, true, false, false,
      true, true},
     {model::pkp2500si, dict::si_per_colour, 10, 10, 3, 16, 0x3FF, true, false, true, false, false,
      true, true},
-    {model::pkp1500li, dict::si_per_colour, 5, 5, 3, 8, 0x1F, false, false, true, false, false, true,
-     true},
+    {model::pkp1500li, dict::si_per_colour, 5, 5, 3, 8, 0x1F, false, false, true, false, false,
+     true, true},
     {model::pkp2200si, dict::si_per_colour, 4, 4, 3, 8, 0xF, false, false, true, false, false, true,
      true},
-    {model::pkp2300si, dict::si_per_colour, 6, 6, 3, 8, 0x3F, false, false, true, false, false, true,
-     true},
-    {model::pkp2400si, dict::si_per_colour, 8, 8, 3, 8, 0xFF, false, false, true, false, false, true,
-     true},
+    {model::pkp2300si, dict::si_per_colour, 6, 6, 3, 8, 0x3F, false, false, true, false, false,
+     true, true},
+    {model::pkp2400si, dict::si_per_colour, 8, 8, 3, 8, 0xFF, false, false, true, false, false,
+     true, true},
 };
 constexpr bool models_in_enum_order() noexcept {
     for (std::size_t i = 0; i < std::size(model_table); ++i)

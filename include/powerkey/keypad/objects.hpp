@@ -57,29 +57,29 @@ enum class object : std::uint8_t {
     consumer_heartbeat,        // pk1000 1016h/1
     heartbeat_time,            // pk1000 1017h (29), pkp_li 1017h (17): producer period
     // identification
-    device_type,            // 1000h (pk1000 30, pkp_li 18)
-    error_register,         // pk1000 1001h (31): not implemented, the keypad aborts a read
-    device_name,            // 1008h string
-    hardware_version,       // 1009h string
-    software_version,       // 100Ah string
-    model_name,             // 100Bh string
-    serial_number_string,   // pk1000 2200h (48), pkp_li 6300h (31): string
-    device_model,           // pkp_li 6100h/2 (29): string
-    firmware_spec_count,    // pkp_li 6100h/0
-    identity_count,         // 1018h/0
-    vendor_id,              // 1018h/1
-    product_code,           // pkp_li 1018h/2
-    revision_number,        // pkp_li 1018h/3: byte 4 app, 5 com lib, 6 hw lib revision
-    serial_number,          // pk1000 1018h/4, pkp_li 6100h/1
-    firmware_checksum,      // pkp_li 1018h/4
-    bootloader_present,     // pkp_li 6301h (32)
-    key_led_count_count,    // pkp_li 6302h/0
-    total_keys,             // pkp_li 6302h/1
-    external_keys,          // pkp_li 6302h/2
-    total_leds,             // pkp_li 6302h/3
-    external_leds,          // pkp_li 6302h/4
-    restore_count,          // pk1000 1011h/0 (36)
-    restore_defaults,       // pk1000 1011h/1: write "load"; a read gives the restore flags
+    device_type,           // 1000h (pk1000 30, pkp_li 18)
+    error_register,        // pk1000 1001h (31): not implemented, the keypad aborts a read
+    device_name,           // 1008h string
+    hardware_version,      // 1009h string
+    software_version,      // 100Ah string
+    model_name,            // 100Bh string
+    serial_number_string,  // pk1000 2200h (48), pkp_li 6300h (31): string
+    device_model,          // pkp_li 6100h/2 (29): string
+    firmware_spec_count,   // pkp_li 6100h/0
+    identity_count,        // 1018h/0
+    vendor_id,             // 1018h/1
+    product_code,          // pkp_li 1018h/2
+    revision_number,       // pkp_li 1018h/3: byte 4 app, 5 com lib, 6 hw lib revision
+    serial_number,         // pk1000 1018h/4, pkp_li 6100h/1
+    firmware_checksum,     // pkp_li 1018h/4
+    bootloader_present,    // pkp_li 6301h (32)
+    key_led_count_count,   // pkp_li 6302h/0
+    total_keys,            // pkp_li 6302h/1
+    external_keys,         // pkp_li 6302h/2
+    total_leds,            // pkp_li 6302h/3
+    external_leds,         // pkp_li 6302h/4
+    restore_count,         // pk1000 1011h/0 (36)
+    restore_defaults,      // pk1000 1011h/1: write "load"; a read gives the restore flags
     // PDO communication and mapping parameters
     rpdo1_count,
     rpdo1_cob_id,
@@ -115,16 +115,16 @@ enum class object : std::uint8_t {
     tpdo1_mapping_1,
     // The SI family (docs/si-family.md): "2600SI n" is the PKP2600SI manual's section n, "MT n"
     // the PKP3500-MT manual's.
-    led_on_blue,             // 2001h/3 (MT 20 a): one plane
-    led_blink_blue,          // 2002h/3 (MT 21 a)
-    led_on_r1_12_g1_4,       // 2001h/1 (2600SI 17): bits 0..15 of the LED-on string
-    led_on_g5_12,            // 2001h/2: bits 16..23
-    led_on_b1_12,            // 2001h/3: bits 24..35
-    led_blink_r1_12_g1_4,    // 2002h/1 (2600SI 18)
-    led_blink_g5_12,         // 2002h/2
-    led_blink_b1_12,         // 2002h/3
-    led_on_encoder,          // 2001h/4 (MT 20 c): the encoder rings, LEDs 1..32
-    led_blink_encoder,       // 2002h/4 (MT 21 c)
+    led_on_blue,                 // 2001h/3 (MT 20 a): one plane
+    led_blink_blue,              // 2002h/3 (MT 21 a)
+    led_on_r1_12_g1_4,           // 2001h/1 (2600SI 17): bits 0..15 of the LED-on string
+    led_on_g5_12,                // 2001h/2: bits 16..23
+    led_on_b1_12,                // 2001h/3: bits 24..35
+    led_blink_r1_12_g1_4,        // 2002h/1 (2600SI 18)
+    led_blink_g5_12,             // 2002h/2
+    led_blink_b1_12,             // 2002h/3
+    led_on_encoder,              // 2001h/4 (MT 20 c): the encoder rings, LEDs 1..32
+    led_blink_encoder,           // 2002h/4 (MT 21 c)
     encoder1_direction_counter,  // 2000h/2 (MT 19 b): bit 7 counterclockwise, bits 0..6 ticks
     encoder1_tick_counter,       // 2000h/3 (MT 19 c): read the count, write the start-up count
     encoder2_direction_counter,  // 2000h/4 (MT 19 d)
@@ -472,7 +472,7 @@ inline constexpr object_row pkp_li_rows[] = {
     {obj::product_code, {0x1018, 2}, 4, ro},
     {obj::revision_number, {0x1018, 3}, 4, ro, 0, any, none_else, 0x0012'1610},
     {obj::firmware_checksum, {0x1018, 4}, 4, ro, 0, any, none_else, 0x002C'E5DE},
-    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},  // E-PKP-6
+    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},       // E-PKP-6
     {obj::rpdo1_cob_id, {0x1400, 1}, 2, ro, 0, any, none_else, 0x200},  // E-PKP-5
     {obj::rpdo1_inhibit_time, {0x1400, 3}, 2, ro},
     {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
@@ -774,7 +774,8 @@ struct dictionary_index {
 template <std::size_t N>
 constexpr dictionary_index<N> index_of(const object_row (&rows)[N]) noexcept {
     std::array<std::uint32_t, N> keys{};
-    for (std::size_t i = 0; i < N; ++i) keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
+    for (std::size_t i = 0; i < N; ++i)
+        keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
     dictionary_index<N> out{address_table<N, slot_bits<N>>(keys), {}};
     for (std::size_t i = 0; i < N; ++i)
         out.by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
@@ -849,9 +850,7 @@ constexpr std::uint8_t row_index(dictionary d, object o) noexcept {
     });
 }
 // Row i of a dictionary, i < its size.
-constexpr const object_row& row_at(dictionary d, std::uint8_t i) noexcept {
-    return rows_of(d)[i];
-}
+constexpr const object_row& row_at(dictionary d, std::uint8_t i) noexcept { return rows_of(d)[i]; }
 }  // namespace detail
 
 // The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
@@ -1016,24 +1015,38 @@ struct enum_names<access> {
 
 template <>
 struct enum_names<dictionary> {
-    static constexpr enum_name_entry<dictionary> entries[] = {{dictionary::pk1000, "pk1000"},
-                                                              {dictionary::pkp_li, "pkp_li"}};
+    static constexpr enum_name_entry<dictionary> entries[] = {
+        {dictionary::pk1000, "pk1000"},
+        {dictionary::pkp_li, "pkp_li"},
+        {dictionary::si_packed, "si_packed"},
+        {dictionary::si_mt, "si_mt"},
+        {dictionary::si_per_colour, "si_per_colour"}};
 };
 
 template <>
 struct enum_names<value_kind> {
     using k = value_kind;
     static constexpr enum_name_entry<k> entries[] = {
-        {k::number, "number"},           {k::flag, "flag"},
-        {k::brightness, "brightness"},             {k::colour, "colour"},
-        {k::baud, "baud"},               {k::show, "show"},
-        {k::node, "node"},               {k::period, "period"},
-        {k::keys, "keys"},               {k::led_plane, "led_plane"},
-        {k::led_map, "led_map"},         {k::consumer_heartbeat, "consumer_heartbeat"},
-        {k::cob_id, "cob_id"},           {k::pdo_mapping, "pdo_mapping"},
-        {k::device_type, "device_type"}, {k::string, "string"},
-        {k::restore, "restore"},         {k::none, "none"},
-        {k::led_part, "led_part"},       {k::ring, "ring"},
+        {k::number, "number"},
+        {k::flag, "flag"},
+        {k::brightness, "brightness"},
+        {k::colour, "colour"},
+        {k::baud, "baud"},
+        {k::show, "show"},
+        {k::node, "node"},
+        {k::period, "period"},
+        {k::keys, "keys"},
+        {k::led_plane, "led_plane"},
+        {k::led_map, "led_map"},
+        {k::consumer_heartbeat, "consumer_heartbeat"},
+        {k::cob_id, "cob_id"},
+        {k::pdo_mapping, "pdo_mapping"},
+        {k::device_type, "device_type"},
+        {k::string, "string"},
+        {k::restore, "restore"},
+        {k::none, "none"},
+        {k::led_part, "led_part"},
+        {k::ring, "ring"},
         {k::direction_counter, "direction_counter"},
         {k::commands, "commands"},
     };

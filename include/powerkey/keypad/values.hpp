@@ -180,11 +180,11 @@ template <>
 struct enum_names<baud_rate> {
     using b = baud_rate;
     static constexpr enum_name_entry<b> entries[] = {
-        {b::kbit_1000, "kbit_1000"}, {b::kbit_500, "kbit_500"},     {b::kbit_250, "kbit_250"},
-        {b::kbit_125, "kbit_125"},   {b::kbit_50, "kbit_50"},       {b::kbit_20, "kbit_20"},
+        {b::kbit_1000, "kbit_1000"},   {b::kbit_500, "kbit_500"},     {b::kbit_250, "kbit_250"},
+        {b::kbit_125, "kbit_125"},     {b::kbit_50, "kbit_50"},       {b::kbit_20, "kbit_20"},
         {b::reserved_1, "reserved_1"}, {b::reserved_5, "reserved_5"}, {b::kbit_1000, "1000k"},
-        {b::kbit_500, "500k"},       {b::kbit_250, "250k"},         {b::kbit_125, "125k"},
-        {b::kbit_50, "50k"},         {b::kbit_20, "20k"},
+        {b::kbit_500, "500k"},         {b::kbit_250, "250k"},         {b::kbit_125, "125k"},
+        {b::kbit_50, "50k"},           {b::kbit_20, "20k"},
     };
 };
 
@@ -229,16 +229,18 @@ template <>
 struct enum_names<colour> {
     using c = colour;
     static constexpr enum_name_entry<c> entries[] = {
-        {c::off, "off"},   {c::red, "red"},         {c::green, "green"}, {c::blue, "blue"},
-        {c::amber, "amber"}, {c::cyan, "cyan"},     {c::magenta, "magenta"}, {c::white, "white"},
+        {c::off, "off"},     {c::red, "red"},   {c::green, "green"},     {c::blue, "blue"},
+        {c::amber, "amber"}, {c::cyan, "cyan"}, {c::magenta, "magenta"}, {c::white, "white"},
     };
 };
 
 template <>
 struct enum_names<led_mode> {
     using m = led_mode;
-    static constexpr enum_name_entry<m> entries[] = {
-        {m::off, "off"}, {m::on, "on"}, {m::blink, "blink"}, {m::alternate_blink, "alternate_blink"}};
+    static constexpr enum_name_entry<m> entries[] = {{m::off, "off"},
+                                                     {m::on, "on"},
+                                                     {m::blink, "blink"},
+                                                     {m::alternate_blink, "alternate_blink"}};
 };
 
 }  // namespace powerkey
