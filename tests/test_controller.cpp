@@ -543,6 +543,44 @@ TEST_CASE("controller, scripted: key times are the caller's") {
     CHECK(ev[2] == controller_event{event_kind::key_released, 1});
 }
 
+TEST_CASE("controller, scripted: any node, a refused entry, the refresh") {
+    const message config[] = {sdo_write{object::startup_show, show_value(startup_show::disabled)},
+                              sdo_read{object::device_type}};
+    controller_config cfg;
+    cfg.keypad_model = model::pkp2400;  // no 2014h in its dictionary: refused, not sent
+    cfg.any_node = true;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    cfg.lost_after = duration_ms{0};
+    cfg.refresh_period = duration_ms{100};
+    cfg.configuration = config;
+    scripted s(cfg);
+    s.ctl.step(f_("795#05"), millis{0});  // a heartbeat of another node: not adopted
+    CHECK(s.ctl.state() == controller_state::searching);
+    CHECK(s.sent() == std::vector<std::string>{"615#4000100000000000"});  // the probe of 15h
+    s.ctl.step(f_("720#00"), millis{1});                                  // a boot-up: node 20h
+    CHECK(s.ctl.node() == canopen::node_id{0x20});
+    CHECK(s.sent() == std::vector<std::string>{"620#4000100000000000"});
+    auto ev = s.events();
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[0].kind == event_kind::found);
+    CHECK(ev[1].kind == event_kind::sdo_refused);
+    CHECK(ev[1].what == object::startup_show);
+    CHECK(ev[1].value == static_cast<std::uint32_t>(errc::unknown_object));
+    s.ctl.step(f_("5A0#4300100091010300"), millis{2});
+    CHECK(s.sent() ==
+          std::vector<std::string>{"000#0120", "220#0000000000000000", "320#0000000000000000"});
+    ev = s.events();
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[0].kind == event_kind::sdo_done);
+    CHECK(ev[0].value == 0x0003'0191);
+    CHECK(ev[1].kind == event_kind::ready);
+    s.ctl.tick(millis{101});
+    CHECK(s.sent().empty());
+    s.ctl.tick(millis{102});  // the refresh, 100 ms after the first picture
+    CHECK(s.sent() == std::vector<std::string>{"220#0000000000000000", "320#0000000000000000"});
+}
+
 TEST_CASE("controller: an LED the model lacks is refused") {
     controller_config cfg;
     cfg.keypad_model = model::pkp2200;
