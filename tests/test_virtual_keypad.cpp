@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -695,6 +696,45 @@ TEST_CASE("segmented uploads of the strings, per model") {
           strings{"595#410B100007000000", "595#00504B5532323030", "595#1D00000000000000",
                   "595#8000000001000405", "595#8000000001000405"});
     CHECK(behaviour::string_of(model::pk1000, object::software_version)->bytes == "V2.8");
+}
+
+TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every readable object") {
+    for (const auto m : enum_values<model>()) {
+        CAPTURE(m);
+        const auto mi = info(m).value();
+        auto k = booted(m);
+        k.receive(frame_of("000#0115"), millis{1});
+        CHECK(k.state() == run_state::operational);
+        k.press(1, millis{2});
+        const auto keys = k.transmit();
+        REQUIRE(keys);
+        CHECK(text_of(*keys) == "195#0100000000");
+        // the lowest LED the model has, red, by the LED-on PDO
+        const unsigned first = static_cast<unsigned>(std::countr_zero(mi.led_mask)) + 1;
+        leds want;
+        want.red.insert(first);
+        const auto pdo = encode(canopen::default_node_id, m, message{led_on{want}});
+        REQUIRE(pdo);
+        k.receive(*pdo, millis{3});
+        CHECK(k.led_on().red.contains(first));
+        // every readable object: a reply the library's decoder reads as this object's
+        millis t{10};
+        for (const auto& r : rows_of(mi.dictionary)) {
+            if (!r.readable() || kind_of(r.id).kind == value_kind::none) continue;
+            CAPTURE(r.id);
+            can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),
+                             static_cast<std::uint8_t>(r.address.index >> 8), r.address.subindex};
+            k.receive(can::frame(can::standard_id{0x615}, can::dlc{8}, req), t);
+            t = t + duration_ms{2};
+            k.advance(t);
+            const auto reply = k.transmit();
+            REQUIRE(reply);
+            const auto d = decode(*reply, canopen::default_node_id, m);
+            CHECK_MESSAGE(d.has_value(), text_of(*reply));
+            k.receive(frame_of("615#8000000000000000"), t);  // end any segmented upload
+        }
+        CHECK(ask(k, "615#40FF5F0000000000", t) == "595#80FF5F0000000206");
+    }
 }
 
 namespace {

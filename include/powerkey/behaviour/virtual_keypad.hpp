@@ -26,6 +26,7 @@
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
+#include <powerkey/names.hpp>
 
 #include <array>
 #include <cstddef>
@@ -44,7 +45,7 @@ namespace powerkey::behaviour {
 // expedited (43h), longer ones segmented: 41h with `announced` in bytes 4..7, or 40h ("size not
 // indicated") with `announced` still in byte 4 where the manual prints that (E-CORE-3).
 struct keypad_string {
-    std::uint8_t models;  // bit m for model m (models.hpp order)
+    std::uint16_t models;  // bit m for model m (models.hpp order)
     object id;
     std::string_view bytes;
     std::uint32_t announced;
@@ -53,8 +54,8 @@ struct keypad_string {
 };
 
 namespace detail {
-inline constexpr std::uint8_t pk1000_bit = 1, pkp2200_bit = 2, pkp2400_bit = 4, pkp2600_bit = 8,
-                              pkp_bits = 14;
+inline constexpr std::uint16_t pk1000_bit = 1, pkp2200_bit = 2, pkp2400_bit = 4, pkp2600_bit = 8,
+                               pkp_bits = 14;
 // Every byte of a literal but its terminator, NULs inside included.
 template <std::size_t N>
 constexpr std::string_view bytes_of(const char (&s)[N]) noexcept {
@@ -97,7 +98,7 @@ inline constexpr keypad_string keypad_strings[] = {
 
 // The string object `o` of model m reports; nullopt when it has none.
 [[nodiscard]] constexpr std::optional<keypad_string> string_of(model m, object o) noexcept {
-    const auto bit = static_cast<std::uint8_t>(1u << static_cast<unsigned>(m));
+    const auto bit = static_cast<std::uint16_t>(1u << static_cast<unsigned>(m));
     for (const auto& s : keypad_strings)
         if ((s.models & bit) != 0 && s.id == o) return s;
     return std::nullopt;
@@ -313,7 +314,11 @@ private:
         for (const auto& r : rows_of(dictionary::pk1000)) value_[idx(r.id)] = r.initial;
         for (const auto& r : rows_of(info_.dictionary)) value_[idx(r.id)] = r.initial;
         value_[idx(object::node_id)] = canopen::default_node_id.value();
-        if (info_.dictionary == dictionary::pkp_li) {
+        // 1016h sub 1: off, monitoring node 01h ("01h default", PK1000 28); the row says 0,
+        // which the codec refuses as a value (no producer)
+        if (value_[idx(object::consumer_heartbeat)] == 0)
+            value_[idx(object::consumer_heartbeat)] = 0x0001'0000;
+        if (find_row(info_.dictionary, object::total_keys)) {
             // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
             // (4 keys x RGB), 6 external LEDs; the other models by the same rule (inferred),
             // with no external LEDs.
@@ -324,30 +329,46 @@ private:
         }
     }
 
+    // The expedited size of a row (the SI per-colour planes: the model's stride, as the codec
+    // has it); 0 for a string.
+    constexpr unsigned size_of(const object_row& r) const noexcept {
+        if (r.size != 0) return r.size;
+        if (kind_of(r.id).kind == value_kind::led_plane) return info_.stride / 8u;
+        return 0;
+    }
+    // Whether an LED object is of the blink map (by its name: led_blink, led_blink_red, ...).
+    static constexpr bool is_blink(object o) noexcept {
+        return powerkey::to_string(o).find("blink") != std::string_view::npos;
+    }
+    constexpr leds& map_of(object o) noexcept { return is_blink(o) ? blink_ : on_; }
+    constexpr const leds& map_of(object o) const noexcept { return is_blink(o) ? blink_ : on_; }
+    static constexpr std::uint64_t low_bits(unsigned n) noexcept {
+        return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+    }
+
     // The value a read of row r gives now.
     constexpr std::uint32_t current(const object_row& r) const noexcept {
+        const object_kind k = kind_of(r.id);
+        switch (k.kind) {
+            case value_kind::keys: return static_cast<std::uint32_t>(keys_.mask());
+            case value_kind::led_map: return map_bits(map_of(r.id));
+            case value_kind::led_plane:
+                return static_cast<std::uint32_t>(map_of(r.id).of(k.holds).mask());
+            case value_kind::led_part:  // SI: bits [offset, offset + width) of the LED string
+                return static_cast<std::uint32_t>(
+                    (pack_leds(info_, map_of(r.id), info_.planes) >> k.offset) & low_bits(k.width));
+            case value_kind::cob_id:
+                // PK1000 38-41, 46: 4000 0000h + the identifier in use (the rows hold node 15h);
+                // the PKP prints the function base without the node (E-PKP-5), as its rows do.
+                if ((r.initial & 0x7Fu) != 0) return (r.initial & 0xFFFF'FF80u) | node_.value();
+                return r.initial;
+            default: break;
+        }
         switch (r.id) {
-            case object::keys: return static_cast<std::uint32_t>(keys_.mask());
-            case object::led_on: return map_bits(on_);
-            case object::led_blink: return map_bits(blink_);
-            case object::led_on_red: return static_cast<std::uint32_t>(on_.red.mask());
-            case object::led_on_green: return static_cast<std::uint32_t>(on_.green.mask());
-            case object::led_blink_red: return static_cast<std::uint32_t>(blink_.red.mask());
-            case object::led_blink_green: return static_cast<std::uint32_t>(blink_.green.mask());
             case object::led_brightness: return brightness_.value();
             case object::backlight_level: return backlight_.level.value();
             case object::backlight_colour: return static_cast<std::uint32_t>(backlight_.colour);
             case object::node_id: return node_.value();
-            case object::rpdo1_cob_id:
-            case object::rpdo2_cob_id:
-            case object::rpdo3_cob_id:
-            case object::rpdo4_cob_id:
-            case object::tpdo1_cob_id:
-                // PK1000 38-41, 46: 4000 0000h + the identifier in use; the PKP prints the
-                // function base without the node (E-PKP-5), which is what its rows hold.
-                if (info_.dictionary == dictionary::pk1000)
-                    return (r.initial & 0xFFFF'FF80u) | node_.value();
-                return r.initial;
             default: return value(r.id);
         }
     }
@@ -457,7 +478,7 @@ private:
 
     // Heartbeat consumer (PK1000 28): 1016h sub 1 = period (bits 0..15) and producer (16..23).
     constexpr void on_heartbeat(const can::frame& f, millis t) noexcept {
-        if (info_.dictionary != dictionary::pk1000 || f.size() != 1) return;
+        if (f.size() != 1) return;  // 1016h is 0 (off) where the dictionary has none (PKP)
         const std::uint32_t c = value(object::consumer_heartbeat);
         const std::uint32_t period = c & 0xFFFFu;
         const std::uint32_t producer = (c >> 16) & 0x7Fu;
@@ -471,8 +492,8 @@ private:
     constexpr bool event_driven() const noexcept {
         // PK1000 46 a: FEh event-driven, 01h..F0h every n-th SYNC. The PKP's 1800h/2 reads FDh
         // but it sends on every change (PKP 10).
-        return info_.dictionary != dictionary::pk1000 ||
-               value(object::tpdo1_transmission_type) >= 0xFE;
+        const auto row = find_row(info_.dictionary, object::tpdo1_transmission_type);
+        return !row || !row->writable() || value(object::tpdo1_transmission_type) >= 0xFE;
     }
     constexpr std::uint32_t periodic_ms() const noexcept {
         return event_driven() ? value(object::tpdo1_event_timer) : 0;
@@ -511,10 +532,10 @@ private:
         const auto m = powerkey::decode(f, node_, model_);
         if (!m) return;  // a PDO the keypad cannot read is ignored
         const std::uint32_t fn = f.raw_id() & 0x780;
-        if (info_.dictionary == dictionary::pk1000 && (fn == 0x200 || fn == 0x300)) {
-            const auto type = value(fn == 0x200 ? object::rpdo1_transmission_type
-                                                : object::rpdo2_transmission_type);
-            if (type <= 0xF0) {
+        if (fn == 0x200 || fn == 0x300) {
+            const object type_of =
+                fn == 0x200 ? object::rpdo1_transmission_type : object::rpdo2_transmission_type;
+            if (find_row(info_.dictionary, type_of) && value(type_of) <= 0xF0) {
                 rpdo_buffer_[fn == 0x200 ? 0 : 1] = *m;
                 return;
             }
@@ -585,7 +606,8 @@ private:
         p[1] = static_cast<std::uint8_t>(a.index & 0xFF);
         p[2] = static_cast<std::uint8_t>(a.index >> 8);
         p[3] = a.subindex;
-        if (row->size == 0) {
+        const unsigned size = size_of(*row);
+        if (size == 0) {
             const auto s = string_of(model_, row->id);
             if (!s) return abort(a, canopen::sdo_abort_code::no_data, t);
             if (s->bytes.size() <= 4) {  // expedited (PK1000 33, 34)
@@ -600,8 +622,8 @@ private:
             return reply(p, t);
         }
         // expedited, the row's size: 4Fh one byte, 4Bh two, 43h four
-        p[0] = static_cast<std::uint8_t>(0x43 | ((4u - row->size) << 2));
-        powerkey::detail::store_le(p, 4, row->size, current(*row));
+        p[0] = static_cast<std::uint8_t>(0x43 | ((4u - size) << 2));
+        powerkey::detail::store_le(p, 4, size, current(*row));
         reply(p, t);
     }
 
@@ -635,8 +657,9 @@ private:
         if (!row->writable()) return abort(a, canopen::sdo_abort_code::read_only, t);
         if ((b0 & 0x02) == 0)  // segmented download: no object here takes one
             return abort(a, canopen::sdo_abort_code::unsupported_access, t);
-        const unsigned n = (b0 & 0x01) != 0 ? 4u - ((b0 >> 2) & 3u) : row->size;
-        if (n != row->size) return abort(a, canopen::sdo_abort_code::length_mismatch, t);
+        const unsigned size = size_of(*row);
+        const unsigned n = (b0 & 0x01) != 0 ? 4u - ((b0 >> 2) & 3u) : size;
+        if (n != size) return abort(a, canopen::sdo_abort_code::length_mismatch, t);
         const std::uint32_t v =
             static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
         after_reply then = after_reply::none;
@@ -663,17 +686,29 @@ private:
         const value_kind kind = kind_of(r.id).kind;
         switch (kind) {
             case value_kind::led_plane: {  // PK1000 17, 18: one plane, LEDs 1..28
-                if ((v >> info_.leds) != 0) return code::invalid_value;
-                leds& l = r.id == object::led_on_red || r.id == object::led_on_green ? on_ : blink_;
-                l.of(kind_of(r.id).holds) = led_set::from_mask(v);
+                if ((v & ~info_.led_mask) != 0) return code::invalid_value;
+                map_of(r.id).of(kind_of(r.id).holds) = led_set::from_mask(v);
                 return std::nullopt;
             }
             case value_kind::led_map: {  // PKP 15, 16: the planes that fit 32 bits
                 const auto m = unpack_leds(info_, v, info_.object_planes());
                 if (!m) return code::invalid_value;
-                leds& l = r.id == object::led_on ? on_ : blink_;
+                leds& l = map_of(r.id);
                 for (unsigned c = 0; c < info_.object_planes(); ++c)
                     l.of(static_cast<plane>(c)) = m->of(static_cast<plane>(c));
+                return std::nullopt;
+            }
+            case value_kind::led_part: {  // SI: bits [offset, offset + width) of the string
+                const object_kind k = kind_of(r.id);
+                if ((v & ~low_bits(k.width)) != 0) return code::invalid_value;
+                leds& l = map_of(r.id);
+                const std::uint64_t keep = ~(low_bits(k.width) << k.offset);
+                const auto m = unpack_leds(
+                    info_,
+                    (pack_leds(info_, l, info_.planes) & keep) | (std::uint64_t{v} << k.offset),
+                    info_.planes);
+                if (!m) return code::invalid_value;
+                l = *m;
                 return std::nullopt;
             }
             case value_kind::consumer_heartbeat: {  // PK1000 28: period 0 (off) or >= 10 ms
