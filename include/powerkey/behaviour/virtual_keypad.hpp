@@ -54,8 +54,19 @@ struct keypad_string {
 };
 
 namespace detail {
-inline constexpr std::uint16_t pk1000_bit = 1, pkp2200_bit = 2, pkp2400_bit = 4, pkp2600_bit = 8,
-                               pkp_bits = 14;
+constexpr std::uint16_t bit(model m) noexcept {
+    return static_cast<std::uint16_t>(1u << static_cast<unsigned>(m));
+}
+inline constexpr std::uint16_t pk1000_bit = bit(model::pk1000), pkp2200_bit = bit(model::pkp2200),
+                               pkp2400_bit = bit(model::pkp2400), pkp2600_bit = bit(model::pkp2600),
+                               pkp_bits = pkp2200_bit | pkp2400_bit | pkp2600_bit;
+// The SI family (reference/si-family.md): the PKP-2600-SI and PKP-3500-MT manuals print their
+// strings; the other SI models' are inferred from the PKP-2600-SI's and their reported names.
+inline constexpr std::uint16_t si_bits =
+    bit(model::pkp2600si) | bit(model::pkp3500mt) | bit(model::pkp3500si) | bit(model::pkp2500si) |
+    bit(model::pkp1500li) | bit(model::pkp2200si) | bit(model::pkp2300si) | bit(model::pkp2400si);
+inline constexpr std::uint16_t si_inferred =
+    si_bits & ~bit(model::pkp2600si) & ~bit(model::pkp3500mt);
 // Every byte of a literal but its terminator, NULs inside included.
 template <std::size_t N>
 constexpr std::string_view bytes_of(const char (&s)[N]) noexcept {
@@ -94,13 +105,47 @@ inline constexpr keypad_string keypad_strings[] = {
     // 6 announced, 8 sent (E-CORE-4)
     {detail::pkp_bits, object::serial_number_string, detail::bytes_of("000000\0\0"), 6, true,
      "PKP 31 (E-CORE-4)"},
+    // SI family: PKP2600SI = PKP-2600-SI manual rev1.5, MT = PKP-3500-MT manual rev1.3
+    {detail::si_bits, object::device_name, detail::bytes_of("BlinkMarine"), 11, true,
+     "PKP2600SI 30, MT 36"},
+    {detail::bit(model::pkp2600si), object::hardware_version, detail::bytes_of("V_01"), 4, true,
+     "PKP2600SI 31"},
+    {detail::bit(model::pkp3500mt), object::hardware_version, detail::bytes_of("V_00"), 4, true,
+     "MT 37"},
+    {detail::si_inferred, object::hardware_version, detail::bytes_of("V_01"), 4, true,
+     "inferred from PKP2600SI 31"},
+    {detail::bit(model::pkp2600si), object::software_version, detail::bytes_of("V2.8"), 4, true,
+     "PKP2600SI 32"},
+    {detail::bit(model::pkp3500mt), object::software_version, detail::bytes_of("1.00"), 4, true,
+     "MT 38"},
+    {detail::bit(model::pkp1500li), object::software_version, detail::bytes_of("2.10"), 4, true,
+     "reference/si-family.md"},
+    {static_cast<std::uint16_t>(detail::si_inferred & ~detail::bit(model::pkp1500li)),
+     object::software_version, detail::bytes_of("V2.8"), 4, true, "inferred from PKP2600SI 32"},
+    {detail::bit(model::pkp2600si), object::model_name, detail::bytes_of("PKP2600SI"), 9, true,
+     "PKP2600SI 33"},
+    {detail::bit(model::pkp3500mt), object::model_name, detail::bytes_of("PKP3500MT"), 9, true,
+     "MT 39"},
+    {detail::bit(model::pkp3500si), object::model_name, detail::bytes_of("PKP3500SI"), 9, true,
+     "reference/si-family.md"},
+    {detail::bit(model::pkp1500li), object::model_name, detail::bytes_of("PKP1500LI"), 9, true,
+     "reference/si-family.md"},
+    {detail::bit(model::pkp2500si), object::model_name, detail::bytes_of("PKP2500SI"), 9, true,
+     "inferred from the naming"},
+    {detail::bit(model::pkp2200si), object::model_name, detail::bytes_of("PKP2200SI"), 9, true,
+     "inferred from the naming"},
+    {detail::bit(model::pkp2300si), object::model_name, detail::bytes_of("PKP2300SI"), 9, true,
+     "inferred from the naming"},
+    {detail::bit(model::pkp2400si), object::model_name, detail::bytes_of("PKP2400SI"), 9, true,
+     "inferred from the naming"},
+    {detail::si_bits, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true,
+     "PKP2600SI 46, MT 57; the others inferred"},
 };
 
 // The string object `o` of model m reports; nullopt when it has none.
 [[nodiscard]] constexpr std::optional<keypad_string> string_of(model m, object o) noexcept {
-    const auto bit = static_cast<std::uint16_t>(1u << static_cast<unsigned>(m));
     for (const auto& s : keypad_strings)
-        if ((s.models & bit) != 0 && s.id == o) return s;
+        if ((s.models & detail::bit(m)) != 0 && s.id == o) return s;
     return std::nullopt;
 }
 
