@@ -44,7 +44,14 @@ struct bench {
             const millis t{now};
             keypad.advance(t);
             bool any = false;
-            while (const auto f = keypad.transmit()) {
+            while (auto f = keypad.transmit()) {
+                if (abort_next && f->raw_id() == 0x580u + keypad.node().value() &&
+                    (*f)[1] == (abort_next->index & 0xFF) && (*f)[2] == (abort_next->index >> 8) &&
+                    (*f)[3] == abort_next->subindex) {
+                    f = canopen::encode(keypad.node(),
+                                        canopen::sdo_abort_response{{*abort_next, abort_code}});
+                    abort_next.reset();
+                }
                 log.push_back({*f, now});
                 ctl.step(*f, t);
                 any = true;
@@ -82,6 +89,11 @@ struct bench {
     }
 
     millis at() const { return millis{now}; }
+
+    // Fault injection for a keypad whose refusals the codec cannot provoke: its next reply for
+    // this object becomes an abort with abort_code.
+    std::optional<canopen::sdo_address> abort_next;
+    canopen::sdo_abort_code abort_code = canopen::sdo_abort_code::general_error;
 
     virtual_keypad<32> keypad;
     controller<16, 64> ctl;
@@ -289,22 +301,41 @@ TEST_CASE("controller + virtual keypad: lost frames (an SDO request, a reply, th
 }
 
 namespace {
-// A readable object the virtual keypad of model m aborts a read of (error register 1001h on the
-// PK1000, a string the keypad does not report ...), found by asking a scratch keypad.
-std::optional<object> aborted_read(model m) {
+// Whether a fresh virtual keypad of model m aborts request r.
+bool keypad_aborts(model m, const message& r) {
+    const auto f = encode(canopen::default_node_id, m, r);
+    if (!f) return false;
+    virtual_keypad<8> k(m);
+    k.power_on(millis{0});
+    while (k.transmit()) {
+    }
+    k.receive(*f, millis{1});
+    k.advance(millis{5});
+    while (const auto reply = k.transmit())
+        if ((*reply)[0] == 0x80) return true;
+    return false;
+}
+
+// A request the virtual keypad of model m aborts although the codec builds it: a read of the
+// error register 1001h (PK1000 31), of a string the keypad does not report, a write the keypad
+// refuses, a command it does not take ... found by asking a scratch keypad.
+std::optional<message> aborted_request(model m) {
     const auto mi = info(m).value();
     for (const auto& r : rows_of(mi.dictionary)) {
-        if (!r.readable()) continue;
-        virtual_keypad<8> k(m);
-        k.power_on(millis{0});
-        while (k.transmit()) {
+        if (r.readable() && keypad_aborts(m, sdo_read{r.id})) return sdo_read{r.id};
+        if (r.writable() && kind_of(r.id).kind != value_kind::commands) {
+            for (const std::uint32_t v : {r.min, r.max, r.initial}) {
+                const message w = sdo_write{r.id, number_value(v)};
+                if (keypad_aborts(m, w)) return w;
+            }
         }
-        const auto f = encode(canopen::default_node_id, m, sdo_read{r.id});
-        if (!f) continue;
-        k.receive(*f, millis{1});
-        k.advance(millis{5});
-        while (const auto reply = k.transmit())
-            if ((*reply)[0] == 0x80) return r.id;
+    }
+    for (const auto& row : powerkey::detail::command_table) {
+        command c;
+        c.code = row.code;
+        if (row.p1 == command_param::key) c.key = 1;
+        if (row.p1 == command_param::colour) c.colour = backlight_colour::red;
+        if (keypad_aborts(m, c)) return message{c};
     }
     return std::nullopt;
 }
@@ -313,23 +344,30 @@ std::optional<object> aborted_read(model m) {
 TEST_CASE("controller + virtual keypad: an SDO abort is reported and the list goes on") {
     for (const model m : enum_values<model>()) {
         INFO("model " << std::string(to_string(m)));
-        const auto bad = aborted_read(m);
-        if (!bad) {
-            MESSAGE("no read the virtual keypad aborts for this model");
-            continue;
-        }
-        const message config[] = {sdo_read{*bad}, sdo_read{object::device_type}};
+        // A request the virtual keypad aborts; where there is none that the codec builds (the
+        // PKP-LI keypads take every value the codec lets through), the keypad's reply to a read
+        // of 1018h sub 1 is turned into an abort on its way.
+        const auto found_bad = aborted_request(m);
+        const message bad = found_bad.value_or(message{sdo_read{object::vendor_id}});
+        const message config[] = {bad, sdo_read{object::device_type}};
         controller_config cfg;
         cfg.configuration = config;
         cfg.identify = false;
         bench b(m, cfg);
+        if (!found_bad) {
+            b.abort_next = canopen::sdo_address{0x1018, 1};
+            b.abort_code = canopen::sdo_abort_code::hardware_error;
+        }
         b.keypad.power_on(b.at());
         b.run(200);
         REQUIRE(b.count(event_kind::sdo_aborted) == 1);
         const auto e = *std::find_if(b.events.begin(), b.events.end(), [](const auto& x) {
             return x.kind == event_kind::sdo_aborted;
         });
-        CHECK(e.what == *bad);
+        object asked = object::command_module;
+        if (const auto* r = std::get_if<sdo_read>(&bad)) asked = r->object;
+        if (const auto* w = std::get_if<sdo_write>(&bad)) asked = w->object;
+        CHECK(e.what == asked);
         CHECK(e.step == 0);
         CHECK(abort_meaning_of(e.value) != "");
         CHECK(b.count(event_kind::ready) == 1);  // the next entry ran, and the keypad started

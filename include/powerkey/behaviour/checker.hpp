@@ -108,6 +108,9 @@ public:
                    (e.sdo == sdo_pairing::reply || e.sdo == sdo_pairing::unanswered)) {
             on_response(f, e);
         }
+        if (c.fn == canopen::function::heartbeat && c.node == consumer_producer_ &&
+            consumer_period_ != 0 && f.size() == 1 && f[0] != 0x00)
+            consumer_last_ = now_;  // the heartbeat the keypad consumes (1016h), a boot-up not
         if (e.decoded) on_message(*e.decoded, c);
         if (e.new_node && *e.new_node != before) {
             old_ = before;
@@ -147,6 +150,7 @@ private:
     constexpr void timers() noexcept {
         if (before(now_, last_time_)) {
             if (pending_) pending_->sent = now_;
+            if (consumer_last_) consumer_last_ = now_;
             if (hb_last_) hb_last_->time = now_;
             if (ks_last_) ks_last_->time = now_;
         }
@@ -161,6 +165,15 @@ private:
             hb_reported_ = true;
             report(line_, problem_kind::heartbeat_silence, elapsed(hb_last_->time, now_).value,
                    hb_period_, hb_last_->line);
+        }
+        // PK1000 28 note 2: when the heartbeat the keypad consumes (1016h) stops for longer than
+        // the consumer time, the keypad turns its LEDs off and goes pre-operational until a new
+        // NMT start. Its PDOs are then ignored (pdo_not_operational says so).
+        if (consumer_period_ != 0 && consumer_last_ &&
+            elapsed(*consumer_last_, now_).value > consumer_period_) {
+            consumer_last_.reset();
+            if (state_ == canopen::nmt_state::operational)
+                set_state(canopen::nmt_state::pre_operational);
         }
         if (ks_period_ != 0 && ks_last_ && !ks_reported_ &&
             state_ == canopen::nmt_state::operational &&
@@ -326,6 +339,10 @@ private:
                 ks_reported_ = false;
             } else if (w->object == object::active_on_startup) {
                 active_ = w->value.raw != 0;
+            } else if (w->object == object::consumer_heartbeat) {
+                consumer_period_ = w->value.raw & 0xFFFFu;
+                consumer_producer_ = static_cast<std::uint8_t>((w->value.raw >> 16) & 0x7Fu);
+                consumer_last_.reset();  // monitoring starts at the first heartbeat (PK1000 28)
             }
         } else if (const auto* k = std::get_if<command>(&m)) {
             if (k->code == command_code::set_periodic_transmission) {
@@ -364,6 +381,9 @@ private:
     std::uint32_t hb_period_ = 0;
     std::optional<seen> hb_last_;
     bool hb_reported_ = false;
+    std::uint32_t consumer_period_ = 0;  // 1016h sub 1: the heartbeat the keypad consumes
+    std::uint8_t consumer_producer_ = 0;
+    std::optional<millis> consumer_last_;
     std::uint32_t ks_period_ = 0;
     std::optional<seen> ks_last_;
     bool ks_reported_ = false;
