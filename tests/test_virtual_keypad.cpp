@@ -748,6 +748,40 @@ TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every rea
     }
 }
 
+TEST_CASE("every model: writing back what a read gives is acknowledged") {
+    for (const auto m : enum_values<model>()) {
+        CAPTURE(m);
+        const auto mi = info(m).value();
+        auto k = booted(m);
+        millis t{10};
+        for (const auto& r : rows_of(mi.dictionary)) {
+            const auto kind = kind_of(r.id).kind;
+            if (!r.readable() || !r.writable() || kind == value_kind::restore) continue;
+            CAPTURE(r.id);
+            can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),
+                             static_cast<std::uint8_t>(r.address.index >> 8), r.address.subindex};
+            k.receive(can::frame(can::standard_id{0x615}, can::dlc{8}, req), t);
+            k.advance(t + duration_ms{1});
+            const auto reply = k.transmit();
+            REQUIRE(reply);
+            REQUIRE(((*reply)[0] & 0xF3) == 0x43);  // expedited, size indicated
+            const unsigned n = 4u - (((*reply)[0] >> 2) & 3u);
+            can::payload w = reply->bytes();
+            w[0] = static_cast<std::uint8_t>(0x23 | ((4u - n) << 2));
+            const auto write = can::frame(can::standard_id{0x615}, can::dlc{8}, w);
+            CHECK_MESSAGE(decode(write, canopen::default_node_id, m).has_value(), text_of(write));
+            k.receive(write, t + duration_ms{2});
+            k.advance(t + duration_ms{3});
+            const auto ack = k.transmit();
+            REQUIRE(ack);
+            CHECK_MESSAGE((*ack)[0] == 0x60, text_of(*ack));
+            t = t + duration_ms{10};
+        }
+        CHECK(k.state() == run_state::pre_operational);
+        CHECK(k.node() == canopen::default_node_id);
+    }
+}
+
 namespace {
 // One session in a constant expression: boot, start, a key, an SDO read.
 constexpr bool scenario() {
