@@ -619,6 +619,26 @@ TEST_CASE("controller, scripted: any node, a refused entry, the refresh") {
     CHECK(s.sent() == std::vector<std::string>{"220#0000000000000000", "320#0000000000000000"});
 }
 
+TEST_CASE("controller, scripted: a string longer than the controller keeps is refused") {
+    const message config[] = {sdo_read{object::device_name}};
+    controller_config cfg;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    cfg.configuration = config;
+    scripted s(cfg);
+    s.ctl.step(f_("715#00"), millis{0});
+    CHECK(s.sent() == std::vector<std::string>{"615#4008100000000000"});
+    s.ctl.step(f_("595#4108100014000000"), millis{1});  // 20 bytes announced
+    s.ctl.step(f_("595#0041424344454647"), millis{2});
+    s.ctl.step(f_("595#1041424344454647"), millis{3});
+    s.ctl.step(f_("595#0041424344454647"), millis{4});  // 21 bytes: past the 16 it keeps
+    const auto ev = s.events();
+    REQUIRE(ev.size() == 3);
+    CHECK(ev[1].kind == event_kind::sdo_refused);
+    CHECK(ev[1].value == static_cast<std::uint32_t>(errc::buffer_too_small));
+    CHECK(ev[2].kind == event_kind::ready);
+}
+
 TEST_CASE("controller: an LED the model lacks is refused") {
     controller_config cfg;
     cfg.keypad_model = model::pkp2200;

@@ -95,10 +95,11 @@ enum class event_kind : std::uint8_t {
     rebooted,        // a boot-up while it was set up; the setup runs again
     lost,            // silent for longer than lost_after: go to a safe state
     node_changed,    // it moved to `node`
-    sdo_done,        // a configuration entry was done (`step`, `object`; `value` of a read)
+    sdo_done,        // an SDO request was answered (`step`, `what`; `value` of a read)
     sdo_aborted,     // the keypad aborted it: `value` is the CiA 301 abort code
     sdo_timed_out,   // no reply after the retries
-    sdo_refused,     // the entry cannot be sent to this model: `value` is the errc
+    sdo_refused,     // not sent (the model cannot carry it), or a string read past 16 bytes:
+                     // `value` is the errc
     key_pressed,     // `key`
     key_released,    // `key`
     key_long_press,  // `key`, held for long_press
@@ -218,7 +219,7 @@ public:
     [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
     [[nodiscard]] constexpr const leds& leds_on() const noexcept { return on_; }
     [[nodiscard]] constexpr const leds& leds_blink() const noexcept { return blink_; }
-    // The text of the last string read (100Bh ...).
+    // The text of the last string read (100Bh ...), up to 16 bytes.
     [[nodiscard]] constexpr std::string_view text() const noexcept { return upload_.text(); }
     // Whether an SDO request is waiting for its reply (the controller never sends a second one).
     [[nodiscard]] constexpr bool sdo_outstanding() const noexcept { return job_.has_value(); }
@@ -371,6 +372,11 @@ private:
                 i && i->address != job_->address)
                 return;
             const auto s = upload_.step(f);
+            if (!s && s.error() == errc::buffer_too_small) {  // a string longer than 16 bytes
+                emit_sdo(event_kind::sdo_refused, *job_, static_cast<std::uint32_t>(s.error()));
+                finish_job(false);
+                return;
+            }
             if (!s) {
                 // A malformed or out-of-turn reply: keep waiting; the timeout resends.
                 (void)upload_.start(job_->address);
