@@ -22,10 +22,6 @@ using powerkey_tests::first_failing;
 using powerkey_tests::frame_of;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
-constexpr message decoded(model m, std::string_view frame) {
-    return decode(frame_of(frame), keypad, m).value();
-}
-
 // One carrier of a fact: the frame, the model it is decoded for, and what the accessor answers.
 template <class T>
 struct carrier {

@@ -67,7 +67,7 @@ constexpr describe_row rows[] = {
     {"CiA 301", model::pk1000, "615#8000200100000405",
      "node 15h  SDO abort request  index: 2000h  subindex: 1  code: timed_out"},
     {"PK1000 49", model::pk1000, "18EF2100#041B8000FFFFFFFF",
-     "node 15h  J1939 switch to canopen  priority: 6  destination: 21h  source: 00h"},
+     "node 15h  J1939 switch to CANopen  priority: 6  destination: 21h  source: 00h"},
     {"PK1000 11", model::pk1000, "195#090000002A", "node 15h  key state  keys: 1 4  tick: 42"},
     {"PK1000 12", model::pk1000, "215#0000010000000008",
      "node 15h  LED on  red: 17  green: 28  blue: -"},
