@@ -432,6 +432,12 @@ TEST_CASE("heartbeat producer: every heartbeat_time ms, the NMT state; 0 stops i
     k.receive(frame_of("000#8015"), millis{520});
     CHECK(ask(k, "615#2B17100000000000", {530}) == "595#6017100000000000");
     CHECK(run_until(k, millis{532}, millis{2000}).empty());
+    // a caller that wakes late gets one heartbeat, then the period again from then
+    CHECK(ask(k, "615#2B1710000A000000", {2000}) == "595#6017100000000000");
+    k.advance(millis{60'000});
+    CHECK(text_of(*k.transmit()) == "715#7F");
+    CHECK_FALSE(k.transmit());
+    CHECK(run_until(k, millis{60'001}, millis{60'010}) == strings{"60010 715#7F"});
 }
 
 TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-operational") {

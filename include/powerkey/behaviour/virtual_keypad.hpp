@@ -161,8 +161,8 @@ struct keypad_options {
     // later request is answered after the earlier one.
     bool drop_sdo_while_busy = true;
     // How long the keypad takes to answer an SDO request, in ms (inferred: the manuals give no
-    // figure; 1 ms is what a 125 kbit/s keypad shows). The reply leaves at receive time + this,
-    // released by advance(); 0 answers at once.
+    // figure). The reply leaves at receive time + this, released by advance(); 0 answers at
+    // once (and then no request can find the keypad busy).
     std::uint32_t sdo_response_ms = 1;
 };
 
@@ -259,11 +259,11 @@ public:
         release_reply(t);
         // heartbeat producer (PK1000 29, PKP 9/17): every heartbeat_time ms, the NMT state
         const std::uint32_t hb = value(object::heartbeat_time);
-        if (hb != 0) {
-            while (reached(next_heartbeat_, t)) {
-                send_heartbeat(nmt_byte());
-                next_heartbeat_ = next_heartbeat_ + duration_ms{hb};
-            }
+        // A caller that wakes late gets one heartbeat, not every missed one.
+        if (hb != 0 && reached(next_heartbeat_, t)) {
+            send_heartbeat(nmt_byte());
+            next_heartbeat_ = next_heartbeat_ + duration_ms{hb};
+            if (reached(next_heartbeat_, t)) next_heartbeat_ = t + duration_ms{hb};
         }
         // heartbeat consumer (PK1000 28): monitoring starts with the first heartbeat; on a loss
         // the keypad turns off every LED and the backlight and goes pre-operational, until a
@@ -277,8 +277,10 @@ public:
         }
         // periodic key state: the event timer (PK1000 46 b) or PKP command 12h (PKP 13 f)
         const std::uint32_t period = periodic_ms();
-        if (state_ == run_state::operational && period != 0) {
-            while (reached(next_periodic_, t)) send_keys(next_periodic_);  // reschedules
+        if (state_ == run_state::operational && period != 0 && reached(next_periodic_, t)) {
+            const millis due = next_periodic_;
+            send_keys(due);  // reschedules to due + period
+            if (reached(next_periodic_, t)) next_periodic_ = t + duration_ms{period};  // late
         }
     }
 
