@@ -4,7 +4,8 @@
 // compile time and at run time.
 //
 //   constexpr bool decodes(const row& r) { ... }             // one check, written once
-//   static_assert(first_failing(rows, decodes) == std::size(rows));   // g++ prints the index
+//   static_assert(all_rows_pass<first_failing(rows, decodes), std::size(rows)>);
+//                                                 // the compiler names the first failing row
 //   TEST_CASE("...") { check_rows(rows, decodes); }            // doctest prints section + frame
 #ifndef POWERKEY_TESTS_SUPPORT_HPP
 #define POWERKEY_TESTS_SUPPORT_HPP
@@ -76,6 +77,16 @@ constexpr std::size_t first_failing(const Row (&rows)[N], Check check) {
         if (!check(rows[i])) return i;
     return N;
 }
+
+// true when FirstFailing == Rows; otherwise the static_assert inside fails, and both g++ and
+// clang++ print the instantiation rows_checked<FirstFailing, Rows>: the index of the failing row.
+template <std::size_t FirstFailing, std::size_t Rows>
+struct rows_checked {
+    static_assert(FirstFailing == Rows, "a table row fails its check: rows_checked<row, rows>");
+    static constexpr bool value = true;
+};
+template <std::size_t FirstFailing, std::size_t Rows>
+inline constexpr bool all_rows_pass = rows_checked<FirstFailing, Rows>::value;
 
 // Runs check over every row at run time (so coverage and sanitizers see it), naming a failing
 // row by its section and frame.
