@@ -224,3 +224,18 @@ TEST_CASE("the session names the function and node of every frame") {
     REQUIRE(keys.decoded.has_value());
     CHECK(pressed_keys(*keys.decoded) == key_set{1});
 }
+
+TEST_CASE("a string of up to four bytes in one reply ends the upload too") {
+    // PK1000 33: the hardware revision, expedited.
+    session<> s(model::pk1000, canopen::default_node_id);
+    CHECK(s.step(can::candump("615#4009100000000000")).sdo == sdo_pairing::request);
+    const auto reply = s.step(can::candump("595#43091000565F3033"));
+    CHECK(reply.sdo == sdo_pairing::reply);
+    CHECK(reply.upload_done);
+    CHECK(reply.upload_error == errc{});
+    CHECK(s.text() == "V_03");
+    REQUIRE(reply.decoded.has_value());
+    CHECK(*reply.decoded ==
+          message{sdo_read_reply{object::hardware_version,
+                                 string_value(4, {0x56, 0x5F, 0x30, 0x33})}});
+}
