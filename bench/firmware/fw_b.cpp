@@ -34,7 +34,7 @@ namespace calls {
         const auto f = firmware::receive();
         if (!f) continue;
         const auto node = co::node_id::make(monitor().node);
-        const auto model = static_cast<powerkey::model>(monitor().model & 3);
+        const auto model = static_cast<powerkey::model>(monitor().model % powerkey::model_count);
         if (!node) continue;
         const auto r = calls::decode_any(*f, *node, model);
         monitor().result = r ? 1 + kind_of(*r) : 0x100 + static_cast<std::uint32_t>(r.error());
