@@ -4,6 +4,7 @@
 #include "pkp_rows.hpp"
 #include "support.hpp"
 
+#include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
 
 #include <doctest/doctest.h>
@@ -785,6 +786,123 @@ TEST_CASE("every model: writing back what a read gives is acknowledged") {
         }
         CHECK(k.state() == run_state::pre_operational);
         CHECK(k.node() == canopen::default_node_id);
+    }
+}
+
+// --- the virtual keypad against the controller (include/powerkey/behaviour/controller.hpp) -----
+
+namespace {
+struct loop_counts {
+    int ready = 0, pressed = 0, released = 0, rebooted = 0, lost = 0, aborted = 0, timed_out = 0;
+    int node_changed = 0;
+    std::uint32_t abort_code = 0;
+};
+
+// Controller and keypad on one bus for `ms` milliseconds, `script(t, keypad, controller)` first
+// in each millisecond.
+template <class Script>
+loop_counts closed_loop(model m, std::uint32_t ms, Script script,
+                        std::span<const message> configuration = {}) {
+    behaviour::controller_config cfg;
+    cfg.keypad_model = m;
+    cfg.configuration = configuration;
+    behaviour::controller<> c(cfg);
+    virtual_keypad<> k(m);
+    loop_counts n;
+    for (std::uint32_t t = 0; t < ms; ++t) {
+        const millis now{t};
+        script(t, k, c);
+        k.advance(now);
+        c.tick(now);
+        while (const auto f = k.transmit()) c.step(*f, now);
+        while (const auto f = c.next_frame()) k.receive(*f, now);
+        while (const auto e = c.poll()) {
+            using ek = behaviour::event_kind;
+            n.ready += e->kind == ek::ready;
+            n.pressed += e->kind == ek::key_pressed;
+            n.released += e->kind == ek::key_released;
+            n.rebooted += e->kind == ek::rebooted;
+            n.lost += e->kind == ek::lost;
+            n.timed_out += e->kind == ek::sdo_timed_out;
+            n.node_changed += e->kind == ek::node_changed;
+            if (e->kind == ek::sdo_aborted) {
+                ++n.aborted;
+                n.abort_code = e->value;
+            }
+        }
+    }
+    return n;
+}
+}  // namespace
+
+TEST_CASE("closed loop: the controller finds, sets up and drives the virtual keypad, every model") {
+    for (const auto m : enum_values<model>()) {
+        CAPTURE(m);
+        const auto mi = info(m).value();
+        const unsigned led = static_cast<unsigned>(std::countr_zero(mi.led_mask)) + 1;
+        bool lit_before_reboot = false, lit_after_reboot = false;
+        const auto n = closed_loop(m, 8000, [&](std::uint32_t t, auto& k, auto& c) {
+            const millis now{t};
+            if (t == 5) k.power_on(now);
+            if (t == 2000) k.press(1, now);
+            if (t == 2100) k.release(1, now);
+            if (t == 2500) c.set_led(led, colour::green);
+            if (t == 3900) lit_before_reboot = k.led_on().green.contains(led);
+            if (t == 4000) k.power_cycle(now);  // the keypad reboots mid-session
+            if (t == 7999) lit_after_reboot = k.led_on().green.contains(led);
+        });
+        CHECK(n.ready == 2);
+        CHECK(n.rebooted == 1);
+        CHECK(n.pressed == 1);
+        CHECK(n.released == 1);
+        CHECK(n.lost == 0);
+        CHECK(n.timed_out == 0);
+        CHECK(lit_before_reboot);
+        CHECK(lit_after_reboot);  // the controller sent its shadow again
+    }
+}
+
+TEST_CASE("closed loop with faults: silence, lost frames, an abort, a node change") {
+    // silent for 2 s: the controller reports the keypad lost, then finds it again
+    auto n = closed_loop(model::pk1000, 6000, [](std::uint32_t t, auto& k, auto&) {
+        if (t == 5) k.power_on(millis{t});
+        if (t == 2000) k.silence(millis{t}, duration_ms{2000});
+    });
+    CHECK(n.lost == 1);
+    CHECK(n.timed_out == 0);
+    // lost frames during the setup: the controller retries
+    n = closed_loop(model::pkp2400, 4000, [](std::uint32_t t, auto& k, auto&) {
+        if (t == 5) {
+            k.power_on(millis{t});
+            k.drop_transmitted(2);  // the boot-up and a reply
+        }
+        if (t == 50) k.drop_received(1);
+    });
+    CHECK(n.ready == 1);
+    CHECK(n.timed_out == 0);
+    // a configuration read of 1001h: the keypad aborts (PK1000 31), the controller reports it
+    static constexpr message config[] = {sdo_read{object::error_register}};
+    n = closed_loop(
+        model::pk1000, 3000,
+        [](std::uint32_t t, auto& k, auto&) {
+            if (t == 5) k.power_on(millis{t});
+        },
+        config);
+    CHECK(n.aborted == 1);
+    CHECK(n.abort_code == 0x0602'0000);  // object does not exist
+    CHECK(n.ready == 1);
+    // a node change asked of the controller: both ways of answering
+    for (const auto m : {model::pk1000, model::pkp2200}) {
+        CAPTURE(m);
+        canopen::node_id node_after = canopen::default_node_id;
+        n = closed_loop(m, 4000, [&](std::uint32_t t, auto& k, auto& c) {
+            if (t == 5) k.power_on(millis{t});
+            if (t == 2000) c.change_node(canopen::node_id{0x30});
+            if (t == 3999) node_after = k.node();
+        });
+        CHECK(n.node_changed == 1);
+        CHECK(node_after == canopen::node_id{0x30});
+        CHECK(n.timed_out == 0);
     }
 }
 
