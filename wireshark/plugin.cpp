@@ -13,6 +13,7 @@
 #include "powerkey_adapter.hpp"
 
 #include <epan/dissectors/packet-socketcan.h>
+#include <epan/expert.h>
 #include <epan/packet.h>
 #include <epan/prefs.h>
 #include <epan/proto_data.h>
@@ -59,6 +60,8 @@ int hf_upload_error = -1;
 int hf_new_node = -1;
 int hf_protocol = -1;
 int hf_pgn = -1;
+// A frame of the keypad that the library refuses: an expert warning, besides powerkey.error.
+expert_field ei_refused = EI_INIT;
 
 // Wireshark keeps pointers into these for the life of the program: allocated once, never freed.
 struct registry {
@@ -190,9 +193,18 @@ void register_protoinfo() {
     static gint* ett[] = {&ett_powerkey};
     proto_register_subtree_array(ett, G_N_ELEMENTS(ett));
 
+    static ei_register_info ei[] = {{&ei_refused, {}}};
+    ei[0].eiinfo.name = "powerkey.refused";
+    ei[0].eiinfo.group = PI_MALFORMED;
+    ei[0].eiinfo.severity = PI_WARN;
+    ei[0].eiinfo.summary = "A frame of the keypad that does not decode";
+    ei[0].eiinfo.hf_info = make_hf(nullptr, nullptr, nullptr, FT_NONE, BASE_NONE, nullptr,
+                                   nullptr);  // as EXPFILL leaves it
+    expert_register_field_array(expert_register_protocol(proto_powerkey), ei, G_N_ELEMENTS(ei));
+
     module_t* module = prefs_register_protocol(proto_powerkey, nullptr);
-    for (const auto& m : powerkey_ws::model_choices()) reg->model_names.emplace_back(m.name);
     const auto choices = powerkey_ws::model_choices();
+    for (const auto& m : choices) reg->model_names.emplace_back(m.name);
     for (std::size_t i = 0; i < choices.size(); ++i)
         reg->model_enum.push_back(
             {reg->model_names[i].c_str(), reg->model_names[i].c_str(), choices[i].value});
@@ -246,10 +258,13 @@ void add_message_field(proto_tree* tree, tvbuff_t* tvb, gint length,
         case powerkey_ws::field_type::text:
             proto_tree_add_string(tree, id, tvb, 0, length, f.text.c_str());
             break;
-        case powerkey_ws::field_type::bytes:
-            proto_tree_add_bytes_with_length(tree, id, tvb, 0, length, f.bytes.data(),
-                                             static_cast<gint>(f.bytes.size()));
+        case powerkey_ws::field_type::bytes: {
+            proto_item* item = proto_tree_add_bytes_with_length(
+                tree, id, tvb, 0, length, f.bytes.data(), static_cast<gint>(f.bytes.size()));
+            proto_item_set_text(item, "%s: %s", reg->catalog[f.spec].name.c_str(),
+                                f.shown.c_str());  // upper-case hex, as the tool writes it
             break;
+        }
         case powerkey_ws::field_type::number:
             proto_tree_add_uint_format_value(tree, id, tvb, 0, length,
                                              static_cast<guint32>(f.number), "%s", f.shown.c_str());
@@ -299,16 +314,18 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     proto_item_append_text(top, ", %s", line.c_str());
     proto_tree* t = proto_item_add_subtree(top, ett_powerkey);
 
-    const auto model = powerkey_ws::model_choices();
-    for (const auto& m : model)
-        if (m.value == pref_model)
-            proto_tree_add_string(t, hf_model, tvb, 0, 0, std::string(m.name).c_str());
+    for (std::size_t i = 0; i + 1 < reg->model_enum.size(); ++i)
+        if (reg->model_enum[i].value == pref_model)
+            proto_tree_add_string(t, hf_model, tvb, 0, 0, reg->model_enum[i].name);
     proto_tree_add_string(t, hf_function, tvb, 0, 0, v.function.c_str());
     proto_tree_add_uint(t, hf_node, tvb, 0, 0, v.node);
     if (v.decoded)
         proto_tree_add_string(t, hf_kind, tvb, 0, span, v.kind.c_str());
-    else
+    else {
         proto_tree_add_string(t, hf_error, tvb, 0, span, v.error.c_str());
+        expert_add_info_format(pinfo, top, &ei_refused, "PowerKey %s frame refused: %s",
+                               v.function.c_str(), v.error.c_str());
+    }
     if (v.sdo_index) proto_tree_add_uint(t, hf_sdo_index, tvb, 0, span, *v.sdo_index);
     if (v.sdo_subindex) proto_tree_add_uint(t, hf_sdo_subindex, tvb, 0, span, *v.sdo_subindex);
     if (v.pgn) proto_tree_add_uint(t, hf_pgn, tvb, 0, 0, *v.pgn);
@@ -342,7 +359,11 @@ gboolean dissect_powerkey_heuristic(tvbuff_t* tvb, packet_info* pinfo, proto_tre
 
 void register_handoff() {
     dissector_handle_t handle = create_dissector_handle(dissect_powerkey, proto_powerkey);
-    for (guint32 id = 0; id <= CAN_SFF_MASK; ++id) dissector_add_uint("can.id", id, handle);
+    // Every 11-bit identifier that no other dissector has claimed (Wireshark 4.0 has none).
+    dissector_table_t can_id = find_dissector_table("can.id");
+    for (guint32 id = 0; id <= CAN_SFF_MASK; ++id)
+        if (can_id != nullptr && dissector_get_uint_handle(can_id, id) == nullptr)
+            dissector_add_uint("can.id", id, handle);
     heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 switch frame",
                        "powerkey_can", proto_powerkey, HEURISTIC_ENABLE);
 }

@@ -236,6 +236,11 @@ def check_other_frames(run):
             fail(at, f"powerkey shows {got}, the tool {tool}, expected {want}")
     if len(frames) != len(rows):
         fail("other frames", f"{len(frames)} frames for {len(rows)} lines")
+    # The refused frame of the keypad carries an expert warning; no other frame does.
+    refused = run.tshark("-r", run.pcap(log, "other"), "-Y", "powerkey.refused",
+                         "-T", "fields", "-e", "frame.number").split()
+    if refused != ["5"]:
+        fail("other frames", f"expert powerkey.refused on frames {refused}, expected ['5']")
 
 
 def check_node_preference(run):
