@@ -208,21 +208,28 @@ def check_other_frames(run):
     """Frames the keypad does not own stay with the generic dissectors."""
     log = os.path.join(run.args.work, "other.log")
     rows = [
-        # frame, what powerkey shows (kind or error:code) or None, protocols in the frame
-        ("000#0115", "nmt", "can:powerkey"),
-        ("000#0116", None, "can:autosar-nm"),  # NMT for node 16h
-        ("616#4008100000000000", None, "can:data"),  # an SDO of node 16h
-        ("196#0100000010", None, "can:data"),  # a PDO of node 16h
-        ("615#40", "error:wrong_length", "can:powerkey"),  # the keypad's, but too short
-        ("18EF2100#041B8000FFFFFFFF", "j1939_switch_to_canopen", "can:powerkey"),
-        ("18FEF100#0000000000000000", None, "can:data"),  # PGN FEF1h, not the keypad's
-        ("715#7F", "heartbeat", "can:powerkey"),
+        # frame, what powerkey shows (kind or error:code) or None, protocols in the frame,
+        # protocols with "Decode As CANopen"
+        ("000#0115", "nmt", "can:powerkey", "can:powerkey"),
+        ("000#0116", None, "can:autosar-nm", "can:canopen"),  # NMT for node 16h
+        ("616#4008100000000000", None, "can:data", "can:canopen"),  # an SDO of node 16h
+        ("196#0100000010", None, "can:data", "can:canopen"),  # a PDO of node 16h
+        ("615#40", "error:wrong_length", "can:powerkey", "can:powerkey"),  # too short
+        ("18EF2100#041B8000FFFFFFFF", "j1939_switch_to_canopen", "can:powerkey",
+         "can:powerkey"),
+        ("18FEF100#0000000000000000", None, "can:data", "can:data"),  # PGN FEF1h
+        ("715#7F", "heartbeat", "can:powerkey", "can:powerkey"),
     ]
     with open(log, "w") as out:
         out.write("".join(r[0] + "\n" for r in rows))
     frames = pdml_frames(run.tshark("-r", run.pcap(log, "other"), "-T", "pdml"))
     tool_json = [json.loads(l) for l in run.tool("decode", "--json", log)]
-    for (frame, want, protocols), f, j in zip(rows, frames, tool_json):
+    # The plugin comes before "Decode As CANopen" too, and leaves it the other nodes' frames.
+    decode_as = run.tshark("-r", run.pcap(log, "other"), "-d", "can.subdissector,canopen",
+                           "-T", "fields", "-e", "frame.protocols").splitlines()
+    if decode_as != [r[3] for r in rows]:
+        fail("other frames", f"with Decode As CANopen: {decode_as}")
+    for (frame, want, protocols, _), f, j in zip(rows, frames, tool_json):
         at = f"other frames: {frame}"
         if f["protocols"] != protocols:
             fail(at, f"protocols {f['protocols']}, expected {protocols}")
