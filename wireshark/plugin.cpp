@@ -22,7 +22,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 #include <new>
 #include <optional>
 #include <string>

@@ -2,13 +2,22 @@
 // (registration, preferences, tree building in plugin.cpp) sees only the plain types below, so
 // that a change of the library's API is ported here and nowhere else.
 //
-// The library calls made here: powerkey::model, to_string(model), parse_model, all_models,
-// decode(frame, node, model), classify(frame), concerns(class, node), to_string(bus_function),
-// session<>::step and session_event, kind_of, for_each_field, for_each_alternative<message>,
-// enum_name, is_index_set, is_byte_array, is_bounded, describe(msg, node, buf), to_string(errc),
-// to_string(sdo_pairing), to_string(bus_protocol), can::frame::make, can::standard_id/extended_id,
-// canopen::node_id::make, canopen::decode_nmt, canopen::decode_sdo_request/response,
-// j1939::parse_id.
+// The library calls made here, for whoever ports the adapter to a new API:
+//   models      powerkey::model, all_models, to_string(model), parse_model("pk1000"),
+//               canopen::node_id::make, canopen::default_node_id
+//   catalog     for_each_alternative<powerkey::message> and each alternative's S::fields(s, f)
+//               (the kind/fields convention); field types through enum_name, is_index_set
+//               (index_set<N>::contains), is_byte_array, is_bounded (bounded::value), integers
+//   session     session<text_capacity>(model, node), step(frame) -> session_event: cls
+//               (function, node), node, sdo (sdo_pairing::none, to_string), request (index,
+//               subindex), upload_done + session::text(), upload_error (errc{}, to_string),
+//               new_node, new_protocol (to_string(bus_protocol)); classify, concerns,
+//               bus_function::j1939/nmt, canopen::decode_nmt (target), j1939::parse_id (pgn)
+//   one frame   can::standard_id::make, can::extended_id::make, can::frame::make(id, bytes),
+//               decode(frame, node, model) -> result<message>, to_string(errc), kind_of,
+//               for_each_field, describe(msg, node, buf), to_string(bus_function),
+//               canopen::decode_sdo_request/decode_sdo_response (alternatives' address.index
+//               and address.subindex)
 #ifndef POWERKEY_WIRESHARK_ADAPTER_HPP
 #define POWERKEY_WIRESHARK_ADAPTER_HPP
 
