@@ -292,7 +292,7 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     }
     if (!record->claimed) return 0;
 
-    const auto v = powerkey_ws::view(in, *record, pref_model, reg->catalog);
+    const auto v = powerkey_ws::view(in, *record, reg->catalog);
     const gint span = static_cast<gint>(length);
 
     std::string line;
@@ -314,13 +314,13 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     proto_tree* t = proto_item_add_subtree(top, ett_powerkey);
 
     for (std::size_t i = 0; i + 1 < reg->model_enum.size(); ++i)
-        if (reg->model_enum[i].value == pref_model)
+        if (reg->model_enum[i].value == record->model)
             proto_tree_add_string(t, hf_model, tvb, 0, 0, reg->model_enum[i].name);
     proto_tree_add_string(t, hf_function, tvb, 0, 0, v.function.c_str());
     proto_tree_add_uint(t, hf_node, tvb, 0, 0, v.node);
-    if (v.decoded)
+    if (v.decoded) {
         proto_tree_add_string(t, hf_kind, tvb, 0, span, v.kind.c_str());
-    else {
+    } else {
         proto_tree_add_string(t, hf_error, tvb, 0, span, v.error.c_str());
         expert_add_info_format(pinfo, top, &ei_refused, "PowerKey %s frame refused: %s",
                                v.function.c_str(), v.error.c_str());

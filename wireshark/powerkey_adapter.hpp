@@ -189,6 +189,7 @@ struct frame_in {
 // lives in Wireshark's file-scoped memory). Strings point at the library's static names.
 struct frame_record {
     bool claimed = false;           // a frame of the keypad: the plugin dissects it
+    int model = 0;                  // the model the session followed (the preference's value)
     std::uint8_t node = 0;          // the node id the frame was decoded for
     std::string_view sdo;           // "request", "reply", "unanswered", or empty
     std::uint16_t reply_index = 0;  // the request a reply answers (sdo == "reply")
@@ -257,6 +258,7 @@ public:
         if (!f) return r;
         const auto e = session_.step(*f);
         r.claimed = detail::is_keypads(*f, e);
+        r.model = static_cast<int>(session_.model());
         r.node = e.node.value();
         if (e.sdo != powerkey::sdo_pairing::none) r.sdo = powerkey::to_string(e.sdo);
         r.reply_index = e.request.index;
@@ -378,7 +380,7 @@ void sdo_address_of(const R& r, frame_view& out) {
 }  // namespace detail
 
 // The frame as the first pass left it, decoded again (Wireshark re-dissects in any order).
-inline frame_view view(const frame_in& in, const frame_record& r, int model_value,
+inline frame_view view(const frame_in& in, const frame_record& r,
                        const std::vector<field_spec>& catalog) {
     using namespace powerkey;
     frame_view out;
@@ -391,7 +393,7 @@ inline frame_view view(const frame_in& in, const frame_record& r, int model_valu
     const auto cls = classify(*f);
     out.function = std::string(to_string(cls.function));
     out.node = cls.node != 0 ? cls.node : r.node;
-    const auto m = model_of(model_value).value_or(model::pk1000);
+    const auto m = model_of(r.model).value_or(model::pk1000);
     const auto msg = decode(*f, *node, m);
     if (!msg) {
         out.error = std::string(to_string(msg.error()));
