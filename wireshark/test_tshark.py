@@ -178,7 +178,12 @@ def compare_model(run, model, two_pass=False):
                     f"{int(one(f, 'powerkey.sdo.reply_to.subindex'), 0)}]"
             if reply not in text:
                 fail(at, f"{reply} is not in the tool's line: {text}")
-        # Every message field, under its own filter name.
+        # Every message field, under its own filter name, and no other.
+        extra = {k for k in f["fields"] if k.startswith("powerkey.") and k.count(".") == 1} - \
+            set(expect) - \
+            {f"powerkey.{name}" for name in j.get("fields", {})} - {"powerkey.refused"}
+        if extra:
+            fail(at, f"fields the message does not have: {sorted(extra)}")
         for name, want in j.get("fields", {}).items():
             values = f["fields"].get(f"powerkey.{name}", [])
             if len(values) != 1 or not field_matches(name, want, *values[0]):
