@@ -101,8 +101,9 @@ TEST_CASE("frames built from bytes") {
 // What a CAN driver hands over (an id, a format and bytes) to a frame in one call.
 constexpr std::array<std::uint8_t, 5> key_bytes{0x04, 0x00, 0x00, 0x00, 0x2A};
 static_assert(can::make_frame(0x195, key_bytes).value() == candump("195#040000002A"));
-static_assert(can::make_frame(0x18EF2100, std::array<std::uint8_t, 8>{0x04, 0x1B, 0x80, 0x00, 0xFF,
-                                                                      0xFF, 0xFF, 0xFF},
+static_assert(can::make_frame(0x18EF2100,
+                              std::array<std::uint8_t, 8>{0x04, 0x1B, 0x80, 0x00, 0xFF, 0xFF, 0xFF,
+                                                          0xFF},
                               can::id_format::extended)
                   .value() == candump("18EF2100#041B8000FFFFFFFF"));
 static_assert(can::make_frame(0x080, {}).value() == candump("080#"));

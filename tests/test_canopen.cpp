@@ -205,13 +205,13 @@ constexpr bool response_both_ways(const sdo_response_row& r) {
            decode_sdo_response(frame_of(r.frame), keypad) == result<sdo_response>(r.expected);
 }
 static_assert(first_failing(sdo_request_rows, request_both_ways) == std::size(sdo_request_rows));
-static_assert(first_failing(sdo_response_rows, response_both_ways) ==
-              std::size(sdo_response_rows));
+static_assert(first_failing(sdo_response_rows, response_both_ways) == std::size(sdo_response_rows));
 // A client abort as a message of its own keeps its direction: 600h + node.
 static_assert(encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
               can::candump("615#8000200100000405"));
 // And the keypad's abort: 580h + node.
-static_assert(encode(keypad, sdo_abort_response{{{0x2001, 0}, sdo_abort_code::object_does_not_exist}}) ==
+static_assert(encode(keypad,
+                     sdo_abort_response{{{0x2001, 0}, sdo_abort_code::object_does_not_exist}}) ==
               can::candump("595#8001200000000206"));
 static_assert(expedited_data::u16(500).value() == 500);
 static_assert(expedited_data::u32(0x000B0191).value() == 0x000B0191);

@@ -32,13 +32,11 @@ constexpr model_row model_rows[] = {
     // PK1000 sections 11-13: 10 keys, 28 LEDs per colour (red and green), red in bytes 0..3,
     // green in 4..7; 400h/500h PDOs (14, 15); J1939 (49); the reply from the new id (23). Its
     // LED objects hold one plane each (2001h sub 1 red, sub 2 green, section 17).
-    {"PK1000 11-15, 23, 49", "", model::pk1000, 10, 28, 2, 32, dictionary::pk1000, true, true,
-     true, 1},
+    {"PK1000 11-15, 23, 49", "", model::pk1000, 10, 28, 2, 32, dictionary::pk1000, true, true, true,
+     1},
     // PKP sections 10-12: one RGB LED per key, the planes one after the other (stride = keys).
-    {"PKP-2200 10-12", "", model::pkp2200, 4, 4, 3, 4, dictionary::pkp_li, false, false, false,
-     3},
-    {"PKP-2400 10-12", "", model::pkp2400, 8, 8, 3, 8, dictionary::pkp_li, false, false, false,
-     3},
+    {"PKP-2200 10-12", "", model::pkp2200, 4, 4, 3, 4, dictionary::pkp_li, false, false, false, 3},
+    {"PKP-2400 10-12", "", model::pkp2400, 8, 8, 3, 8, dictionary::pkp_li, false, false, false, 3},
     // docs/pkp.md: 12 keys, 36 bits; a 4-byte LED object holds two planes.
     {"PKP-2600 docs/pkp.md", "", model::pkp2600, 12, 12, 3, 12, dictionary::pkp_li, false, false,
      false, 2},
@@ -51,8 +49,7 @@ constexpr bool model_holds(const model_row& r) {
            i->stride == r.stride && i->dictionary == r.dict &&
            i->brightness_pdo == r.pdos_brightness_backlight &&
            i->backlight_pdo == r.pdos_brightness_backlight && i->j1939 == r.j1939 &&
-           i->replies_from_new_id == r.replies_from_new_id &&
-           i->object_planes() == r.object_planes;
+           i->replies_from_new_id == r.replies_from_new_id && i->object_planes() == r.object_planes;
 }
 static_assert(first_failing(model_rows, model_holds) == std::size(model_rows));
 // The four keypads of the two manuals are rows of the table (others follow as rows of their own).
@@ -157,12 +154,10 @@ constexpr bool ranges_hold(dictionary d) {
             !(r.min == 1 && r.max == 9 && !r.in_range(0) && !r.in_range(10) &&
               r.in_range(r.initial)))
             return false;
-        if (k == value_kind::node &&
-            !(r.min == 1 && r.max == 0x7F && !r.in_range(0) && !r.in_range(0x80) &&
-              r.initial == 0x15))
+        if (k == value_kind::node && !(r.min == 1 && r.max == 0x7F && !r.in_range(0) &&
+                                       !r.in_range(0x80) && r.initial == 0x15))
             return false;
-        if (k == value_kind::flag && !(r.min == 0 && r.max == 1 && !r.in_range(2)))
-            return false;
+        if (k == value_kind::flag && !(r.min == 0 && r.max == 1 && !r.in_range(2))) return false;
     }
     return true;
 }

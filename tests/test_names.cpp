@@ -111,9 +111,9 @@ TEST_CASE("error and function names") {
         canopen::function::rpdo1,     canopen::function::rpdo2,  canopen::function::rpdo3,
         canopen::function::rpdo4,     canopen::function::sdo_tx, canopen::function::sdo_rx,
         canopen::function::heartbeat, canopen::function::j1939,  canopen::function::other};
-    const std::string_view expected[] = {"nmt",    "sync",   "tpdo1",     "rpdo1", "rpdo2",
-                                         "rpdo3",  "rpdo4",  "sdo_tx",    "sdo_rx", "heartbeat",
-                                         "j1939", "other"};
+    const std::string_view expected[] = {"nmt",    "sync",      "tpdo1", "rpdo1",
+                                         "rpdo2",  "rpdo3",     "rpdo4", "sdo_tx",
+                                         "sdo_rx", "heartbeat", "j1939", "other"};
     for (std::size_t i = 0; i < std::size(functions); ++i)
         CHECK(to_string(functions[i]) == expected[i]);
 }

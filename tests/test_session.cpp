@@ -235,7 +235,6 @@ TEST_CASE("a string of up to four bytes in one reply ends the upload too") {
     CHECK(reply.upload_error == errc{});
     CHECK(s.text() == "V_03");
     REQUIRE(reply.decoded.has_value());
-    CHECK(*reply.decoded ==
-          message{sdo_read_reply{object::hardware_version,
-                                 string_value(4, {0x56, 0x5F, 0x30, 0x33})}});
+    CHECK(*reply.decoded == message{sdo_read_reply{object::hardware_version,
+                                                   string_value(4, {0x56, 0x5F, 0x30, 0x33})}});
 }
