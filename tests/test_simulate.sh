@@ -45,6 +45,12 @@ printf '(5.000000) can0 715#00\n(5.001000) can0 595#6000650100000000\n(5.001000)
   > "$tmp/want"
 diff "$tmp/want" "$tmp/out" || fail "node change output differs"
 
+# candump's screen form (with -t a timestamps) reads like the log form.
+echo '(1700000000.000000)  can0  615   [8]  40 10 20 00 00 00 00 00' |
+  "$sim" --model pk1000 > "$tmp/out" || fail "screen form: exit status $?"
+printf '(1700000000.000000) can0 715#00\n(1700000000.001000) can0 595#4F10200004000000\n' > "$tmp/want"
+diff "$tmp/want" "$tmp/out" || fail "screen form output differs"
+
 # A bad line: reported with file and line on stderr, exit status 1, the rest still simulated.
 printf '615#4010200000000000\nnot a frame\n' > "$tmp/bad.log"
 "$sim" --model pk1000 "$tmp/bad.log" > "$tmp/out" 2> "$tmp/err"
