@@ -35,11 +35,17 @@ using canopen::nmt_state;
 // --- row types and their checks -----------------------------------------------------------------
 
 // The models a row applies to: bit m for model m (models.hpp order); `all` = the four keypads of
-// the manuals.
+// the first manuals. The SI family (tests/si_rows.hpp, tests/si_reference_rows.hpp): `si` all
+// eight, `si_s16` the per-colour sizes of stride 16, `si_s8` those of stride 8.
 inline constexpr std::uint16_t m1000 = 1, m2200 = 2, m2400 = 4, m2600 = 8, pkp = 14, all = 15;
+inline constexpr std::uint16_t m2600si = 1u << 4, m3500mt = 1u << 5, m3500si = 1u << 6,
+                               m2500si = 1u << 7, m1500li = 1u << 8, m2200si = 1u << 9,
+                               m2300si = 1u << 10, m2400si = 1u << 11, si = 0xFF0,
+                               si_s16 = m3500si | m2500si,
+                               si_s8 = m1500li | m2200si | m2300si | m2400si;
 
 constexpr bool applies(std::uint16_t models, model m) noexcept {
-    return ((models >> static_cast<unsigned>(m)) & 1u) != 0;
+    return ((static_cast<unsigned>(models) >> static_cast<unsigned>(m)) & 1u) != 0;
 }
 
 struct row {

@@ -84,7 +84,7 @@ static_assert(first_failing(name_rows, parses) == std::size(name_rows));
 constexpr bool names_read_back() {
     for (const model m : enum_values<model>()) {
         if (parse_model(to_string(m)) != result<model>(m)) return false;
-        if (from_string<model>(to_string(m)) != result<model>(m)) return false;
+        if (from_string<model>(to_string(m)) != std::optional<model>(m)) return false;
     }
     for (const auto& n : model_name_table) {
         if (parse_model(n.manual) != result<model>(n.id)) return false;

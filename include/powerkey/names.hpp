@@ -8,7 +8,7 @@
 //   enum_values<backlight_colour>()               every value, in table order, once
 //
 // A value with no name prints as "" (the one spelling for "no such name"), and from_string
-// returns errc::value_out_of_range for text that names nothing. The tables are only odr-used by
+// returns nullopt for text that names nothing. The tables are only odr-used by
 // code that asks for a name, so firmware that never prints keeps none of them (--gc-sections).
 #ifndef POWERKEY_NAMES_HPP
 #define POWERKEY_NAMES_HPP
@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 
@@ -36,12 +37,13 @@ template <named_enum E>
     return {};
 }
 
-// The value a name or alias stands for; errc::value_out_of_range for any other text.
+// The value a name or alias stands for; nullopt for any other text. (An optional rather than a
+// result: errc itself is a named enum, and result<errc> would be ambiguous.)
 template <named_enum E>
-[[nodiscard]] constexpr result<E> from_string(std::string_view name) noexcept {
+[[nodiscard]] constexpr std::optional<E> from_string(std::string_view name) noexcept {
     for (const auto& n : enum_names<E>::entries)
         if (n.name == name) return n.value;
-    return errc::value_out_of_range;
+    return std::nullopt;
 }
 
 namespace detail {
