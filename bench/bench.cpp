@@ -3,14 +3,16 @@
 //   ns/call  CPU time of one library call (one frame, or one whole transfer for the reader)
 //   x_floor  that time divided by the floor's, the cost of merely reading a frame
 // Usage: powerkey_bench [Google Benchmark flags]; --benchmark_min_time=0.01 for a quick run.
+// The operations first: the manual rows they include call a `sync()` of their own, which
+// <unistd.h>'s ::sync() would make ambiguous if it were declared before them.
+#include "all_ops.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
 
 #include <string>
 #include <vector>
-
-#include "all_ops.hpp"
 
 namespace {
 
