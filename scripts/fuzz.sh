@@ -5,7 +5,7 @@
 # $BUILD_DIR/artifacts/. Ends with a table of executions per target; exits non-zero if any target
 # failed.
 #   scripts/fuzz.sh                      every target
-#   scripts/fuzz.sh core_decode pkp_decode
+#   scripts/fuzz.sh decode encode
 #   SECONDS_PER_TARGET=3600 JOBS=2 scripts/fuzz.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
