@@ -431,6 +431,23 @@ TEST_CASE("controller + virtual keypad: a keypad that booted before the host is 
     }
 }
 
+TEST_CASE("controller + virtual keypad: any node adopts a keypad at another node id") {
+    for (const model m : {model::pk1000, model::pkp2200, model::pkp2600si}) {
+        INFO("model " << std::string(to_string(m)));
+        controller_config cfg;
+        cfg.any_node = true;
+        bench b(m, cfg, node_id::make(0x30).value());
+        b.keypad.power_on(b.at());
+        b.run(200);
+        CHECK(b.ctl.node() == node_id::make(0x30).value());
+        CHECK(b.ctl.state() == controller_state::running);
+        CHECK(b.keypad.state() == run_state::operational);
+        b.ctl.set_led(some_led, colour::red);
+        b.run(10);
+        CHECK(b.keypad.led_on().red.contains(some_led));
+    }
+}
+
 TEST_CASE("controller + virtual keypad: active on startup") {
     for (const model m : {model::pk1000, model::pkp2400}) {
         controller_config cfg;
