@@ -1,5 +1,7 @@
 // Writes the sample bus logs of examples/logs/ from the manual rows of the test suite
-// (tests/pk1000_rows.hpp, tests/pkp_rows.hpp), one log per model, in the manuals' order:
+// (tests/pk1000_rows.hpp, tests/pkp_rows.hpp; for the SI family tests/si_rows.hpp, generated from
+// tests/data/si_rows.txt, and tests/si_reference_rows.hpp for the sizes without a complete
+// manual), one log per model, in the manuals' order:
 //   sample_logs pk1000 > examples/logs/pk1000.log
 // Each frame is a candump -l line with a made-up timestamp, 10 ms apart. The manuals show some
 // frames for another node id (after a node-id change); where the next row is for another node
@@ -7,6 +9,8 @@
 // change, marked "not in the manual", so that the log reads as one session.
 #include "../tests/pk1000_rows.hpp"
 #include "../tests/pkp_rows.hpp"
+#include "../tests/si_reference_rows.hpp"
+#include "../tests/si_rows.hpp"
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/keypad/codec.hpp>
@@ -68,16 +72,30 @@ struct writer {
 
 int main(int argc, char** argv) {
     if (argc != 2 || !parse_model(argv[1])) {
-        std::fputs("usage: sample_logs pk1000|pkp2200|pkp2400|pkp2600\n", stderr);
+        std::fputs("usage: sample_logs MODEL (pk1000, pkp2600, pkp2600si, pkp3500mt, ...)\n",
+                   stderr);
         return 2;
     }
     const model m = *parse_model(argv[1]);
     writer w{m, session<256>(m, canopen::default_node_id), 0, {}};
-    std::printf("# powerkey sample log: %s, node 15h, every example frame of the manual in order\n",
-                argv[1]);
+    const bool reference = info(m)->dictionary == dictionary::si_per_colour;
+    std::printf(
+        "# powerkey sample log: %s, node 15h, %s in order\n", argv[1],
+        reference ? "the frames of its reference rows" : "every example frame of the manual");
     if (m == model::pk1000) {
         std::printf("# from PK1000_CANopen_UM_rev1.13 (tests/pk1000_rows.hpp)\n");
         for (const auto& r : pk1000_rows::rows) w.row(r.section, r.node, r.frame);
+    } else if (m == model::pkp2600si || m == model::pkp3500mt) {
+        std::printf("# from the %s CANopen UM (tests/data/si_rows.txt, tests/si_rows.hpp)\n",
+                    m == model::pkp2600si ? "PKP-2600-SI rev 1.5" : "PKP-3500-MT rev 1.3");
+        for (const auto& r : si_rows::rows)
+            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
+    } else if (reference) {
+        std::printf(
+            "# from docs/si-family.md, \"The other sizes\": the manual pages available and the\n"
+            "# inferred layouts, marked so (tests/si_reference_rows.hpp)\n");
+        for (const auto& r : si_reference_rows::rows)
+            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
     } else {
         std::printf(
             "# from PKP-2200-2400-LI_CANopen_UM_rev1.1 and docs/pkp.md (tests/pkp_rows.hpp)\n");

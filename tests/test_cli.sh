@@ -37,6 +37,16 @@ for m in pk1000 pkp2200 pkp2400 pkp2600; do
   frames_of "$log" | diff - "$tmp/frames2" > /dev/null || fail "$m: round trip from fields differs"
 done
 
+# The SI family's logs (docs/si-family.md) are current with their rows. The tool's decode of them
+# is not in the loop above yet: its restructuring for the SI models is under way.
+if [ -n "$gen" ]; then
+  for m in pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si; do
+    [ -s "$logs/$m.log" ] || { fail "$m: no sample log $logs/$m.log"; continue; }
+    "$gen" $m > "$tmp/gen.log" && cmp -s "$tmp/gen.log" "$logs/$m.log" ||
+      fail "$m: $logs/$m.log is stale; regenerate it with powerkey_sample_logs $m"
+  done
+fi
+
 # The three line forms read alike.
 printf '%s\n' '(1700000000.000000) can0 215#0000010000000008' > "$tmp/a"
 printf '%s\n' '215#0000010000000008' > "$tmp/b"
