@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -78,10 +79,23 @@ std::string text_of(const can::frame& f) {
     return doctest::StringMaker<can::frame>::convert(f).c_str();
 }
 
-// The section a row belongs to: "17a" of "17a", "19f E-PK-3 corrected", "PKP 13a LED 8 red".
+// The section a row belongs to: the first word that starts with a digit, and a one-letter word
+// after it: "17a" of "17a" and "19f E-PK-3 corrected", "13a" of "PKP 13a LED 8 red", "17 a" of
+// "PKP2600SI 17 a"; "ref" for the reference rows of the PKP-2600.
 std::string_view section_of(std::string_view s) {
-    if (s.substr(0, 4) == "PKP ") s.remove_prefix(4);
-    return s.substr(0, s.find(' '));
+    if (s.substr(0, 4) == "ref ") return "ref";
+    std::size_t i = 0;
+    while (i < s.size()) {
+        const std::size_t end = std::min(s.find(' ', i), s.size());
+        if (s[i] >= '0' && s[i] <= '9') {
+            if (end + 2 <= s.size() && s[end + 1] >= 'a' && s[end + 1] <= 'z' &&
+                (end + 2 == s.size() || s[end + 2] == ' '))
+                return s.substr(i, end + 2 - i);
+            return s.substr(i, end - i);
+        }
+        i = end + 1;
+    }
+    return s;
 }
 
 // Why a printed reply is not what a keypad at its defaults sends.
@@ -94,7 +108,7 @@ enum class because : std::uint8_t {
 // A printed row the keypad does not reproduce, and why. `frame` is the printed reply, or
 // "+" and a frame the keypad sends where the manual prints no reply.
 struct expected_difference {
-    std::uint8_t models;
+    std::uint16_t models;
     std::string_view section;  // the row's full section text
     std::string_view frame;
     because why;
@@ -105,8 +119,10 @@ using decoder_rows::m1000;
 using decoder_rows::m2200;
 using decoder_rows::m2400;
 using decoder_rows::m2600;
-constexpr std::uint8_t pkp_all = decoder_rows::pkp;
-constexpr std::uint8_t not2200 = m2400 | m2600;
+constexpr std::uint16_t pkp_all = decoder_rows::pkp;
+constexpr std::uint16_t not2200 = m2400 | m2600;
+constexpr std::uint16_t si2600 = 1u << static_cast<unsigned>(model::pkp2600si);
+constexpr std::uint16_t mt3500 = 1u << static_cast<unsigned>(model::pkp3500mt);
 
 constexpr expected_difference differences[] = {
     // --- PK1000 ---
@@ -177,6 +193,51 @@ constexpr expected_difference differences[] = {
      "each read shows another LED state (all red, red 4, ...) that no request sets"},
     {pkp_all, "16b", "*", because::presumed,
      "each read shows another LED state (all amber, ...) that no request sets"},
+    // --- PKP-2600-SI (PKP2600SI n) and PKP-3500-MT (PKP3500-MT n), tests/si_rows.hpp ---
+    {si2600, "PKP2600SI 6", "+715#00", because::presumed,
+     "reset node: the keypad boots again and sends its boot-up (8); not printed in 6"},
+    {mt3500, "PKP3500-MT 6", "+715#00", because::presumed,
+     "reset node: the keypad boots again and sends its boot-up (8); not printed in 6"},
+    {si2600, "PKP2600SI 11", "195#000000002A", because::presumed,
+     "no key: printed after a release; at power-on no key has changed"},
+    {mt3500, "PKP3500-MT 11", "195#000000002A", because::presumed,
+     "no key: printed after a release; at power-on no key has changed"},
+    {si2600, "17 b", "*", because::presumed, "reads LED states no request sets"},
+    {si2600, "18 b", "*", because::presumed, "reads LED states no request sets"},
+    {mt3500, "20 b", "*", because::presumed, "reads LED states no request sets"},
+    {mt3500, "20 d", "*", because::presumed, "reads encoder ring LEDs no request sets"},
+    {mt3500, "21 b", "*", because::presumed, "reads LED states no request sets"},
+    {mt3500, "21 d", "*", because::presumed, "reads encoder ring LEDs no request sets"},
+    {mt3500, "19 b", "*", because::presumed,
+     "encoder direction counters: the virtual keypad has no encoders"},
+    {mt3500, "19 d", "*", because::presumed,
+     "encoder direction counters: the virtual keypad has no encoders"},
+    {si2600, "PKP2600SI 19 c E-SI-4", "595#4F03200304000000", because::erratum,
+     "E-SI-4: 05h (cyan) was written, the manual reads 04h"},
+    {si2600, "PKP2600SI 22 E-SI-14", "595#4F12200000000000", because::erratum,
+     "E-SI-14: reads 00h right after writing 01h"},
+    {mt3500, "PKP3500-MT 25 E-SI-14", "595#4F06200008000000", because::erratum,
+     "E-SI-14: reads 08h right after writing 64h"},
+    {mt3500, "PKP3500-MT 24 E-SI-10", "595#4F05200400000000", because::erratum,
+     "E-SI-10: the reply names sub-index 04h"},
+    {mt3500, "24", "*", because::presumed,
+     "analog inputs: the virtual keypad has none, they read 0"},
+    {si2600, "PKP2600SI 27", "595#4B17100064000000", because::presumed,
+     "reads 100 ms: heartbeat_time is 0 at delivery"},
+    {mt3500, "PKP3500-MT 33", "595#4B17100064000000", because::presumed,
+     "reads 100 ms: heartbeat_time is 0 at delivery"},
+    {si2600, "PKP2600SI 34 E-SI-6", "595#4311100100000000", because::erratum,
+     "E-SI-6: a download is acknowledged with 60h"},
+    {mt3500, "PKP3500-MT 40 E-SI-6", "595#4311100100000000", because::erratum,
+     "E-SI-6: a download is acknowledged with 60h"},
+    {si2600, "PKP2600SI 47", "+595#60FF200100000000", because::presumed,
+     "the acknowledgement of the J1939 switch, sent before the keypad switches; not printed"},
+    {si2600, "PKP2600SI 47", "+715#00", because::presumed,
+     "back in CANopen the keypad boots (inferred); not printed"},
+    {mt3500, "PKP3500-MT 58", "+595#60FF200100000000", because::presumed,
+     "the acknowledgement of the J1939 switch, sent before the keypad switches; not printed"},
+    {mt3500, "PKP3500-MT 58", "+715#00", because::presumed,
+     "back in CANopen the keypad boots (inferred); not printed"},
     {pkp_all, "PKP 17 100 ms", "595#4B17100064000000", because::presumed,
      "reads 100 ms: heartbeat_time is off at delivery (PKP 3)"},
 };
@@ -360,11 +421,24 @@ std::string ask(virtual_keypad<N>& k, std::string_view request, millis t = {10})
 
 // --- the manuals' transcripts -------------------------------------------------------------------
 
+#if __has_include("si_rows.hpp")
+#include "si_rows.hpp"
+#define POWERKEY_TEST_SI_ROWS 1
+#endif
+
 TEST_CASE("It answers like the manuals") {
     SUBCASE("PK1000") { report(model::pk1000, run_transcript(pk1000_rows::rows, model::pk1000)); }
     SUBCASE("PKP-2200") { report(model::pkp2200, run_transcript(pkp_rows::rows, model::pkp2200)); }
     SUBCASE("PKP-2400") { report(model::pkp2400, run_transcript(pkp_rows::rows, model::pkp2400)); }
     SUBCASE("PKP-2600") { report(model::pkp2600, run_transcript(pkp_rows::rows, model::pkp2600)); }
+#ifdef POWERKEY_TEST_SI_ROWS
+    SUBCASE("PKP-2600-SI") {
+        report(model::pkp2600si, run_transcript(si_rows::rows, model::pkp2600si));
+    }
+    SUBCASE("PKP-3500-MT") {
+        report(model::pkp3500mt, run_transcript(si_rows::rows, model::pkp3500mt));
+    }
+#endif
 }
 
 // --- one test per behaviour
