@@ -58,6 +58,16 @@ printf '615#4010200000000000\nnot a frame\n' > "$tmp/bad.log"
 grep -q "bad.log:2: error" "$tmp/err" || fail "bad line: no file:line error"
 grep -q "595#4F10200004000000" "$tmp/out" || fail "bad line: the good line was not answered"
 
+# Every shipped sample log (both directions of the manual's frames, per model): read without an
+# error, the boot-up first, every line a candump log line.
+for log in "$src"/examples/logs/*.log; do
+  m=$(basename "$log" .log)
+  case $m in pk1000 | pkp*) ;; *) continue ;; esac
+  "$sim" --model "$m" "$log" > "$tmp/out" 2> "$tmp/err" || fail "$m: exit status $? $(head -3 "$tmp/err")"
+  head -1 "$tmp/out" | grep -Eq '^\([0-9.]+\) can0 715#00$' || fail "$m: no boot-up first"
+  grep -Evq '^\([0-9.]+\) can0 [0-9A-F]{3}#([0-9A-F]{2}){0,8}$' "$tmp/out" && fail "$m: a line not in candump log form"
+done
+
 # Usage errors: exit status 2.
 "$sim" > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"
 "$sim" --model pk9999 > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown model: exit status not 2"
