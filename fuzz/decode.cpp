@@ -23,8 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // The accessors read the decoded message without touching anything else.
         const auto msg = *decode(f, node, m);
         (void)pressed_keys(msg);
-        (void)led_on_map(msg);
-        (void)led_blink_map(msg);
+        (void)led_on_map(msg, m);
+        (void)led_blink_map(msg, m);
         (void)brightness(msg);
         (void)backlight_of(msg);
         (void)node_id_change(msg);
