@@ -414,8 +414,8 @@ inline constexpr object_row pk1000_rows[] = {
     {obj::protocol_j1939, {0x20FF, 1}, 2, rw, 0, 1, none_else, 0},
     {obj::protocol_rs485, {0x20FF, 2}, 2, rw, 0, 1, none_else, 0},
     {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0},
-    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},  // E-PK-8
+    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},  // node 01h
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},                // E-PK-8
     {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
     {obj::error_register, {0x1001, 0}, 1, ro},
     {obj::device_name, {0x1008, 0}, 0, ro},
