@@ -262,33 +262,30 @@ static_assert(model_from_report("PKP3500SI") == model::pkp3500si);
 static_assert(model_from_report("PKP1500LI") == model::pkp1500li);
 static_assert(!model_from_report("PKP2500SI"));  // no manual page shows it
 
-// The model rows against docs/si-family.md ("The models").
+// The model rows against tests/data/si_models.txt (si_rows::model_facts) and what
+// docs/si-family.md ("The models") adds: which sizes have the 400h brightness PDO, the rings,
+// the encoders.
 constexpr bool model_rows_hold() {
-    struct fact {
-        model m;
-        std::uint8_t keys, stride;
-        dictionary d;
-        bool brightness, rings, colour, encoders;
-    };
-    constexpr fact facts[] = {
-        {model::pkp2600si, 12, 12, dictionary::si_packed, true, false, true, false},
-        {model::pkp3500mt, 15, 16, dictionary::si_mt, false, true, true, true},
-        {model::pkp3500si, 15, 16, dictionary::si_per_colour, true, false, false, false},
-        {model::pkp2500si, 10, 16, dictionary::si_per_colour, true, false, false, false},
-        {model::pkp1500li, 5, 8, dictionary::si_per_colour, false, false, false, false},
-        {model::pkp2200si, 4, 8, dictionary::si_per_colour, false, false, false, false},
-        {model::pkp2300si, 6, 8, dictionary::si_per_colour, false, false, false, false},
-        {model::pkp2400si, 8, 8, dictionary::si_per_colour, false, false, false, false},
-    };
-    for (const auto& f : facts) {
-        const auto i = info(f.m);
-        if (!i || i->keys != f.keys || i->stride != f.stride || i->dictionary != f.d ||
-            i->brightness_pdo != f.brightness || i->encoder_leds_pdo != f.rings ||
-            !i->backlight_pdo || i->backlight_colour != f.colour || i->encoders != f.encoders ||
-            !i->j1939 || !i->replies_from_new_id || i->planes != 3)
+    for (const auto& f : si_rows::model_facts) {
+        const auto i = info(f.id);
+        if (!i || i->keys != f.keys || i->leds != f.keys || i->stride != f.stride ||
+            i->dictionary != f.scheme || !i->backlight_pdo ||
+            i->backlight_colour != f.colour_byte || !i->j1939 || !i->replies_from_new_id ||
+            i->planes != 3)
             return false;
+        const bool mt = f.id == model::pkp3500mt;
+        const bool brightness =
+            f.id == model::pkp2600si || f.id == model::pkp3500si || f.id == model::pkp2500si;
+        if (i->encoders != mt || i->encoder_leds_pdo != mt || i->brightness_pdo != brightness)
+            return false;
+        // Every LED of every key, but the encoder pushes (keys 1 and 11) of the PKP-3500-MT.
+        const std::uint32_t all = (std::uint32_t{1} << f.keys) - 1;
+        if (i->led_mask != (mt ? all & ~0x401u : all)) return false;
+        if (!f.reported.empty() && model_from_report(f.reported) != f.id) return false;
+        for (const auto& n : model_name_table)
+            if (n.id == f.id && n.reported != f.reported) return false;
     }
-    return info(model::pkp3500mt)->led_mask == 0x7BFE;
+    return std::size(si_rows::model_facts) == 8;
 }
 static_assert(model_rows_hold());
 }  // namespace
@@ -312,6 +309,10 @@ TEST_CASE("si: errata decisions (docs/errata.md, ## SI family)") {
     check_rows(si_rows::errata_rows, erratum_holds);
     check_rows(more_errata, erratum_holds);
     CHECK(every_erratum_pinned());
+}
+
+TEST_CASE("si: the model rows are the sizes of tests/data/si_models.txt") {
+    CHECK(model_rows_hold());
 }
 
 TEST_CASE("si: accessors over the SI frames") {
