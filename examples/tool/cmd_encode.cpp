@@ -270,6 +270,37 @@ int run_encode(const options& o) {
     }
     const auto f = encode(o.node, o.keypad, msg);
     if (!f) {
+        // The type took every value, the model did not (a key above a PKP-2200's four): find the
+        // field by leaving out one assignment at a time, then the values this model takes.
+        const std::string kind(kind_of(msg));
+        auto encodes = [&](std::size_t skip, const std::string* replacement) {
+            auto g = [&](std::string_view field, auto& value) -> std::string {
+                for (std::size_t i = assignments.size(); i-- > 0;) {
+                    if (assignments[i].first != field) continue;
+                    if (i == skip && replacement == nullptr) return "";
+                    return set_from_text(value, i == skip ? *replacement : assignments[i].second,
+                                         field);
+                }
+                return "";
+            };
+            message m;
+            std::string e;
+            return build_any(o.keypad, kind, o, g, m, e) && e.empty() &&
+                   encode(o.node, o.keypad, m).has_value();
+        };
+        for (std::size_t i = 0; i < assignments.size(); ++i) {
+            if (!encodes(i, nullptr)) continue;
+            unsigned most = 0;
+            for (unsigned n = 1; n <= 64; ++n) {
+                const std::string t = std::to_string(n);
+                if (encodes(i, &t)) most = n;
+            }
+            report("encode", kind + ": " + assignments[i].first + ": '" +
+                                 escape(assignments[i].second, 32) + "' is more than a " +
+                                 std::string(to_string(o.keypad)) + " takes" +
+                                 (most > 0 ? " (1.." + std::to_string(most) + ")" : ""));
+            return 1;
+        }
         report("encode", "cannot encode " + std::string(kind_of(msg)) + ": " +
                              std::string(to_string(f.error())) + " (fields: " + field_names(msg) +
                              ")");

@@ -227,7 +227,7 @@ std::string range_of(std::string_view name) {
     std::string s;
     auto put = [&](std::uint64_t v) {
         if (hex_field(name, ""))
-            append_hex_h(s, v, hex_digits(v));
+            append_hex_h(s, v, hex_digits(max_of<T>()));
         else
             append_decimal(s, v);
     };
