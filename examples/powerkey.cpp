@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     app.add_flag("--broadcast", o.broadcast);
     app.add_flag("--parse-only", o.parse_only);
     app.add_flag("--quiet", o.quiet);
+    app.add_flag("--nlohmann-writer", o.nlohmann_writer);
     auto* decode = app.add_subcommand("decode");
     decode->add_option("FILE", o.args);
     auto* encode = app.add_subcommand("encode");
@@ -123,6 +124,8 @@ int main(int argc, char** argv) {
             "--show draws pictures for people and --json writes lines for programs: use one");
     if (o.show && !*decode) return usage_error("--show is an option of decode");
     if (o.broadcast && !*encode) return usage_error("--broadcast is an option of encode");
+    if (o.nlohmann_writer && !(*decode && o.json))
+        return usage_error("--nlohmann-writer is an option of decode --json");
     if ((o.parse_only || o.quiet) && !*decode)
         return usage_error("--parse-only and --quiet are options of decode");
     if (*decode) return tool::run_decode(o);

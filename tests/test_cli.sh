@@ -276,5 +276,16 @@ powerkey: summary: 1 frame: 0 decoded, 0 of other nodes or no keypad, 1 refused 
 EOF
 diff "$tmp/want" "$tmp/err" > /dev/null || fail "repeated errors: $(cat "$tmp/err")"
 
+# docs/cli.md lists every default as encode fills it: the blocks are powerkey list's output.
+for m in pk1000 pkp2400; do
+  awk -v m="<!-- list $m -->" '$0 == m { on = 1; next } on && /^```$/ { if (started) exit; started = 1; next } on && started' \
+    "$src/docs/cli.md" > "$tmp/doc_list"
+  [ -s "$tmp/doc_list" ] || fail "docs/cli.md has no list block for $m"
+  "$pk" list --model $m | diff - "$tmp/doc_list" > /dev/null || fail "docs/cli.md: the defaults of $m differ from powerkey list"
+done
+for m in pkp2200 pkp2600; do
+  cmp -s <("$pk" list --model $m) <("$pk" list --model pkp2400) || fail "list --model $m differs from pkp2400 (docs/cli.md says they match)"
+done
+
 [ $failed -eq 0 ] && echo "cli: all checks passed"
 exit $failed

@@ -4,6 +4,7 @@
 #include "log_formats.hpp"
 #include "show.hpp"
 
+#include <nlohmann/json.hpp>
 #include <powerkey/decoder.hpp>
 #include <powerkey/session.hpp>
 
@@ -22,7 +23,8 @@ namespace tool {
 namespace {
 using namespace powerkey;
 
-// --- the frame's own part of a line ---------------------------------------------------------------
+// --- the frame's own part of a line
+// ---------------------------------------------------------------
 
 void append_frame(std::string& out, const can::frame& f) {
     append_hex(out, f.raw_id(), f.is_extended() ? 8 : 3);
@@ -125,8 +127,11 @@ public:
         if (o_.quiet) return;
         std::string& out = out_.buffer();
         const bool picture = o_.show && e.decoded && picture_.update(*e.decoded);
-        if (o_.show && tty_ && shown_) out += "\x1b[1A\r\x1b[2K";  // the picture stays at the bottom
-        if (o_.json)
+        if (o_.show && tty_ && shown_)
+            out += "\x1b[1A\r\x1b[2K";  // the picture stays at the bottom
+        if (o_.json && o_.nlohmann_writer)
+            nlohmann_line(out, r, e, pkp_j1939);
+        else if (o_.json)
             json_line(out, r, e, pkp_j1939);
         else
             text_line(out, r, e, foreign, pkp_j1939);
@@ -257,6 +262,62 @@ private:
         w.close();
     }
 
+    // The same line through nlohmann::ordered_json, for the writer comparison of
+    // docs/performance.md (decode --json --nlohmann-writer; scripts/bench_cli.sh).
+    template <class T>
+    static nlohmann::ordered_json json_value(const T& v) {
+        if constexpr (std::is_same_v<T, bool>) {
+            return v;
+        } else if constexpr (std::is_enum_v<T>) {
+            if (has_unique_name(v)) return std::string(enum_name(v));
+            return static_cast<std::uint64_t>(v);
+        } else if constexpr (is_index_set<T>::value) {
+            auto a = nlohmann::ordered_json::array();
+            for (unsigned i = 1; i <= T::max; ++i)
+                if (v.contains(i)) a.push_back(i);
+            return a;
+        } else if constexpr (is_byte_array<T>::value) {
+            std::string hex;
+            for (auto b : v) append_hex(hex, b, 2);
+            return hex;
+        } else if constexpr (is_bounded<T>::value) {
+            return static_cast<std::uint64_t>(v.value());
+        } else {
+            return static_cast<std::uint64_t>(v);
+        }
+    }
+
+    void nlohmann_line(std::string& out, const logs::record& r, const session_event& e,
+                       bool pkp_j1939) {
+        nlohmann::ordered_json j;
+        if (!r.time.empty()) j["time"] = std::string(r.time);
+        if (!r.interface.empty()) j["interface"] = std::string(r.interface);
+        std::string id, data;
+        append_hex(id, r.frame.raw_id(), r.frame.is_extended() ? 8 : 3);
+        for (auto b : r.frame.data()) append_hex(data, b, 2);
+        j["id"] = id;
+        j["ext"] = r.frame.is_extended();
+        j["data"] = data;
+        j["function"] = std::string(to_string(e.cls.function));
+        j["node"] = node_of(e);
+        j["model"] = std::string(to_string(session_.model()));
+        if (e.decoded) {
+            j["kind"] = std::string(kind_of(*e.decoded));
+            auto fields = nlohmann::ordered_json::object();
+            for_each_field(*e.decoded, [&fields](std::string_view name, const auto& v) {
+                fields[std::string(name)] = json_value(v);
+            });
+            j["fields"] = fields;
+        }
+        if (e.sdo != sdo_pairing::none) j["sdo"] = std::string(to_string(e.sdo));
+        if (e.upload_done) j["text"] = std::string(session_.text());
+        if (e.new_node) j["new_node"] = e.new_node->value();
+        if (e.new_protocol && !pkp_j1939 && e.decoded)
+            j["protocol"] = std::string(to_string(*e.new_protocol));
+        if (!e.decoded) j["error"] = std::string(to_string(e.decoded.error()));
+        out += j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+    }
+
     const options& o_;
     session<256> session_;
     keypad_picture picture_;
@@ -266,7 +327,8 @@ private:
     output out_;
 };
 
-// --- reading the inputs ---------------------------------------------------------------------------
+// --- reading the inputs
+// ---------------------------------------------------------------------------
 
 // Turns a reader's findings into at most a few lines per kind of problem, and one clear message
 // for a file that is not a log at all.
@@ -341,7 +403,8 @@ private:
                    "candump log";
         if (looks.find("MDF") != std::string_view::npos)
             return "export it as Vector ASC or BLF (CANoe, asammdf)";
-        if (looks.find("gzip") != std::string_view::npos) return "unpack it: zcat FILE | powerkey decode";
+        if (looks.find("gzip") != std::string_view::npos)
+            return "unpack it: zcat FILE | powerkey decode";
         if (looks.find("zip") != std::string_view::npos) return "unpack it first";
         if (looks.find("JSON") != std::string_view::npos)
             return "powerkey encode --json reads JSON lines";
@@ -399,7 +462,8 @@ void read_inputs(const options& o, output& out, counts& c, OnFrame on_frame) {
     }
 }
 
-// --- --model auto -----------------------------------------------------------------------------------
+// --- --model auto
+// -----------------------------------------------------------------------------------
 
 struct stored {
     can::frame frame;

@@ -94,8 +94,8 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         if (!j->is_string()) return "model: expected a string";
         const auto pm = model_from_name(j->get_ref<const std::string&>());
         if (!pm)
-            return "model: unknown model '" + escape(j->get_ref<const std::string&>(), 32) +
-                   "' (" + std::string(model_names) + ")";
+            return "model: unknown model '" + escape(j->get_ref<const std::string&>(), 32) + "' (" +
+                   std::string(model_names) + ")";
         m = *pm;
     }
     canopen::node_id line_node = o.node;
@@ -153,9 +153,8 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
     message msg;
     std::string error;
     if (!build_any(m, kind_name, line_options, get_for(false), msg, error))
-        return "kind: no message '" + escape(kind_name, 40) + "' for " +
-               std::string(to_string(m)) + " (powerkey list --model " +
-               std::string(to_string(m)) + " shows them)";
+        return "kind: no message '" + escape(kind_name, 40) + "' for " + std::string(to_string(m)) +
+               " (powerkey list --model " + std::string(to_string(m)) + " shows them)";
     if (!error.empty()) return "fields: " + error;
     const auto f = encode(line_node, m, msg);
     if (!f) return "cannot encode " + kind_name + ": " + std::string(to_string(f.error()));
@@ -169,8 +168,9 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
     if (!build_any(m, kind_name, o, get_for(true), moved, error) || !error.empty())
         return "fields: " + error;
     const auto g = encode(o.node, m, moved);
-    if (!g) return "cannot encode " + kind_name + " for node " + std::to_string(o.node.value()) +
-                   ": " + std::string(to_string(g.error()));
+    if (!g)
+        return "cannot encode " + kind_name + " for node " + std::to_string(o.node.value()) + ": " +
+               std::string(to_string(g.error()));
     out = *g;
     return "";
 }
@@ -260,8 +260,7 @@ int run_encode(const options& o) {
     for (std::size_t i = 0; i < assignments.size(); ++i)
         if (!used[i]) {
             report("encode", "no field '" + escape(assignments[i].first, 40) + "' in " +
-                                 std::string(kind_of(msg)) + " (fields: " + field_names(msg) +
-                                 ")");
+                                 std::string(kind_of(msg)) + " (fields: " + field_names(msg) + ")");
             return 2;
         }
     if (!error.empty()) {
@@ -317,7 +316,8 @@ int run_encode_json(const options& o) {
     for (const auto& path : files) {
         const auto label = file_label(path);
         const bool ok = for_each_line(path, [&](std::size_t number, std::string_view text) {
-            while (!text.empty() && (text.back() == '\r' || text.back() == ' ')) text.remove_suffix(1);
+            while (!text.empty() && (text.back() == '\r' || text.back() == ' '))
+                text.remove_suffix(1);
             if (text.find_first_not_of(" \t") == std::string_view::npos) return;
             std::string error;
             can::frame f;

@@ -31,6 +31,7 @@ struct options {
     // For the benchmark (scripts/bench_cli.sh): read and parse only, or decode without output.
     bool parse_only = false;
     bool quiet = false;
+    bool nlohmann_writer = false;  // decode --json through nlohmann::json (for the benchmark)
     std::vector<std::string> args;
 };
 
@@ -129,8 +130,7 @@ void append_message_text(std::string& out, const M& m) {
 template <class S>
 void apply_defaults(S& s, const options& o) {
     S::fields(s, [&o](std::string_view name, auto& value) {
-        if (name == "target")
-            (void)set_from_number(value, o.broadcast ? 0u : o.node.value(), name);
+        if (name == "target") (void)set_from_number(value, o.broadcast ? 0u : o.node.value(), name);
     });
 }
 

@@ -64,7 +64,8 @@ std::string enum_name_list() {
         v.emplace_back(static_cast<std::uint64_t>(value), name);
     std::sort(v.begin(), v.end());
     std::string s;
-    for (std::size_t i = 0; i < v.size() && i < 12; ++i) s.append(i ? ", " : "").append(v[i].second);
+    for (std::size_t i = 0; i < v.size() && i < 12; ++i)
+        s.append(i ? ", " : "").append(v[i].second);
     if (v.size() > 12) s += ", ... (" + std::to_string(v.size()) + " names)";
     return s;
 }
@@ -112,7 +113,7 @@ inline bool parse_number(std::string_view s, std::uint64_t& out) {
 // Fields whose numbers the manuals write in hex: node ids, COB-IDs, J1939 addresses and PGNs.
 // `context` is the name of the object an SDO value belongs to (identity and mapping words).
 inline bool hex_field(std::string_view name, std::string_view context) {
-    constexpr std::string_view names[] = {"target",  "new_node_id", "new_node", "node",
+    constexpr std::string_view names[] = {"target",  "new_node_id", "new_node",    "node",
                                           "node_id", "source",      "destination", "can_id",
                                           "cob_id",  "pgn",         "index"};
     for (auto n : names)
@@ -121,8 +122,8 @@ inline bool hex_field(std::string_view name, std::string_view context) {
         name.find("address") != std::string_view::npos)
         return true;
     if (name == "value") {
-        constexpr std::string_view words[] = {"vendor", "product", "revision", "serial",
-                                              "identity", "mapping", "cob", "node"};
+        constexpr std::string_view words[] = {"vendor",   "product", "revision", "serial",
+                                              "identity", "mapping", "cob",      "node"};
         for (auto w : words)
             if (context.find(w) != std::string_view::npos) return true;
     }
