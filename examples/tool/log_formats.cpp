@@ -636,6 +636,9 @@ void reader::blf_object(std::string_view obj, std::uint32_t type) {
         const std::uint16_t method = le16(obj, blf_base_header);
         const std::uint32_t size = le32(obj, blf_base_header + 8);
         const auto payload = obj.substr(blf_base_header + 16);
+        // Writers use containers of about 128 KiB; a size from a damaged file is not allocated.
+        if (size > (16u << 20))
+            return bad("a BLF container larger than 16 MiB (damaged file?)", "");
         std::string inner = std::move(blf_inner_);  // the tail of the previous container
         blf_inner_.clear();
         if (method == 0) {
