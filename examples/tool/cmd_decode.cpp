@@ -150,7 +150,6 @@ public:
 private:
     void text_line(std::string& out, const logs::record& r, const session_event& e, bool foreign,
                    bool pkp_j1939) {
-        const auto start = out.size();
         if (!r.time.empty()) {
             out += '(';
             append_untrusted(out, r.time, 32);
@@ -165,7 +164,6 @@ private:
         const auto width = out.size() - frame_start;
         out.append(width < 25 ? 25 - width : 0, ' ');
         out += "  ";
-        (void)start;
         const auto n = node_of(e);
         if (e.decoded) {
             out += "node ";

@@ -7,6 +7,7 @@
 #include <powerkey/decoder.hpp>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -315,6 +316,8 @@ int run_encode_json(const options& o) {
     if (files.empty()) files.push_back("-");
     for (const auto& path : files) {
         const auto label = file_label(path);
+        struct stat st {};
+        const bool live = path == "-" && (::fstat(0, &st) != 0 || !S_ISREG(st.st_mode));
         const bool ok = for_each_line(path, [&](std::size_t number, std::string_view text) {
             while (!text.empty() && (text.back() == '\r' || text.back() == ' '))
                 text.remove_suffix(1);
@@ -337,7 +340,10 @@ int run_encode_json(const options& o) {
             }
             out.buffer() += can::format_candump(f).view();
             out.buffer() += '\n';
-            out.maybe_flush();
+            if (live)
+                out.flush();  // a replay through a pipe sends each frame as it comes
+            else
+                out.maybe_flush();
         });
         if (!ok) {
             out.flush();

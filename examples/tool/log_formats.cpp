@@ -57,6 +57,13 @@ bool parse_uint(std::string_view s, std::uint32_t& out, int base = 16) {
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
+// "1)" then a number: a TRC 1.x data line (a file without its ";" header).
+bool trc_numbered(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return i > 0 && i + 1 < s.size() && s[i] == ')' && (s[i + 1] == ' ' || s[i + 1] == '\t');
+}
+
 // candump's error-frame flag in a 32-bit identifier (linux/can.h CAN_ERR_FLAG).
 constexpr std::uint32_t can_err_flag = 0x2000'0000;
 
@@ -145,6 +152,7 @@ void reader::feed(std::string_view bytes) {
             format_ = format::blf;
             return blf_feed(v);
         }
+        if (detect_binary(v)) return;
         if (starts_with(v, "\xEF\xBB\xBF")) v.remove_prefix(3);  // UTF-8 byte-order mark
         return text_feed(v);
     }
@@ -176,8 +184,14 @@ void reader::finish() {
         started_ = true;
         std::string rest = std::move(carry_);
         carry_.clear();
+        if (detect_binary(rest)) return;
         if (starts_with(rest, "\xEF\xBB\xBF")) rest.erase(0, 3);
-        if (!rest.empty()) line(rest);
+        text_feed(rest);
+        if (!carry_.empty()) {
+            const std::string last = std::move(carry_);
+            carry_.clear();
+            if (format_ != format::not_a_log) line(last);
+        }
         return;
     }
     if (format_ == format::blf) {
@@ -245,6 +259,27 @@ void reader::line(std::string_view text) {
     }
 }
 
+// The forms that are no text, by their first bytes (before any line is split: a pcapng file
+// begins with a line feed).
+bool reader::detect_binary(std::string_view s) {
+    auto other = [&](std::string_view what) {
+        format_ = format::not_a_log;
+        looks_like_ = what;
+        return true;
+    };
+    if (starts_with(s, "\xD4\xC3\xB2\xA1") || starts_with(s, "\xA1\xB2\xC3\xD4") ||
+        starts_with(s, "\x4D\x3C\xB2\xA1") || starts_with(s, "\xA1\xB2\x3C\x4D"))
+        return other("a pcap capture");
+    if (starts_with(s, std::string_view("\x0A\x0D\x0D\x0A", 4))) return other("a pcapng capture");
+    if (starts_with(s, "MDF     ") || starts_with(s, "UnFinMF"))
+        return other("an ASAM MDF (MF4) measurement file");
+    if (starts_with(s, "\x1F\x8B")) return other("a gzip-compressed file");
+    if (starts_with(s, "PK\x03\x04")) return other("a zip archive");
+    if (s.substr(0, 512).find('\0') != std::string_view::npos)
+        return other("a binary file that is not Vector BLF");
+    return false;
+}
+
 void reader::detect(std::string_view s) {
     auto other = [&](std::string_view what) {
         format_ = format::not_a_log;
@@ -253,23 +288,10 @@ void reader::detect(std::string_view s) {
     if (starts_with(s, "date ") || starts_with(s, "base hex") || starts_with(s, "base dec") ||
         starts_with(s, "Begin Triggerblock") || starts_with(s, "// version")) {
         format_ = format::asc;
-    } else if (s.front() == ';') {
+    } else if (s.front() == ';' || trc_numbered(s)) {
         format_ = format::trc;
     } else if (starts_with(s, "timestamp,")) {
         format_ = format::csv;
-    } else if (starts_with(s, "\xD4\xC3\xB2\xA1") || starts_with(s, "\xA1\xB2\xC3\xD4") ||
-               starts_with(s, "\x4D\x3C\xB2\xA1") || starts_with(s, "\xA1\xB2\x3C\x4D")) {
-        other("a pcap capture");
-    } else if (starts_with(s, std::string_view("\x0A\x0D\x0D\x0A", 4))) {
-        other("a pcapng capture");
-    } else if (starts_with(s, "MDF     ") || starts_with(s, "UnFinMF")) {
-        other("an ASAM MDF (MF4) measurement file");
-    } else if (starts_with(s, "\x1F\x8B")) {
-        other("a gzip-compressed file");
-    } else if (starts_with(s, "PK\x03\x04")) {
-        other("a zip archive");
-    } else if (s.find('\0') != std::string_view::npos) {
-        other("a binary file that is not Vector BLF");
     } else if (s.front() == '{') {
         other("JSON lines (the output of powerkey decode --json?)");
     } else {
@@ -599,14 +621,19 @@ void reader::blf_objects(std::string_view data, bool top, bool final, std::size_
         if (blf_broken_) return;
         // Objects are padded to 4 bytes (inside containers not always): find the next signature.
         std::size_t at = pos;
-        while (at + 4 <= data.size() && at < pos + 8 && data.substr(at, 4) != "LOBJ") ++at;
-        if (at + blf_base_header > data.size()) {
-            used = pos;
-            return;
-        }
-        if (data.substr(at, 4) != "LOBJ") {
+        bool found = false;
+        for (; at < pos + 8 && at + 4 <= data.size(); ++at)
+            if (data.substr(at, 4) == "LOBJ") {
+                found = true;
+                break;
+            }
+        if (!found && pos + 12 <= data.size()) {
             blf_broken_ = true;
             return bad("a BLF object without its LOBJ signature (damaged file?)", "");
+        }
+        if (!found || at + blf_base_header > data.size()) {
+            used = pos;
+            return;
         }
         const std::uint32_t size = le32(data, at + 8);
         const std::uint32_t type = le32(data, at + 12);

@@ -77,6 +77,7 @@ public:
 private:
     void text_feed(std::string_view bytes);
     void line(std::string_view text);
+    bool detect_binary(std::string_view first_bytes);
     void detect(std::string_view first);
     void candump_line(std::string_view s);
     void asc_line(std::string_view s);
