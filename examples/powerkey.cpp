@@ -3,15 +3,24 @@
 //   powerkey encode [--model M] [--node N] [--broadcast] MESSAGE [FIELD=VALUE...]
 //   powerkey encode --json [--model M] [--node N] [FILE...]
 //   powerkey list [--model M] [--node N]
+//   powerkey simulate --model M [--node N] [--press T:K] [--release T:K] [--until T] [FILE...]
+//   powerkey check --model M [--node N] [--json] [--sdo-timeout MS] [FILE...]
 // The options are read by CLI11; each subcommand is one file of tool/ (cmd_decode.cpp,
-// cmd_encode.cpp, cmd_list.cpp). docs/cli.md describes the options, the output and the exit status.
+// cmd_encode.cpp, cmd_list.cpp, and cmd_simulate.cpp, cmd_check.cpp, which read their own
+// options). docs/cli.md describes the options, the output and the exit status.
 #include "tool/common.hpp"
 
 #include <CLI/CLI.hpp>
 #include <powerkey/version.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <string>
+
+// The behaviour layer's subcommands (docs/behaviour.md, docs/controller.md): they take the
+// arguments after their name.
+int run_simulate(int argc, char** argv);
+int run_check(int argc, char** argv);
 
 namespace {
 
@@ -20,15 +29,22 @@ constexpr std::string_view usage_text =
     "       powerkey encode [--model M] [--node N] [--broadcast] MESSAGE [FIELD=VALUE...]\n"
     "       powerkey encode --json [--model M] [--node N] [FILE...]\n"
     "       powerkey list [--model M] [--node N]\n"
+    "       powerkey simulate --model M [--node N] [--press T:K] [--release T:K] [--until T]\n"
+    "                         [FILE...]\n"
+    "       powerkey check --model M [--node N] [--json] [--sdo-timeout MS] [FILE...]\n"
     "       powerkey help | version\n"
     "\n"
-    "  --model M    pk1000 (default), pkp2200, pkp2400, pkp2600, in any case and as the manuals\n"
-    "               write them (PK1000, PKP-2400, PKP-2400-LI); decode also takes auto\n"
+    "  --model M    pk1000 (default), pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt,\n"
+    "               pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, in any\n"
+    "               case and as the manuals write them (PKP-2400-LI, PKP-3500-MT) or the keypad\n"
+    "               reports them (PKU2400); decode also takes auto\n"
     "  --node N     the keypad's node id 1..127: 0x15 (default), 15h or 21\n"
     "  --json       decode: JSON lines; encode: read decode --json lines (with --node N the\n"
     "               frames are re-targeted to node N)\n"
     "  --show       decode: draw the keypad after each frame that changes it (not with --json)\n"
     "  --broadcast  encode: an NMT command for every node (target 0) instead of --node\n"
+    "  simulate     a virtual keypad answering a controller's frames (docs/behaviour.md)\n"
+    "  check        a bus log checked against the keypad's rules (docs/controller.md)\n"
     "\n"
     "Input (told apart by content; FILE - or none reads standard input, as it arrives):\n"
     "  candump -l, -L     (1700000000.000000) can0 195#0900000012   (a trailing R or T too)\n"
@@ -51,6 +67,8 @@ int usage_error(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc >= 2 && std::strcmp(argv[1], "simulate") == 0) return run_simulate(argc - 2, argv + 2);
+    if (argc >= 2 && std::strcmp(argv[1], "check") == 0) return run_check(argc - 2, argv + 2);
     tool::options o;
     CLI::App app{"powerkey"};
     app.set_help_flag();
@@ -106,7 +124,7 @@ int main(int argc, char** argv) {
             o.model_given = true;
         } else {
             return usage_error("--model: unknown model '" + tool::escape(model_text, 32) + "' (" +
-                               std::string(tool::model_names) + (*decode ? ", auto)" : ")"));
+                               tool::model_names() + (*decode ? ", auto)" : ")"));
         }
     }
     if (!node_text.empty()) {

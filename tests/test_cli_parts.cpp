@@ -7,6 +7,9 @@
 #include "../examples/tool/field_value.hpp"
 #include "../examples/tool/log_formats.hpp"
 
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/names.hpp>
+
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/heartbeat.hpp>
 #include <powerkey/canopen/nmt.hpp>
@@ -191,9 +194,23 @@ TEST_CASE("model names as people and the manuals write them") {
     CHECK(tool::model_from_name("PKP-2400-LI") == model::pkp2400);
     CHECK(tool::model_from_name("pkp 2600") == model::pkp2600);
     CHECK(tool::model_from_name("PKP2200LI") == model::pkp2200);
+    CHECK(tool::model_from_name("PKU2400") == model::pkp2400);  // as the keypad reports it
+    CHECK(tool::model_from_name("PKP-3500-MT") == model::pkp3500mt);
+    CHECK(tool::model_from_name("pkp2600si") == model::pkp2600si);
+    CHECK(tool::model_from_name("PKP-1500-LI") == model::pkp1500li);
+    CHECK(tool::model_from_name("pkp_2400_si") == model::pkp2400si);
     CHECK(tool::model_from_name("pkp3000") == std::nullopt);
     CHECK(tool::model_from_name("li") == std::nullopt);
     CHECK(tool::model_from_name("") == std::nullopt);
+    // Every model of the table, by its own name, and all twelve in the usage text.
+    std::size_t n = 0;
+    for (const auto m : enum_values<model>()) {
+        CHECK(tool::model_from_name(to_string(m)) == m);
+        CHECK(tool::model_names().find(to_string(m)) != std::string::npos);
+        ++n;
+    }
+    CHECK(n == model_count);
+    CHECK(n == 12);
 }
 
 TEST_CASE("escaping: control characters, DEL, quotes and bytes above 7Fh; long text cut") {
@@ -209,13 +226,14 @@ TEST_CASE("field values from text and JSON, with their range checks named") {
     CHECK(node.value() == 0x3A);
     CHECK(tool::set_from_text(node, "3Ah").empty());
     CHECK(tool::set_from_text(node, "0", "node") == "0 is outside 01h..7Fh");
-    CHECK(tool::set_from_text(node, "128", "level") == "128 is outside 1..127");
-    CHECK(tool::set_from_text(node, "x", "level") ==
-          "'x' is not a number (58, 0x3A or 3Ah; 1..127)");
+    CHECK(tool::set_from_text(node, "128", "node_id") == "128 is outside 01h..7Fh");
+    CHECK(tool::set_from_text(node, "x", "node_id") ==
+          "'x' is not a number (58, 0x3A or 3Ah; 01h..7Fh)");
 
     std::uint8_t byte = 0;
     CHECK(tool::set_from_text(byte, "255").empty());
-    CHECK(tool::set_from_text(byte, "256") == "256 is outside 0..255");
+    CHECK(tool::set_from_text(byte, "256", "level") == "256 is outside 00h..FFh");
+    CHECK(tool::set_from_text(byte, "256", "tick") == "256 is outside 0..255");  // a count
 
     bool b = false;
     CHECK((tool::set_from_text(b, "yes").empty() && b));
@@ -255,25 +273,41 @@ TEST_CASE("field values from text and JSON, with their range checks named") {
 TEST_CASE("what the text prints, the text reader takes back") {
     auto text_of = [](std::string_view name, const auto& v) {
         std::string out;
-        tool::write_text_value(out, name, "", v);
+        tool::write_text_value(out, name, v);
         return out;
     };
     CHECK(text_of("red", index_set<28>{1, 2, 3, 4, 9}) == "1-4 9");
     CHECK(text_of("target", canopen::nmt_target::make(0x3A).value()) == "3Ah");
-    CHECK(text_of("level", std::uint8_t{63}) == "63");
+    CHECK(text_of("level", std::uint8_t{63}) == "3Fh");  // describe(): hex but counts and times
+    CHECK(text_of("tick", std::uint8_t{63}) == "63");
+    CHECK(text_of("period_ms", std::uint32_t{1000}) == "1000");
     CHECK(text_of("data", std::array<std::uint8_t, 3>{0x72, 0x69, 0x6E}) == "72 69 6E");
-    CHECK(text_of("command", canopen::nmt_command::legacy_stop) == "00h");
+    CHECK(text_of("command", canopen::nmt_command::legacy_stop) == "legacy_stop");
     index_set<28> set;
     CHECK(tool::set_from_text(set, "1-4 9").empty());
     CHECK(set == index_set<28>{1, 2, 3, 4, 9});
     canopen::nmt_command c{};
     CHECK(tool::set_from_text(c, "00h").empty());
     CHECK(c == canopen::nmt_command::legacy_stop);
+    CHECK(tool::set_from_text(c, "legacy_stop").empty());
+    CHECK(c == canopen::nmt_command::legacy_stop);
 }
 
-TEST_CASE("enumerators by name, and by number where a name is not unique") {
+TEST_CASE("list and the text agree with describe(): the fields of a message as printed") {
+    const message m = led_brightness{level{0x3F}};
+    const auto fields = tool::described_fields(m, canopen::default_node_id);
+    REQUIRE(fields.size() == 1);
+    CHECK(fields[0].first == "level");
+    CHECK(fields[0].second == "3Fh");
+    std::string text;
+    tool::append_message_text(text, message{led_on{leds{led_set{1, 7}, {}, {}}}},
+                              canopen::default_node_id);
+    CHECK(text == "node 15h  LED on  red: 1 7  green: -  blue: -");
+}
+
+TEST_CASE("enumerators by name from their tables, and by number") {
     canopen::nmt_command c = canopen::nmt_command::start;
-    // Two values print as "stop" (02h and the legacy 00h): the name means 02h.
+    // 02h is "stop", the legacy 00h "legacy_stop" (names.hpp); a number is taken as it is.
     CHECK(tool::set_from_text(c, "stop").empty());
     CHECK(c == canopen::nmt_command::stop);
     CHECK(tool::set_from_text(c, "0").empty());
@@ -281,7 +315,8 @@ TEST_CASE("enumerators by name, and by number where a name is not unique") {
     CHECK(tool::set_from_text(c, "reset_node").empty());
     CHECK(c == canopen::nmt_command::reset_node);
     CHECK(tool::set_from_text(c, "jump") ==
-          "unknown name 'jump' (start, stop, pre_operational, reset_node, reset_communication)");
+          "unknown name 'jump' (start, stop, pre_operational, reset_node, reset_communication, "
+          "legacy_stop)");
     CHECK(tool::set_from_text(c, "256") == "'256' is outside 0..255");
 
     auto json_of = [](auto v) {
@@ -293,7 +328,7 @@ TEST_CASE("enumerators by name, and by number where a name is not unique") {
         return out;
     };
     CHECK(json_of(canopen::nmt_command::stop) == R"({"v":"stop"})");
-    CHECK(json_of(canopen::nmt_command::legacy_stop) == R"({"v":0})");
+    CHECK(json_of(canopen::nmt_command::legacy_stop) == R"({"v":"legacy_stop"})");
     CHECK(json_of(canopen::nmt_state::pre_operational) == R"({"v":"pre_operational"})");
     CHECK(json_of(static_cast<canopen::nmt_state>(0x33)) == R"({"v":51})");
 
@@ -303,6 +338,11 @@ TEST_CASE("enumerators by name, and by number where a name is not unique") {
     CHECK(a == canopen::sdo_abort_code::object_does_not_exist);
     CHECK(json_of(canopen::sdo_abort_code::value_too_high) == R"({"v":"value_too_high"})");
     CHECK(json_of(static_cast<canopen::sdo_abort_code>(0x12345678)) == R"({"v":305419896})");
+
+    // The list in an error is the table's first names in order, cut after 12.
+    const auto names = tool::enum_name_list<canopen::sdo_abort_code>();
+    CHECK(names.starts_with(std::string(to_string(enum_values<canopen::sdo_abort_code>()[0]))));
+    CHECK(names.find("names)") != std::string::npos);
 }
 
 TEST_CASE("the JSON writer escapes whatever the bus sent") {

@@ -5,7 +5,8 @@
 #include "show.hpp"
 
 #include <nlohmann/json.hpp>
-#include <powerkey/decoder.hpp>
+#include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
 
 #include <fcntl.h>
@@ -45,22 +46,22 @@ std::uint8_t node_of(const session_event& e) {
 }
 
 void write_generic_fields(json::object_writer& w, const can::frame& f, const session_event& e) {
-    switch (e.cls.function) {
-        case bus_function::nmt:
+    switch (e.cls.fn) {
+        case canopen::function::nmt:
             if (const auto m = canopen::decode_nmt(f)) {
                 w.field("command", to_string(m->command));
                 w.field("target", m->target.value());
             }
             break;
-        case bus_function::heartbeat:
+        case canopen::function::heartbeat:
             if (const auto m = canopen::decode_heartbeat(f, e.node))
                 w.field("state", to_string(m->state));
             break;
-        case bus_function::sdo_rx:
-        case bus_function::sdo_tx: {
+        case canopen::function::sdo_rx:
+        case canopen::function::sdo_tx: {
             const auto n = canopen::node_id::make(e.cls.node).value();
             bool carries = false;
-            if (e.cls.function == bus_function::sdo_rx) {
+            if (e.cls.fn == canopen::function::sdo_rx) {
                 const auto r = canopen::decode_sdo_request(f, n);
                 carries = r && !std::holds_alternative<canopen::sdo_segment_request>(*r);
             } else {
@@ -73,7 +74,7 @@ void write_generic_fields(json::object_writer& w, const can::frame& f, const ses
             }
             break;
         }
-        case bus_function::j1939: {
+        case canopen::function::j1939: {
             const auto id = j1939::parse_id(f).value();
             w.field("priority", id.priority.value());
             w.field("pgn", id.pgn.value());
@@ -113,8 +114,8 @@ public:
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
-        const bool pkp_j1939 =
-            !e.decoded && e.cls.function == bus_function::j1939 && pkp_model(session_.model());
+        const bool pkp_j1939 = !e.decoded && e.cls.fn == canopen::function::j1939 &&
+                               !info(session_.model()).value().j1939;
         const bool foreign = pkp_j1939 || (!e.decoded && e.decoded.error() == errc::wrong_id &&
                                            !concerns(e.cls, e.node));
         if (e.cls.node != 0 && e.cls.node < 128) ++counts_.per_node[e.cls.node];
@@ -166,20 +167,19 @@ private:
         out += "  ";
         const auto n = node_of(e);
         if (e.decoded) {
-            out += "node ";
-            append_hex_h(out, n, 2);
-            out += "  ";
-            append_message_text(out, *e.decoded);
+            append_message_text(out, *e.decoded, canopen::node_id::make(n).value_or(e.node));
         } else if (pkp_j1939) {
-            out += "j1939  not a frame of a PKP keypad (they have no J1939)";
-        } else if (foreign && e.cls.function == bus_function::other) {
+            out += "j1939  not a frame of a ";
+            out += to_string(session_.model());
+            out += " (it has no J1939)";
+        } else if (foreign && e.cls.fn == canopen::function::other) {
             out += "unknown frame: no keypad uses COB-ID ";
             append_hex_h(out, r.frame.raw_id(), 3);
         } else if (foreign) {
             out += "node ";
             append_hex_h(out, n, 2);
             out += "  ";
-            out += to_string(e.cls.function);
+            out += to_string(e.cls.fn);
             out += "  another node's frame (keypad is ";
             append_hex_h(out, e.node.value(), 2);
             out += ')';
@@ -187,7 +187,7 @@ private:
             out += "node ";
             append_hex_h(out, n, 2);
             out += "  ";
-            out += to_string(e.cls.function);
+            out += to_string(e.cls.fn);
             out += "  error: ";
             out += to_string(e.decoded.error());
         }
@@ -236,7 +236,7 @@ private:
         out += '"';
         for (auto b : r.frame.data()) append_hex(out, b, 2);
         out += '"';
-        w.field("function", to_string(e.cls.function));
+        w.field("function", to_string(e.cls.fn));
         w.field("node", node_of(e));
         w.field("model", to_string(session_.model()));
         if (e.decoded) {
@@ -267,7 +267,7 @@ private:
         if constexpr (std::is_same_v<T, bool>) {
             return v;
         } else if constexpr (std::is_enum_v<T>) {
-            if (has_unique_name(v)) return std::string(enum_name(v));
+            if (is_named(v)) return std::string(to_string(v));
             return static_cast<std::uint64_t>(v);
         } else if constexpr (is_index_set<T>::value) {
             auto a = nlohmann::ordered_json::array();
@@ -296,7 +296,7 @@ private:
         j["id"] = id;
         j["ext"] = r.frame.is_extended();
         j["data"] = data;
-        j["function"] = std::string(to_string(e.cls.function));
+        j["function"] = std::string(to_string(e.cls.fn));
         j["node"] = node_of(e);
         j["model"] = std::string(to_string(session_.model()));
         if (e.decoded) {
@@ -470,8 +470,10 @@ struct stored {
     std::size_t line;
 };
 
-// Picks the model the log shows: a model name the keypad sent (device name upload), else the
-// model that refuses fewest of the keypad's frames. Says why on standard error.
+// Picks the model the log shows: the model string the keypad reported (100Bh, PKP 6100h sub 2:
+// model_from_report), or a model name in any text it sent (device name upload); else the model
+// that refuses fewest of the keypad's frames (a key or LED map wider than a model's is refused
+// by it), the narrowest such model first. Says why on standard error.
 model choose_model(const options& o, const std::vector<stored>& log) {
     struct score {
         model m;
@@ -479,19 +481,21 @@ model choose_model(const options& o, const std::vector<stored>& log) {
         std::string named;
     };
     std::vector<score> scores;
-    for (auto m : all_models) {
+    for (const auto m : enum_values<model>()) {
         score sc{m, 0, {}};
         session<256> s(m, o.node);
         for (const auto& r : log) {
             const auto e = s.step(r.frame);
             if (!e.decoded && e.decoded.error() != errc::wrong_id &&
-                e.cls.function != bus_function::j1939)
+                e.cls.fn != canopen::function::j1939)
                 ++sc.refused;
             if (e.upload_done && sc.named.empty()) {
-                // "PKP-2400-LI", "BlinkMarine PK1000": any word of the text that names m
                 std::string_view t = s.text();
-                while (!t.empty()) {
-                    const auto sp = t.find_first_of(" _,;/");
+                if (const auto reported = model_from_report(t); reported && *reported == m)
+                    sc.named = t;
+                // "PKP-2400-LI", "BlinkMarine PK1000": any word of the text that names m
+                while (sc.named.empty() && !t.empty()) {
+                    const auto sp = t.find_first_of(" ,;/");
                     if (const auto named = model_from_name(t.substr(0, sp)); named && *named == m)
                         sc.named = s.text();
                     t.remove_prefix(sp == std::string_view::npos ? t.size() : sp + 1);
@@ -500,17 +504,27 @@ model choose_model(const options& o, const std::vector<stored>& log) {
         }
         scores.push_back(sc);
     }
+    auto keys = [](model m) { return info(m).value().keys; };
+    const score* best = &scores.front();
     for (const auto& sc : scores)
-        if (!sc.named.empty()) {
+        if (sc.refused < best->refused ||
+            (sc.refused == best->refused && keys(sc.m) < keys(best->m)))
+            best = &sc;
+    // The keypad's own name counts unless its model refuses more of the log than another does.
+    std::string named_note;
+    for (const auto& sc : scores) {
+        if (sc.named.empty()) continue;
+        if (sc.refused <= best->refused) {
             report("--model auto",
                    std::string(to_string(sc.m)) + ": the keypad names itself \"" +
                        escape(sc.named, 40) + "\"",
                    false);
             return sc.m;
         }
-    const score* best = &scores.front();
-    for (const auto& sc : scores)
-        if (sc.refused < best->refused) best = &sc;
+        named_note = "; the keypad names itself \"" + escape(sc.named, 40) + "\" but " +
+                     std::string(to_string(sc.m)) + " refuses " + std::to_string(sc.refused) +
+                     " of its frames";
+    }
     std::string others;
     bool all_equal = true;
     std::vector<std::string> ties;
@@ -523,8 +537,9 @@ model choose_model(const options& o, const std::vector<stored>& log) {
     }
     if (all_equal) {
         report("--model auto",
-               "cannot tell the model: no frame of the log decodes differently under the four "
-               "models (no device name, no key or LED map); decoding as pk1000, give --model",
+               "cannot tell the model: no frame of the log decodes differently under the " +
+                   std::to_string(model_count) +
+                   " models (no model string, no key or LED map); decoding as pk1000, give --model",
                false);
         return model::pk1000;
     }
@@ -533,8 +548,9 @@ model choose_model(const options& o, const std::vector<stored>& log) {
     if (!ties.empty()) {
         why += "; ";
         for (std::size_t i = 0; i < ties.size(); ++i) why += (i ? ", " : "") + ties[i];
-        why += " decode it as well (no key above the smaller keypad's seen)";
+        why += " decode it as well (the narrowest is taken: no key or LED above its own seen)";
     }
+    why += named_note;
     report("--model auto", why, false);
     return best->m;
 }
@@ -573,7 +589,7 @@ void summary(const options& o, const counts& c, model m) {
                         " keypad frames refused as " + std::string(to_string(m)) + " frames; ";
         h += o.model_auto ? "no model reads this log well: check --node"
                           : "if the keypad is another model, try --model auto (or --model " +
-                                std::string(model_names) + ")";
+                                model_names() + ")";
         report("hint", h, false);
     }
     std::size_t top = 0;

@@ -4,7 +4,6 @@
 
 #include <nlohmann/json.hpp>
 #include <powerkey/can/candump.hpp>
-#include <powerkey/decoder.hpp>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -21,11 +20,13 @@ namespace tool {
 namespace {
 using namespace powerkey;
 
-// Builds the message of kind `kind` of one profile's message type PM; get(name, value) sets each
-// field and returns "" or an error. Returns false when PM has no such kind.
-template <class PM, class Get>
-bool build(std::string_view kind, const options& o, Get&& get, PM& out, std::string& error) {
-    return for_each_alternative<PM>([&]<class S>(std::type_identity<S>) {
+// Builds the message of kind `kind` (one alternative of the flat message, found through
+// for_each_alternative); get(name, value) sets each field and returns "" or an error. The fields
+// of an SDO value follow its object, which is set first. Returns false for an unknown kind.
+template <class Get>
+bool build_any(model, std::string_view kind, const options& o, Get&& get, message& out,
+               std::string& error) {
+    return for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
         if (S::kind != kind) return false;
         S s{};
         apply_defaults(s, o);
@@ -34,25 +35,9 @@ bool build(std::string_view kind, const options& o, Get&& get, PM& out, std::str
             const auto e = get(name, value);
             if (!e.empty()) error = std::string(kind) + ": " + std::string(name) + ": " + e;
         });
-        if (error.empty() && !assign_message(out, s))
-            error = "internal: cannot hold " + std::string(kind);
+        out = s;
         return true;
     });
-}
-
-template <class Get>
-bool build_any(model m, std::string_view kind, const options& o, Get&& get, message& out,
-               std::string& error) {
-    if (pkp_model(m)) {
-        pkp::message pm;
-        if (!build(kind, o, get, pm, error)) return false;
-        out = pm;
-        return true;
-    }
-    pk1000::message cm;
-    if (!build(kind, o, get, cm, error)) return false;
-    out = cm;
-    return true;
 }
 
 std::string field_names(const message& m) {
@@ -96,7 +81,7 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         const auto pm = model_from_name(j->get_ref<const std::string&>());
         if (!pm)
             return "model: unknown model '" + escape(j->get_ref<const std::string&>(), 32) + "' (" +
-                   std::string(model_names) + ")";
+                   model_names() + ")";
         m = *pm;
     }
     canopen::node_id line_node = o.node;
@@ -246,12 +231,10 @@ int run_encode(const options& o) {
     message msg;
     std::string error;
     bool found = false;
-    for (std::string prefix : {"", "pk1000_", "pkp_"}) {
-        if (build_any(o.keypad, prefix + name, o, get, msg, error)) {
-            found = true;
-            break;
-        }
-    }
+    // The kinds of the old profiles ("pk1000_led_on", "pkp_led_on") are the same message.
+    for (std::string_view prefix : {"pk1000_", "pkp_"})
+        if (name.starts_with(prefix)) name.erase(0, prefix.size());
+    found = build_any(o.keypad, name, o, get, msg, error);
     if (!found) {
         report("encode", "no message '" + escape(o.args[0], 40) + "' for " +
                              std::string(to_string(o.keypad)) + " (powerkey list --model " +
@@ -273,6 +256,18 @@ int run_encode(const options& o) {
         // The type took every value, the model did not (a key above a PKP-2200's four): find the
         // field by leaving out one assignment at a time, then the values this model takes.
         const std::string kind(kind_of(msg));
+        // A kind the model does not speak at all (the PKP-3500-MT's encoder messages elsewhere).
+        auto none = [](std::string_view, auto&) { return std::string(); };
+        message plain;
+        std::string ignored;
+        if (!kind.starts_with("sdo_") && kind != "command" &&
+            build_any(o.keypad, kind, o, none, plain, ignored) &&
+            !encode(o.node, o.keypad, plain).has_value()) {
+            report("encode", kind + " is not a message of a " + std::string(to_string(o.keypad)) +
+                                 " (powerkey list --model " + std::string(to_string(o.keypad)) +
+                                 " shows its messages)");
+            return 1;
+        }
         auto encodes = [&](std::size_t skip, const std::string* replacement) {
             auto g = [&](std::string_view field, auto& value) -> std::string {
                 for (std::size_t i = assignments.size(); i-- > 0;) {

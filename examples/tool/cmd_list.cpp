@@ -1,8 +1,8 @@
 // powerkey list: every message kind of a model, with its fields and their defaults, as encode
-// takes them: `pkp_led_on red=- green=- blue=-`. A value with a space is quoted for the shell.
+// takes them: `led_on red=- green=- blue=-`. A value with a space is quoted for the shell.
 #include "common.hpp"
 
-#include <powerkey/decoder.hpp>
+#include <powerkey/keypad/codec.hpp>
 
 #include <cstdio>
 #include <string>
@@ -11,25 +11,35 @@ namespace tool {
 
 namespace {
 
-template <class PM>
+// Listed for a model: every kind whose default message encodes for it (so the PKP-3500-MT's
+// encoder messages only for it, J1939 only for the keypads that have it), the SDO kinds always
+// (their fields follow the object; object=... picks it), and the PKP command where the model's
+// dictionary has the command module (6500h/1).
+bool listed(const options& o, std::string_view kind, const powerkey::message& m) {
+    if (powerkey::encode(o.node, o.keypad, m)) return true;
+    if (kind.starts_with("sdo_")) return true;
+    const auto mi = powerkey::info(o.keypad);
+    return kind == "command" && mi &&
+           powerkey::find_row(mi->dictionary, powerkey::object::command_module).has_value();
+}
+
 void list_kinds(const options& o) {
     std::string out;
-    powerkey::for_each_alternative<PM>([&]<class S>(std::type_identity<S>) {
-        out += S::kind;
+    powerkey::for_each_alternative<powerkey::message>([&]<class S>(std::type_identity<S>) {
         S s{};
         apply_defaults(s, o);
-        std::string_view context;
-        S::fields(s, [&](std::string_view name, const auto& v) {
-            using T = std::decay_t<decltype(v)>;
-            std::string value;
-            write_text_value(value, name, context, v);
-            if constexpr (std::is_enum_v<T>) context = powerkey::enum_name(v);
+        const powerkey::message m{s};
+        if (!listed(o, S::kind, m)) return false;
+        out += S::kind;
+        // The values exactly as decode's text prints them (describe), quoted when they hold a
+        // space.
+        for (const auto& [name, value] : described_fields(m, o.node)) {
             out.append(" ").append(name).append("=");
             if (value.find(' ') != std::string::npos)
                 out.append("'").append(value).append("'");
             else
                 out.append(value);
-        });
+        }
         out += '\n';
         return false;
     });
@@ -39,10 +49,7 @@ void list_kinds(const options& o) {
 }  // namespace
 
 int run_list(const options& o) {
-    if (powerkey::pkp_model(o.keypad))
-        list_kinds<powerkey::pkp::message>(o);
-    else
-        list_kinds<powerkey::pk1000::message>(o);
+    list_kinds(o);
     return 0;
 }
 

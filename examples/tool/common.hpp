@@ -7,14 +7,19 @@
 #include "text.hpp"
 
 #include <powerkey/canopen/node_id.hpp>
-#include <powerkey/decoder.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/names.hpp>
 
+#include <array>
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace tool {
@@ -35,21 +40,21 @@ struct options {
     std::vector<std::string> args;
 };
 
-// A model from a name as people write it: any case, with or without dashes, spaces or the
-// manuals' "-LI" suffix: pk1000, PK1000, PK-1000, pkp2400, PKP-2400, PKP-2400-LI.
+// A model from a name as people write it: any case, with or without dashes or underscores, as
+// the manuals write it (PKP-2400-LI, PKP-3500-MT) or as the keypad reports it (PKU2400):
+// parse_model of the library.
 inline std::optional<powerkey::model> model_from_name(std::string_view name) {
-    std::string n;
-    for (char c : name) {
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) n += c;
-    }
-    if (n.size() > 2 && n.ends_with("li")) n.resize(n.size() - 2);
-    for (auto m : powerkey::all_models)
-        if (powerkey::to_string(m) == n) return m;
+    if (const auto m = powerkey::parse_model(name)) return *m;
     return std::nullopt;
 }
 
-inline constexpr std::string_view model_names = "pk1000, pkp2200, pkp2400, pkp2600";
+// "pk1000, pkp2200, ..., pkp2400si": every model of the table, for usage errors and hints.
+inline std::string model_names() {
+    std::string s;
+    for (const auto m : powerkey::enum_values<powerkey::model>())
+        s.append(s.empty() ? "" : ", ").append(powerkey::to_string(m));
+    return s;
+}
 
 // Problems go to standard error, one line each: "powerkey: WHERE: WHAT". WHAT that quotes
 // input must have been escaped (escape()).
@@ -88,41 +93,39 @@ private:
 
 // --- the text of a message --------------------------------------------------------------------
 
-// The kind without its profile prefix, with spaces: "pk1000_led_on" -> "LED on".
-inline void append_title(std::string& out, std::string_view kind) {
-    constexpr std::string_view upper[] = {"led", "sdo",  "nmt",  "pdo", "rgb",  "j1939",
-                                          "id",  "rpdo", "tpdo", "cob", "rs485"};
-    for (std::string_view prefix : {std::string_view{"pk1000_"}, std::string_view{"pkp_"}})
-        if (kind.starts_with(prefix)) kind.remove_prefix(prefix.size());
-    bool first = true;
-    while (!kind.empty()) {
-        const auto end = kind.find('_');
-        const auto word = kind.substr(0, end);
-        if (!first) out += ' ';
-        first = false;
-        bool up = false;
-        for (auto u : upper) up = up || u == word;
-        for (char c : word)
-            out += up && c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-        if (end == std::string_view::npos) break;
-        kind.remove_prefix(end + 1);
-    }
+// "node 15h  LED on  red: 1 7  green: -  blue: -": the library's describe() of the message, every
+// field in the form encode takes back.
+inline void append_message_text(std::string& out, const powerkey::message& m,
+                                powerkey::canopen::node_id node) {
+    std::array<char, 512> buf{};
+    const auto text = powerkey::describe(m, node, buf);
+    if (text)
+        out += *text;
+    else  // cannot happen (160 characters hold every message): the beginning, marked
+        out.append(buf.data(), buf.size()).append("...");
 }
 
-// "LED on  red: 17  green: 28": the title, then every field as `name: value` in the form encode
-// takes back.
-template <class M>
-void append_message_text(std::string& out, const M& m) {
-    append_title(out, powerkey::kind_of(m));
-    std::string_view context;
-    powerkey::for_each_field(m, [&](std::string_view name, const auto& v) {
-        using T = std::decay_t<decltype(v)>;
-        out += "  ";
-        out += name;
-        out += ": ";
-        write_text_value(out, name, context, v);
-        if constexpr (std::is_enum_v<T>) context = powerkey::enum_name(v);
-    });
+// The fields of describe()'s text, name and value, in order: "level: 3Fh" -> {"level", "3Fh"}.
+// (A value never holds two spaces in a row: sets are "1 7", bytes "72 69 6E".)
+inline std::vector<std::pair<std::string, std::string>> described_fields(
+    const powerkey::message& m, powerkey::canopen::node_id node) {
+    std::string text;
+    append_message_text(text, m, node);
+    std::vector<std::pair<std::string, std::string>> fields;
+    std::vector<std::string_view> parts;
+    std::string_view t = text;
+    while (!t.empty()) {
+        const auto sep = t.find("  ");
+        parts.push_back(t.substr(0, sep));
+        t.remove_prefix(sep == std::string_view::npos ? t.size() : sep + 2);
+    }
+    // parts: "node 15h", the title, then "name: value" each
+    for (std::size_t i = 2; i < parts.size(); ++i) {
+        const auto colon = parts[i].find(": ");
+        if (colon == std::string_view::npos) continue;
+        fields.emplace_back(parts[i].substr(0, colon), parts[i].substr(colon + 2));
+    }
+    return fields;
 }
 
 // Defaults that depend on the command line: an NMT command goes to --node, not to every node on

@@ -1,9 +1,10 @@
 // powerkey tool: field values both ways, for every field type of the kind/fields convention.
-// What the text output prints, encode accepts back:
+// What the text output prints (describe() of the library), encode accepts back:
 //   bool                  yes/no (also true/false, on/off, 1/0); JSON true/false
-//   integers, bounded     decimal, or hex with h for node ids, COB-IDs, addresses and identity
-//                         and mapping words (3Ah); encode also takes 58 and 0x3A
-//   enums                 their stable name, or the number (hex with h) when it has no unique name
+//   integers, bounded     hex with h (3Ah) but counts and times (tick, period_ms, size, ...) in
+//                         decimal, as describe() prints them; encode also takes 58 and 0x3A
+//   enums                 their name from the enum's table (names.hpp; aliases are taken too), or
+//                         the number (hex with h) for a value without a name
 //   std::array<uint8_t>   hex bytes "72 69 6E" (with or without spaces); JSON "72696E"
 //   index_set<N>          "1 7", "1-28" or "-" for none (also 1,7); JSON [1,7]
 // Reading JSON goes through nlohmann::json; writing JSON through json_writer.hpp.
@@ -14,15 +15,16 @@
 #include "text.hpp"
 
 #include <nlohmann/json.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -30,53 +32,19 @@ namespace tool {
 
 // --- enums by name ------------------------------------------------------------------------------
 
-// Name -> value of an enum, built once by trying values through enum_name. Types of one or two
-// bytes are tried in full; wider ones (the 32-bit SDO abort codes) over every value whose low 8
-// bits and high 16 bits may be non-zero (CiA 301 codes are of the form 0xMMMM'00LL and
-// 0xMMMM'LLLL with small LL). When two values share a name the higher one keeps it (NMT 02h stop,
-// not the legacy 00h) and the lower one is written as a number.
-template <class E>
-const std::unordered_map<std::string_view, std::underlying_type_t<E>>& enum_names() {
-    using U = std::underlying_type_t<E>;
-    static const auto table = [] {
-        std::unordered_map<std::string_view, U> t;
-        auto add = [&t](U v) {
-            const auto n = powerkey::enum_name(static_cast<E>(v));
-            if (!n.empty()) t.emplace(n, v);  // scanning downwards: the first (highest) stays
-        };
-        if constexpr (sizeof(U) <= 2) {
-            for (std::uint32_t v = std::numeric_limits<U>::max() + 1u; v-- > 0;)
-                add(static_cast<U>(v));
-        } else {
-            for (std::uint32_t hi = 0x1000; hi-- > 0;)
-                for (std::uint32_t lo = 0x100; lo-- > 0;) add(static_cast<U>((hi << 16) | lo));
-        }
-        return t;
-    }();
-    return table;
-}
-
-// The names of an enum in value order, for error messages ("start, stop, ..."), at most 12.
+// The names of an enum in value order, for error messages ("start, stop, ..."), at most 12:
+// straight from its table (names.hpp), first names only.
 template <class E>
 std::string enum_name_list() {
-    std::vector<std::pair<std::uint64_t, std::string_view>> v;
-    for (const auto& [name, value] : enum_names<E>())
-        v.emplace_back(static_cast<std::uint64_t>(value), name);
-    std::sort(v.begin(), v.end());
     std::string s;
-    for (std::size_t i = 0; i < v.size() && i < 12; ++i)
-        s.append(i ? ", " : "").append(v[i].second);
-    if (v.size() > 12) s += ", ... (" + std::to_string(v.size()) + " names)";
+    std::size_t i = 0;
+    const auto values = powerkey::enum_values<E>();
+    for (const E v : values) {
+        if (i == 12) break;
+        s.append(i++ ? ", " : "").append(powerkey::to_string(v));
+    }
+    if (values.size() > 12) s += ", ... (" + std::to_string(values.size()) + " names)";
     return s;
-}
-
-template <class E>
-bool has_unique_name(E v) {
-    const auto n = powerkey::enum_name(v);
-    if (n.empty()) return false;
-    const auto& names = enum_names<E>();
-    const auto it = names.find(n);
-    return it != names.end() && it->second == static_cast<std::underlying_type_t<E>>(v);
 }
 
 // --- numbers ------------------------------------------------------------------------------------
@@ -110,24 +78,13 @@ inline bool parse_number(std::string_view s, std::uint64_t& out) {
     return true;
 }
 
-// Fields whose numbers the manuals write in hex: node ids, COB-IDs, J1939 addresses and PGNs.
-// `context` is the name of the object an SDO value belongs to (identity and mapping words).
-inline bool hex_field(std::string_view name, std::string_view context) {
-    constexpr std::string_view names[] = {"target",  "new_node_id", "new_node",    "node",
-                                          "node_id", "source",      "destination", "can_id",
-                                          "cob_id",  "pgn",         "index"};
-    for (auto n : names)
-        if (n == name) return true;
-    if (name.find("mapping") != std::string_view::npos ||
-        name.find("address") != std::string_view::npos)
-        return true;
-    if (name == "value") {
-        constexpr std::string_view words[] = {"vendor",   "product", "revision", "serial",
-                                              "identity", "mapping", "cob",      "node"};
-        for (auto w : words)
-            if (context.find(w) != std::string_view::npos) return true;
-    }
-    return false;
+// Fields whose numbers print in hex (with h): all but counts and times, the rule of describe()
+// (describe.hpp's decimal_fields and the _mv / _ms suffixes), so that errors quote ranges the way
+// decode's text prints values.
+inline bool hex_field(std::string_view name) {
+    for (const auto d : powerkey::detail::decimal_fields)
+        if (d == name) return false;
+    return !(name.ends_with("_mv") || name.ends_with("_ms"));
 }
 
 // --- text ---------------------------------------------------------------------------------------
@@ -140,49 +97,14 @@ constexpr std::uint64_t max_of() {
         return std::numeric_limits<T>::max();
 }
 
-// Appends the text form of a field value.
+// Appends the text form of a field value: describe()'s own (its put_value), so list, errors and
+// decode's text agree.
 template <class T>
-void write_text_value(std::string& out, std::string_view name, std::string_view context,
-                      const T& v) {
-    if constexpr (std::is_same_v<T, bool>) {
-        out += v ? "yes" : "no";
-    } else if constexpr (std::is_enum_v<T>) {
-        if (has_unique_name(v))
-            out += powerkey::enum_name(v);
-        else
-            append_hex_h(out, static_cast<std::uint64_t>(v), 2 * static_cast<int>(sizeof(T)));
-    } else if constexpr (powerkey::is_index_set<T>::value) {
-        if (v.empty()) out += '-';
-        bool first = true;
-        for (unsigned i = 1; i <= T::max; ++i) {
-            if (!v.contains(i)) continue;
-            unsigned last = i;  // three or more in a row print as a range, "1-28"
-            while (last < T::max && v.contains(last + 1)) ++last;
-            if (!first) out += ' ';
-            first = false;
-            append_decimal(out, i);
-            if (last >= i + 2) {
-                out += '-';
-                append_decimal(out, last);
-                i = last;
-            }
-        }
-    } else if constexpr (powerkey::is_byte_array<T>::value) {
-        for (std::size_t i = 0; i < v.size(); ++i) {
-            if (i != 0) out += ' ';
-            append_hex(out, v[i], 2);
-        }
-    } else {
-        std::uint64_t n = 0;
-        if constexpr (powerkey::is_bounded<T>::value)
-            n = v.value();
-        else
-            n = static_cast<std::uint64_t>(v);
-        if (hex_field(name, context))
-            append_hex_h(out, n, hex_digits(max_of<T>()));
-        else
-            append_decimal(out, n);
-    }
+void write_text_value(std::string& out, std::string_view name, const T& v) {
+    std::array<char, 160> buf{};
+    powerkey::text_writer w(buf);
+    powerkey::detail::put_value(w, name, v);
+    out += w.view();
 }
 
 // --- JSON writing -------------------------------------------------------------------------------
@@ -192,8 +114,8 @@ void write_json_value(json::object_writer& w, const T& v) {
     if constexpr (std::is_same_v<T, bool>) {
         w.boolean(v);
     } else if constexpr (std::is_enum_v<T>) {
-        if (has_unique_name(v))
-            w.string(powerkey::enum_name(v));
+        if (powerkey::is_named(v))
+            w.string(powerkey::to_string(v));
         else
             w.number(static_cast<std::uint64_t>(v));
     } else if constexpr (powerkey::is_index_set<T>::value) {
@@ -227,7 +149,7 @@ std::string range_of(std::string_view name) {
     if constexpr (powerkey::is_bounded<T>::value) lo = T::min;
     std::string s;
     auto put = [&](std::uint64_t v) {
-        if (hex_field(name, ""))
+        if (hex_field(name))
             append_hex_h(s, v, hex_digits(max_of<T>()));
         else
             append_decimal(s, v);
@@ -252,9 +174,7 @@ std::string set_from_text(T& v, std::string_view s, std::string_view name = "") 
         return shown + " is not yes or no (also true/false, on/off, 1/0)";
     } else if constexpr (std::is_enum_v<T>) {
         using U = std::underlying_type_t<T>;
-        const auto& names = enum_names<T>();
-        if (const auto it = names.find(s); it != names.end())
-            return v = static_cast<T>(it->second), "";
+        if (const auto named = powerkey::from_string<T>(s)) return v = *named, "";
         std::uint64_t n = 0;
         if (!parse_number(s, n)) return "unknown name " + shown + " (" + enum_name_list<T>() + ")";
         if (n > std::numeric_limits<U>::max())
