@@ -287,7 +287,7 @@ EOF
 diff "$tmp/want" "$tmp/err" > /dev/null || fail "repeated errors: $(cat "$tmp/err")"
 
 # docs/cli.md lists every default as encode fills it: the blocks are powerkey list's output.
-for m in pk1000 pkp2400; do
+for m in pk1000 pkp2400 pkp3500mt; do
   awk -v m="<!-- list $m -->" '$0 == m { on = 1; next } on && /^```$/ { if (started) exit; started = 1; next } on && started' \
     "$src/docs/cli.md" > "$tmp/doc_list"
   [ -s "$tmp/doc_list" ] || fail "docs/cli.md has no list block for $m"
