@@ -335,16 +335,14 @@ TEST_CASE("si: accessors over the SI frames") {
     // PKP3500-MT 29: the node change is answered from 19h.
     const auto move = on(model::pkp3500mt, "615#2F13200019000000");
     REQUIRE(move.has_value());
-    CHECK(node_id_change(*move) == canopen::node_id{0x19});
+    CHECK(node_id_change(*move) == canopen::node_id::make(0x19).value());
     CHECK(on(model::pkp3500mt, "599#6013200000000000", 0x19).has_value());
 }
 
-// include/ finding (see docs/si-family.md, "Backlight"): the PKP-2600-SI's backlight PDO colour
-// 00h is "default" (PKP2600SI manual 15: "00h: default", note: the colour of 2003h sub 04h), not
-// the PK1000's and PKP-3500-MT's "keep the stored colour". The virtual keypad applies the PK1000
-// rule to every model, so after a temporary red it stays red. Kept failing (may_fail) until the
-// integrator decides; remove the decorator when it passes.
-TEST_CASE("si: PKP-2600-SI backlight PDO colour 00h is the default colour" * doctest::may_fail()) {
+// PKP2600SI manual 15: the backlight PDO's colour 00h is "default" (the colour of 2003h sub 04h),
+// not the PK1000's and PKP-3500-MT's "keep the stored colour"
+// (model_info::backlight_zero_is_default).
+TEST_CASE("si: PKP-2600-SI backlight PDO colour 00h is the default colour") {
     behaviour::virtual_keypad<> k(model::pkp2600si);
     k.power_on(behaviour::millis{0});
     k.receive(frame_of("000#0115"), behaviour::millis{1});

@@ -522,7 +522,7 @@ TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-o
     k.receive(frame_of("215#0100000001000000"), millis{21});
     k.receive(frame_of("515#2003000000000000"), millis{22});
     CHECK(k.led_on().red.contains(1));
-    CHECK(k.backlight().level == powerkey::level{0x20});
+    CHECK(k.backlight().level == powerkey::level::make(0x20).value());
     // not monitored before the first heartbeat
     k.advance(millis{500});
     CHECK(k.state() == run_state::operational);
@@ -533,7 +533,7 @@ TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-o
     k.advance(millis{790});
     CHECK(k.state() == run_state::pre_operational);
     CHECK(k.led_on() == leds{});
-    CHECK(k.backlight().level == powerkey::level{0});
+    CHECK(k.backlight().level == powerkey::level::make(0).value());
     // the producer comes back: the keypad stays pre-operational until a new NMT start (NOTE 2)
     k.receive(frame_of("701#05"), millis{800});
     CHECK(k.state() == run_state::pre_operational);
@@ -606,7 +606,7 @@ TEST_CASE("SYNC: RPDOs of types 00h..F0h wait for the next SYNC, the TPDO every 
 
 TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command module") {
     auto k = booted(model::pk1000);
-    CHECK(k.brightness() == powerkey::level{0x3F});
+    CHECK(k.brightness() == powerkey::level::make(0x3F).value());
     CHECK(k.backlight() == behaviour::backlight_state{0, backlight_colour::amber});
     k.receive(frame_of("215#0500000000200000"), millis{1});
     CHECK(k.led_on() == leds{});  // pre-operational: PDOs ignored
@@ -614,7 +614,7 @@ TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command mo
     k.receive(frame_of("215#0500000000200000"), millis{3});
     CHECK(k.led_on() == leds{{1, 3}, {14}, {}});
     k.receive(frame_of("415#0800000000000000"), millis{4});
-    CHECK(k.brightness() == powerkey::level{8});
+    CHECK(k.brightness() == powerkey::level::make(8).value());
     k.receive(frame_of("515#2003000000000000"), millis{5});
     CHECK(k.backlight() == behaviour::backlight_state{0x20, backlight_colour::blue});
     k.receive(frame_of("515#1000000000000000"), millis{6});  // colour 0: keep
@@ -633,7 +633,7 @@ TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command mo
     CHECK(p.led_blink().green.contains(2));
     CHECK_FALSE(p.led_on().green.contains(2));
     CHECK(ask(p, "615#2300650102100000", {30}) == "595#6000650100000000");
-    CHECK(p.brightness() == powerkey::level{0x10});
+    CHECK(p.brightness() == powerkey::level::make(0x10).value());
     CHECK(ask(p, "615#23006501032F0000", {40}) == "595#6000650100000000");
     CHECK(ask(p, "615#2300650104010000", {50}) == "595#6000650100000000");
     CHECK(p.backlight() == behaviour::backlight_state{0x2F, backlight_colour::red});
@@ -680,7 +680,7 @@ TEST_CASE("one SDO at a time: a request while the keypad is answering is dropped
 TEST_CASE("node-id change: PK1000 answers from the new id, PKP from the old, then boots") {
     auto k = booted(model::pk1000);
     CHECK(ask(k, "615#2F1320003A000000") == "5BA#6013200000000000");
-    CHECK(k.node() == canopen::node_id{0x3A});
+    CHECK(k.node() == canopen::node_id::make(0x3A).value());
     CHECK(ask(k, "615#4013200000000000", {20}) == "nothing");
     CHECK(ask(k, "63A#4013200000000000", {30}) == "5BA#4F1320003A000000");
     k.power_cycle(millis{40});
@@ -690,7 +690,7 @@ TEST_CASE("node-id change: PK1000 answers from the new id, PKP from the old, the
     p.receive(frame_of("000#0115"), millis{5});
     p.receive(frame_of("615#2300650170180000"), millis{10});
     CHECK(run_until(p, millis{10}, millis{20}) == strings{"11 595#6000650100000000", "11 718#00"});
-    CHECK(p.node() == canopen::node_id{0x18});
+    CHECK(p.node() == canopen::node_id::make(0x18).value());
     CHECK(p.state() == run_state::pre_operational);
     CHECK(ask(p, "618#4017100000000000", {30}) == "598#4B17100000000000");
 }
@@ -805,7 +805,9 @@ TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every rea
             CAPTURE(r.id);
             can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),
                              static_cast<std::uint8_t>(r.address.index >> 8), r.address.subindex};
-            k.receive(can::frame(can::standard_id{0x615}, can::dlc{8}, req), t);
+            k.receive(
+                can::frame(can::standard_id::make(0x615).value(), can::dlc::make(8).value(), req),
+                t);
             t = t + duration_ms{2};
             k.advance(t);
             const auto reply = k.transmit();
@@ -841,7 +843,9 @@ TEST_CASE("every model: writing back what a read gives is acknowledged") {
             CAPTURE(r.id);
             can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),
                              static_cast<std::uint8_t>(r.address.index >> 8), r.address.subindex};
-            k.receive(can::frame(can::standard_id{0x615}, can::dlc{8}, req), t);
+            k.receive(
+                can::frame(can::standard_id::make(0x615).value(), can::dlc::make(8).value(), req),
+                t);
             k.advance(t + duration_ms{1});
             const auto reply = k.transmit();
             REQUIRE(reply);
@@ -849,7 +853,8 @@ TEST_CASE("every model: writing back what a read gives is acknowledged") {
             const unsigned n = 4u - (((*reply)[0] >> 2) & 3u);
             can::payload w = reply->bytes();
             w[0] = static_cast<std::uint8_t>(0x23 | ((4u - n) << 2));
-            const auto write = can::frame(can::standard_id{0x615}, can::dlc{8}, w);
+            const auto write =
+                can::frame(can::standard_id::make(0x615).value(), can::dlc::make(8).value(), w);
             CHECK_MESSAGE(decode(write, canopen::default_node_id, m).has_value(), text_of(write));
             k.receive(write, t + duration_ms{2});
             k.advance(t + duration_ms{3});
@@ -975,7 +980,7 @@ TEST_CASE("closed loop with faults: silence, lost frames, an abort, a node chang
             if (t == 3999) node_after = k.node();
         });
         CHECK(n.node_changed == 1);
-        CHECK(node_after == canopen::node_id{0x30});
+        CHECK(node_after == canopen::node_id::make(0x30).value());
         CHECK(n.timed_out == 0);
     }
 }

@@ -120,7 +120,7 @@ void register_protoinfo() {
         make_hf(&hf_error, "Error", "powerkey.error", FT_STRING, BASE_NONE, nullptr,
                 "Why the library refused a frame of the keypad (docs/errors.md)"),
         make_hf(&hf_function, "Function", "powerkey.function", FT_STRING, BASE_NONE, nullptr,
-                "nmt, sync, tpdo1, rpdo1..rpdo4, sdo_tx, sdo_rx, heartbeat, j1939"),
+                "nmt, sync, tpdo1..tpdo4, rpdo1..rpdo4, sdo_tx, sdo_rx, heartbeat, j1939"),
         make_hf(&hf_node, "Node", "powerkey.node", FT_UINT8, BASE_HEX_DEC, nullptr,
                 "The node of a per-node COB-ID, else the keypad's node id"),
         make_hf(&hf_model, "Model", "powerkey.model", FT_STRING, BASE_NONE, nullptr,

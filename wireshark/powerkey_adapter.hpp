@@ -3,21 +3,25 @@
 // that a change of the library's API is ported here and nowhere else.
 //
 // The library calls made here, for whoever ports the adapter to a new API:
-//   models      powerkey::model, all_models, to_string(model), parse_model("pk1000"),
-//               canopen::node_id::make, canopen::default_node_id
+//   models      powerkey::model, enum_values<model>(), to_string(model), parse_model("pk1000"),
+//               info(model).j1939, canopen::node_id::make, canopen::default_node_id
 //   catalog     for_each_alternative<powerkey::message> and each alternative's S::fields(s, f)
-//               (the kind/fields convention); field types through enum_name, is_index_set
-//               (index_set<N>::contains), is_byte_array, is_bounded (bounded::value), integers
+//               (the kind/fields convention), called again for every value of each named-enum
+//               field (the object of an SDO value, the code of a command: the fields that follow
+//               depend on it); field types through named_enum, enum_names<E>::entries,
+//               enum_values<E>(), is_index_set, is_byte_array, is_bounded, integers; how a value
+//               reads through describe's detail::put_value (and detail::put_number for which
+//               numbers are hex), text_writer
 //   session     session<text_capacity>(model, node), step(frame) -> session_event: cls
-//               (function, node), node, sdo (sdo_pairing::none, to_string), request (index,
-//               subindex), upload_done + session::text(), upload_error (errc{}, to_string),
-//               new_node, new_protocol (to_string(bus_protocol)); classify, concerns,
-//               bus_function::j1939/nmt, canopen::decode_nmt (target), j1939::parse_id (pgn)
-//   one frame   can::standard_id::make, can::extended_id::make, can::frame::make(id, bytes),
-//               decode(frame, node, model) -> result<message>, to_string(errc), kind_of,
-//               for_each_field, describe(msg, node, buf), to_string(bus_function),
-//               canopen::decode_sdo_request/decode_sdo_response (alternatives' address.index
-//               and address.subindex)
+//               (canopen::cob_info: fn, node), node, sdo (sdo_pairing::none, to_string), request
+//               (index, subindex), upload_done + session::text(), upload_error (errc{},
+//               to_string), new_node, new_protocol (to_string(bus_protocol));
+//               canopen::classify, canopen::concerns, canopen::function::j1939/nmt,
+//               canopen::decode_nmt (target), j1939::parse_id (pgn), j1939::proprietary_a_pgn
+//   one frame   can::make_frame(id, bytes, id_format), decode(frame, node, model) ->
+//               result<message>, to_string(errc), kind_of, for_each_field, describe(msg, node,
+//               buf), to_string(canopen::function), canopen::decode_sdo_request /
+//               decode_sdo_response (alternatives' address.index and address.subindex)
 #ifndef POWERKEY_WIRESHARK_ADAPTER_HPP
 #define POWERKEY_WIRESHARK_ADAPTER_HPP
 
@@ -27,7 +31,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -50,7 +54,7 @@ struct model_choice {
 
 inline std::vector<model_choice> model_choices() {
     std::vector<model_choice> out;
-    for (powerkey::model m : powerkey::all_models)
+    for (powerkey::model m : powerkey::enum_values<powerkey::model>())
         out.push_back({powerkey::to_string(m), static_cast<int>(m)});
     return out;
 }
@@ -58,7 +62,7 @@ inline std::vector<model_choice> model_choices() {
 inline int default_model() { return static_cast<int>(powerkey::parse_model("pk1000").value()); }
 
 inline std::optional<powerkey::model> model_of(int value) {
-    for (powerkey::model m : powerkey::all_models)
+    for (powerkey::model m : powerkey::enum_values<powerkey::model>())
         if (static_cast<int>(m) == value) return m;
     return std::nullopt;
 }
@@ -78,8 +82,8 @@ enum class field_type : std::uint8_t {
 struct field_spec {
     std::string name;
     field_type type = field_type::number;
-    bool hex = false;  // shown in hex (an object index)
-    // Enumerator names for a number field that always holds one enum type (one or two bytes).
+    bool hex = false;  // a number the library writes in hex (describe: 15h, 2003h)
+    // Enumerator names for a number field that always holds one enum type.
     std::vector<std::pair<std::uint32_t, std::string>> value_names;
 };
 
@@ -102,17 +106,23 @@ inline const void* enum_tag() {
     return &tag;
 }
 
-template <class E>
+// The names of an enum's values from its table: the first name of each value (later pairs of the
+// same value are aliases that from_string accepts).
+template <powerkey::named_enum E>
 std::vector<std::pair<std::uint32_t, std::string>> value_names_of() {
-    using U = std::underlying_type_t<E>;
     std::vector<std::pair<std::uint32_t, std::string>> out;
-    if constexpr (sizeof(U) <= 2 && std::is_unsigned_v<U>) {
-        for (std::uint32_t v = 0; v <= std::numeric_limits<U>::max(); ++v) {
-            const auto n = powerkey::enum_name(static_cast<E>(static_cast<U>(v)));
-            if (!n.empty()) out.emplace_back(v, std::string(n));
-        }
-    }
-    return out;  // wider enums (SDO abort codes) are shown by name, not listed
+    for (const E e : powerkey::enum_values<E>())
+        out.emplace_back(static_cast<std::uint32_t>(e), std::string(powerkey::to_string(e)));
+    return out;
+}
+
+// Whether the library writes numbers of this field name in hex ("15h") or in decimal (counts
+// and times): describe's own rule, asked with the number 10.
+inline bool hex_number(std::string_view name) {
+    std::array<char, 16> buf{};
+    powerkey::text_writer w(buf);
+    powerkey::detail::put_number(w, name, 10, 1);
+    return w.view().ends_with('h');
 }
 
 template <class T>
@@ -120,6 +130,7 @@ void note_field(seen_field& s, std::string_view name) {
     if constexpr (std::is_same_v<T, bool>) {
         s.any_bool = true;
     } else if constexpr (std::is_enum_v<T>) {
+        static_assert(powerkey::named_enum<T>, "an enum field without a name table");
         if (s.any_enum && s.enum_tag != enum_tag<T>()) s.several_enums = true;
         if (!s.any_enum) s.value_names = value_names_of<T>();
         s.any_enum = true;
@@ -130,29 +141,56 @@ void note_field(seen_field& s, std::string_view name) {
         s.any_bytes = true;
     } else if constexpr (powerkey::is_bounded<T>::value || std::is_integral_v<T>) {
         s.any_number = true;
-        if (name == "index") s.hex = true;
+        s.hex = hex_number(name);
     } else {
         static_assert(std::is_integral_v<T>, "a field type the plugin does not know");
     }
 }
 
+// Sets the field `name` of s, when it holds an E, through the fields convention.
+template <class S, class E>
+void set_field(S& s, std::string_view name, E value) {
+    S::fields(s, [name, value](std::string_view n, auto& v) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, E>)
+            if (n == name) v = value;
+    });
+}
+
 }  // namespace detail
 
-// Every field name of every message of every model, in the order first seen.
+// Every field name of every message of every model, in the order first seen. Which fields an
+// SDO value or a command carries depends on a named enum of the message (its object, its command
+// code): each message is asked again with every value of each of its enum fields.
 inline std::vector<field_spec> message_fields() {
     std::vector<detail::seen_field> seen;
-    powerkey::for_each_alternative<powerkey::message>([&seen]<class S>(std::type_identity<S>) {
-        S s{};
-        S::fields(s, [&seen](std::string_view name, const auto& value) {
-            auto it = std::find_if(seen.begin(), seen.end(),
-                                   [name](const auto& f) { return f.name == name; });
-            if (it == seen.end()) {
-                seen.push_back({});
-                it = seen.end() - 1;
-                it->name = std::string(name);
+    auto note = [&seen](std::string_view name, const auto& value) {
+        auto it = std::find_if(seen.begin(), seen.end(),
+                               [name](const auto& f) { return f.name == name; });
+        if (it == seen.end()) {
+            seen.push_back({});
+            it = seen.end() - 1;
+            it->name = std::string(name);
+        }
+        detail::note_field<std::decay_t<decltype(value)>>(*it, name);
+    };
+    powerkey::for_each_alternative<powerkey::message>([&note]<class S>(std::type_identity<S>) {
+        const S s{};
+        S::fields(s, note);
+        // The enum fields of the default message, then the message with each of their values.
+        std::vector<std::function<void()>> variations;
+        S::fields(s, [&variations, &note](std::string_view name, const auto& value) {
+            using T = std::decay_t<decltype(value)>;
+            if constexpr (powerkey::named_enum<T>) {
+                variations.emplace_back([name, &note] {
+                    for (const T v : powerkey::enum_values<T>()) {
+                        S t{};
+                        detail::set_field(t, name, v);
+                        S::fields(std::as_const(t), note);
+                    }
+                });
             }
-            detail::note_field<std::decay_t<decltype(value)>>(*it, name);
         });
+        for (const auto& vary : variations) vary();
         return false;
     });
     std::vector<field_spec> out;
@@ -194,7 +232,7 @@ struct frame_record {
     std::string_view sdo;           // "request", "reply", "unanswered", or empty
     std::uint16_t reply_index = 0;  // the request a reply answers (sdo == "reply")
     std::uint8_t reply_subindex = 0;
-    bool upload_done = false;       // a segmented upload ended: text
+    bool upload_done = false;       // a string upload ended: text
     std::string_view upload_error;  // a segmented upload failed: the error code
     std::uint8_t new_node = 0;      // the keypad moved to this node id, 0 when it did not
     std::string_view new_protocol;  // "j1939" or "canopen" on a protocol switch
@@ -208,36 +246,28 @@ namespace detail {
 
 inline std::optional<powerkey::can::frame> to_frame(const frame_in& in) {
     using namespace powerkey;
-    if (in.extended) {
-        const auto id = can::extended_id::make(in.id);
-        if (!id) return std::nullopt;
-        const auto f = can::frame::make(*id, in.data);
-        if (!f) return std::nullopt;
-        return *f;
-    }
-    const auto id = can::standard_id::make(in.id);
-    if (!id) return std::nullopt;
-    const auto f = can::frame::make(*id, in.data);
+    const auto f = can::make_frame(
+        in.id, in.data, in.extended ? can::id_format::extended : can::id_format::standard);
     if (!f) return std::nullopt;
     return *f;
 }
 
-// The PGN of the keypad's J1939 switch frame (PK1000 section 49): proprietary A, EF00h.
-inline constexpr std::uint32_t proprietary_a_pgn = 0xEF00;
-
-inline bool is_keypads(const powerkey::can::frame& f, const powerkey::session_event& e) {
+inline bool is_keypads(const powerkey::can::frame& f, const powerkey::session_event& e,
+                       powerkey::model m) {
     using namespace powerkey;
-    switch (e.cls.function) {
-        case bus_function::j1939: {
+    switch (e.cls.fn) {
+        case canopen::function::j1939: {
+            // The switch back to CANopen (PK1000 section 49), on a keypad that speaks J1939.
             const auto id = j1939::parse_id(f);
-            return id && id->pgn.value() == proprietary_a_pgn;
+            const auto row = info(m);
+            return row && row->j1939 && id && id->pgn == j1939::proprietary_a_pgn;
         }
-        case bus_function::nmt: {
+        case canopen::function::nmt: {
             // NMT to all nodes or to the keypad; a command for another node stays generic.
-            const auto m = canopen::decode_nmt(f);
-            return !m || m->target.value() == 0 || m->target.value() == e.node.value();
+            const auto msg = canopen::decode_nmt(f);
+            return !msg || msg->target.value() == 0 || msg->target.value() == e.node.value();
         }
-        default: return concerns(e.cls, e.node);
+        default: return canopen::concerns(e.cls, e.node);
     }
 }
 
@@ -257,7 +287,7 @@ public:
         const auto f = detail::to_frame(in);
         if (!f) return r;
         const auto e = session_.step(*f);
-        r.claimed = detail::is_keypads(*f, e);
+        r.claimed = detail::is_keypads(*f, e, session_.model());
         r.model = static_cast<int>(session_.model());
         r.node = e.node.value();
         if (e.sdo != powerkey::sdo_pairing::none) r.sdo = powerkey::to_string(e.sdo);
@@ -306,60 +336,32 @@ struct frame_view {
 
 namespace detail {
 
-inline std::string hex(std::uint64_t v, int digits) {
-    static constexpr char d[] = "0123456789ABCDEF";
-    std::string s;
-    for (int i = digits - 1; i >= 0; --i) s += d[(v >> (4 * i)) & 0xF];
-    return s;
-}
-
-template <std::size_t N>
-std::string set_text(const powerkey::index_set<N>& v) {
-    // As describe() writes sets: numbers, three or more in a row as a range, "-" for none.
-    std::string s;
-    for (unsigned i = 1; i <= N; ++i) {
-        if (!v.contains(i)) continue;
-        unsigned last = i;
-        while (last < N && v.contains(last + 1)) ++last;
-        if (!s.empty()) s += ' ';
-        s += std::to_string(i);
-        if (last >= i + 2) {
-            s += '-' + std::to_string(last);
-            i = last;
-        }
-    }
-    return s.empty() ? "-" : s;
+// A value as describe() writes it after "name: ".
+template <class T>
+std::string described(std::string_view name, const T& v) {
+    std::array<char, 128> buf{};
+    powerkey::text_writer w(buf);
+    powerkey::detail::put_value(w, name, v);
+    return std::string(w.view());
 }
 
 template <class T>
-void fill(field_out& out, const field_spec& spec, std::string_view name, const T& v) {
+void fill(field_out& out, std::string_view name, const T& v) {
+    out.shown = described(name, v);
+    out.text = out.shown;
     if constexpr (std::is_same_v<T, bool>) {
         out.flag = v;
         out.number = v ? 1u : 0u;
-        out.text = v ? "yes" : "no";
-        out.shown = out.text;
     } else if constexpr (std::is_enum_v<T>) {
-        using U = std::underlying_type_t<T>;
-        out.number = static_cast<std::uint64_t>(static_cast<U>(v));
-        const auto n = powerkey::enum_name(v);
-        out.text = n.empty() ? hex(out.number, 2 * int{sizeof(U)}) + "h" : std::string(n);
-        out.shown = out.text;
-        if (spec.type == field_type::number && !n.empty())
-            out.shown += " (" + hex(out.number, 2 * int{sizeof(U)}) + "h)";
-    } else if constexpr (powerkey::is_index_set<T>::value) {
-        out.text = set_text(v);
-        out.shown = out.text;
+        // Shown by name only: the number of an enumerator (an object, a command) is the library's
+        // own, not a wire value; filters take the name (the field's value names) or the number.
+        out.number = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<T>>(v));
     } else if constexpr (powerkey::is_byte_array<T>::value) {
         out.bytes.assign(v.begin(), v.end());
-        for (auto b : v) out.text += (out.text.empty() ? "" : " ") + hex(b, 2);
-        out.shown = out.text;
-    } else {
-        if constexpr (powerkey::is_bounded<T>::value)
-            out.number = static_cast<std::uint64_t>(v.value());
-        else
-            out.number = static_cast<std::uint64_t>(v);
-        out.text = name == "index" ? hex(out.number, 4) + "h" : std::to_string(out.number);
-        out.shown = out.text;
+    } else if constexpr (powerkey::is_bounded<T>::value) {
+        out.number = static_cast<std::uint64_t>(v.value());
+    } else if constexpr (std::is_integral_v<T>) {
+        out.number = static_cast<std::uint64_t>(v);
     }
 }
 
@@ -390,8 +392,8 @@ inline frame_view view(const frame_in& in, const frame_record& r,
         out.error = to_string(errc::wrong_length);
         return out;
     }
-    const auto cls = classify(*f);
-    out.function = std::string(to_string(cls.function));
+    const auto cls = canopen::classify(*f);
+    out.function = std::string(to_string(cls.fn));
     out.node = cls.node != 0 ? cls.node : r.node;
     const auto m = model_of(r.model).value_or(model::pk1000);
     const auto msg = decode(*f, *node, m);
@@ -410,17 +412,17 @@ inline frame_view view(const frame_in& in, const frame_record& r,
             if (it == catalog.end()) return;
             field_out fo;
             fo.spec = static_cast<std::size_t>(it - catalog.begin());
-            detail::fill(fo, *it, name, v);
+            detail::fill(fo, name, v);
             out.fields.push_back(std::move(fo));
         });
     }
     if (const auto n = canopen::node_id::make(cls.node)) {
-        if (cls.function == bus_function::sdo_rx)
+        if (cls.fn == canopen::function::sdo_rx)
             detail::sdo_address_of(canopen::decode_sdo_request(*f, *n), out);
-        else if (cls.function == bus_function::sdo_tx)
+        else if (cls.fn == canopen::function::sdo_tx)
             detail::sdo_address_of(canopen::decode_sdo_response(*f, *n), out);
     }
-    if (cls.function == bus_function::j1939)
+    if (cls.fn == canopen::function::j1939)
         if (const auto id = j1939::parse_id(*f)) out.pgn = id->pgn.value();
     return out;
 }

@@ -597,7 +597,11 @@ private:
         if (const auto* b = std::get_if<powerkey::led_brightness>(&m)) brightness_ = b->level;
         if (const auto* b = std::get_if<powerkey::backlight>(&m)) {
             backlight_.level = b->level;
-            if (b->colour != backlight_colour::keep) backlight_.colour = b->colour;  // PK1000 15
+            if (b->colour != backlight_colour::keep)
+                backlight_.colour = b->colour;         // PK1000 15: 00h keeps the colour
+            else if (info_.backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
+                backlight_.colour =
+                    static_cast<backlight_colour>(value(object::default_backlight_colour));
         }
     }
     // An LED PDO sets every plane the model has.

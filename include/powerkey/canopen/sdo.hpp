@@ -47,10 +47,7 @@ struct expedited_data {
 
     // The value of the `size` counted bytes, little endian (CiA 301: "least significant first").
     [[nodiscard]] constexpr std::uint32_t value() const noexcept {
-        std::uint32_t v = 0;
-        for (int i = size.value() - 1; i >= 0; --i)
-            v = (v << 8) | bytes[static_cast<std::size_t>(i)];
-        return v;
+        return static_cast<std::uint32_t>(powerkey::detail::load_le(bytes, 0, size.value()));
     }
     // The counted bytes.
     [[nodiscard]] constexpr std::span<const std::uint8_t> data() const noexcept {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace powerkey::detail {
 
@@ -42,7 +43,22 @@ requires(N >= 1 && N <= 8) constexpr std::uint64_t
 template <std::size_t N, class Bytes>
 requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at,
                                                    std::uint64_t v) noexcept {
-    for (std::size_t i = 0; i < N; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
+    // Straight-line stores (a fold, not a loop): g++ -O2 merges them into one store; it left the
+    // loop byte by byte, ~60 instructions of every encoder and of can::frame's constructor.
+    // On a 32-bit core in 32-bit halves, so that it shifts registers, not a 64-bit value.
+    if constexpr (sizeof(std::size_t) >= 8) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((b[at + I] = static_cast<std::uint8_t>(v >> (8 * I))), ...);
+        }
+        (std::make_index_sequence<N>{});
+    } else {
+        const auto lo = static_cast<std::uint32_t>(v);
+        const auto hi = static_cast<std::uint32_t>(v >> 32);
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((b[at + I] = static_cast<std::uint8_t>((I < 4 ? lo : hi) >> (8 * (I % 4)))), ...);
+        }
+        (std::make_index_sequence<N>{});
+    }
 }
 
 template <class Bytes>
@@ -50,12 +66,13 @@ constexpr void store_le(Bytes& b, std::size_t at, std::size_t width, std::uint64
     for (std::size_t i = 0; i < width; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
-// True when bytes [from, to) are all zero.
+// True when bytes [from, to) are all zero (to <= 8): one load of bytes [0, to) and a shift, not
+// a byte loop (the loop was ~10 instructions of every SDO decode, docs/performance.md). Reads
+// only bytes below `to`, as the loop did.
 template <class Bytes>
 constexpr bool all_zero(const Bytes& b, std::size_t from, std::size_t to) noexcept {
-    for (std::size_t i = from; i < to; ++i)
-        if (b[i] != 0) return false;
-    return true;
+    if (from >= to) return true;
+    return (load_le(b, 0, to) >> (8 * from)) == 0;
 }
 
 }  // namespace powerkey::detail

@@ -55,6 +55,9 @@ struct model_info {
     // After a node-id change the keypad answers from the new id (PK1000 section 23) or from the
     // old one, then boots up with the new one (PKP section 13 h).
     bool replies_from_new_id;
+    // Colour 00h in the backlight PDO returns to the default colour (2003h sub 4) rather than
+    // keeping the current one: PKP2600SI manual section 15 (PK1000 15 and PKP3500-MT 18: keep).
+    bool backlight_zero_is_default = false;
 
     // Colour planes an LED object of 4 bytes (PKP 6001h/6002h) carries: those that fit 32 bits.
     [[nodiscard]] constexpr unsigned object_planes() const noexcept {
@@ -80,7 +83,7 @@ inline constexpr model_info model_table[] = {
     {model::pkp2600, dict::pkp_li, 12, 12, 3, 12, 0xFFF, false, false, false, false, false, false,
      false},
     {model::pkp2600si, dict::si_packed, 12, 12, 3, 12, 0xFFF, true, false, true, true, false, true,
-     true},
+     true, true},
     {model::pkp3500mt, dict::si_mt, 15, 15, 3, 16, 0x7BFE, false, true, true, true, true, true,
      true},
     {model::pkp3500si, dict::si_per_colour, 15, 15, 3, 16, 0x7FFF, true, false, true, false, false,

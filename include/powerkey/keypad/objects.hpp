@@ -765,28 +765,48 @@ inline constexpr object_row si_per_colour_rows[] = {
 template <std::size_t N>
 inline constexpr unsigned slot_bits = N > 64 ? 9 : 8;
 
+// The hash table of a dictionary's addresses, and apart from it the row of each object: a decoder
+// needs only the first, so a firmware that never encodes drops the second (--gc-sections).
 template <std::size_t N>
-struct dictionary_index {
-    address_table<N, slot_bits<N>> by_address;
-    std::array<std::uint8_t, object_count> by_object{};  // row + 1, 0: the object is not there
-};
-
-template <std::size_t N>
-constexpr dictionary_index<N> index_of(const object_row (&rows)[N]) noexcept {
+constexpr auto address_index_of(const object_row (&rows)[N]) noexcept {
     std::array<std::uint32_t, N> keys{};
     for (std::size_t i = 0; i < N; ++i)
         keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
-    dictionary_index<N> out{address_table<N, slot_bits<N>>(keys), {}};
-    for (std::size_t i = 0; i < N; ++i)
-        out.by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
-    return out;
+    return address_table<N, slot_bits<N>>(keys);
 }
+template <std::size_t N>
+constexpr auto object_index_of(const object_row (&rows)[N]) noexcept {
+    std::array<std::uint8_t, object_count> by_object{};  // row + 1, 0: the object is not there
+    for (std::size_t i = 0; i < N; ++i)
+        by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
+    return by_object;
+}
+template <std::size_t N>
+struct dictionary_index {
+    const address_table<N, slot_bits<N>>& by_address;
+    const std::array<std::uint8_t, object_count>& by_object;
+};
 
-inline constexpr auto pk1000_index = index_of(pk1000_rows);
-inline constexpr auto pkp_li_index = index_of(pkp_li_rows);
-inline constexpr auto si_packed_index = index_of(si_packed_rows);
-inline constexpr auto si_mt_index = index_of(si_mt_rows);
-inline constexpr auto si_per_colour_index = index_of(si_per_colour_rows);
+inline constexpr auto pk1000_by_address = address_index_of(pk1000_rows);
+inline constexpr auto pkp_li_by_address = address_index_of(pkp_li_rows);
+inline constexpr auto si_packed_by_address = address_index_of(si_packed_rows);
+inline constexpr auto si_mt_by_address = address_index_of(si_mt_rows);
+inline constexpr auto si_per_colour_by_address = address_index_of(si_per_colour_rows);
+inline constexpr auto pk1000_by_object = object_index_of(pk1000_rows);
+inline constexpr auto pkp_li_by_object = object_index_of(pkp_li_rows);
+inline constexpr auto si_packed_by_object = object_index_of(si_packed_rows);
+inline constexpr auto si_mt_by_object = object_index_of(si_mt_rows);
+inline constexpr auto si_per_colour_by_object = object_index_of(si_per_colour_rows);
+inline constexpr dictionary_index<std::size(pk1000_rows)> pk1000_index{pk1000_by_address,
+                                                                       pk1000_by_object};
+inline constexpr dictionary_index<std::size(pkp_li_rows)> pkp_li_index{pkp_li_by_address,
+                                                                       pkp_li_by_object};
+inline constexpr dictionary_index<std::size(si_packed_rows)> si_packed_index{si_packed_by_address,
+                                                                             si_packed_by_object};
+inline constexpr dictionary_index<std::size(si_mt_rows)> si_mt_index{si_mt_by_address,
+                                                                     si_mt_by_object};
+inline constexpr dictionary_index<std::size(si_per_colour_rows)> si_per_colour_index{
+    si_per_colour_by_address, si_per_colour_by_object};
 static_assert(pk1000_index.by_address.max_probes() <= 2);
 static_assert(pkp_li_index.by_address.max_probes() <= 2);
 static_assert(si_packed_index.by_address.max_probes() <= 2);

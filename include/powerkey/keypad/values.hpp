@@ -26,7 +26,9 @@ using level = bounded<level_tag, std::uint8_t, 0, 0x3F>;
 
 // Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k). The PK1000 manual's names
 // "white/light blue" and "amber/orange" are aliases of white and amber. `keep` (00h) exists only
-// in the backlight PDO, where it keeps the stored colour (PK1000 section 15, note 2).
+// in the backlight PDO, where it keeps the stored colour (PK1000 section 15, note 2; PKP3500-MT
+// 18) or, on the PKP-2600-SI, returns to the default colour
+// (model_info::backlight_zero_is_default).
 enum class backlight_colour : std::uint8_t {
     keep = 0x00,
     red = 0x01,
