@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace tool {
@@ -109,17 +110,30 @@ inline void append_title(std::string& out, std::string_view kind) {
     }
 }
 
+// The title of a kind, made once: kinds are the library's constants, so their address is a key.
+inline const std::string& title_of(std::string_view kind) {
+    static std::unordered_map<const char*, std::string> titles;
+    auto [it, added] = titles.try_emplace(kind.data());
+    if (added) append_title(it->second, kind);
+    return it->second;
+}
+
 // "LED on  red: 17  green: 28": the title, then every field as `name: value` in the form encode
 // takes back.
 template <class M>
 void append_message_text(std::string& out, const M& m) {
-    append_title(out, powerkey::kind_of(m));
+    out += title_of(powerkey::kind_of(m));
     std::string_view context;
     powerkey::for_each_field(m, [&](std::string_view name, const auto& v) {
         using T = std::decay_t<decltype(v)>;
-        out += "  ";
-        out += name;
-        out += ": ";
+        char b[72];  // "  name: " in one append
+        std::size_t k = 0;
+        b[k++] = ' ';
+        b[k++] = ' ';
+        for (std::size_t i = 0; i < name.size() && i < 64; ++i) b[k++] = name[i];
+        b[k++] = ':';
+        b[k++] = ' ';
+        out.append(b, k);
         write_text_value(out, name, context, v);
         if constexpr (std::is_enum_v<T>) context = powerkey::enum_name(v);
     });

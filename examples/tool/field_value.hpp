@@ -70,13 +70,35 @@ std::string enum_name_list() {
     return s;
 }
 
+// True when v has a name that means v (not NMT's legacy stop 00h, whose name 02h has taken).
+// Asked once per enumerator a line prints: one-byte and two-byte enums answer from a table made
+// once, wider ones (SDO abort codes) from a cache of the codes seen.
 template <class E>
 bool has_unique_name(E v) {
-    const auto n = powerkey::enum_name(v);
-    if (n.empty()) return false;
-    const auto& names = enum_names<E>();
-    const auto it = names.find(n);
-    return it != names.end() && it->second == static_cast<std::underlying_type_t<E>>(v);
+    using U = std::underlying_type_t<E>;
+    auto compute = [](E x) {
+        const auto n = powerkey::enum_name(x);
+        if (n.empty()) return false;
+        const auto& names = enum_names<E>();
+        const auto it = names.find(n);
+        return it != names.end() && it->second == static_cast<U>(x);
+    };
+    if constexpr (sizeof(U) <= 2) {
+        static const auto table = [&compute] {
+            std::vector<bool> t(std::size_t{std::numeric_limits<U>::max()} + 1);
+            for (std::size_t x = 0; x < t.size(); ++x) t[x] = compute(static_cast<E>(x));
+            return t;
+        }();
+        return table[static_cast<std::size_t>(v)];
+    } else {
+        // A log holds a handful of distinct codes: a short list beats hashing.
+        static std::vector<std::pair<U, bool>> seen;
+        for (const auto& [code, unique] : seen)
+            if (code == static_cast<U>(v)) return unique;
+        const bool unique = compute(v);
+        if (seen.size() < 256) seen.emplace_back(static_cast<U>(v), unique);
+        return unique;
+    }
 }
 
 // --- numbers ------------------------------------------------------------------------------------
