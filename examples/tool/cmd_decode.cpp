@@ -23,15 +23,10 @@
 namespace tool {
 namespace {
 using namespace powerkey;
+using namespace std::string_view_literals;
 
 // --- the frame's own part of a line
 // ---------------------------------------------------------------
-
-void append_frame(std::string& out, const can::frame& f) {
-    append_hex(out, f.raw_id(), f.is_extended() ? 8 : 3);
-    out += '#';
-    for (auto b : f.data()) append_hex(out, b, 2);
-}
 
 void append_untrusted(std::string& out, std::string_view s, std::size_t max) {
     if (s.size() <= max && plain(s))
@@ -129,7 +124,7 @@ public:
         std::string& out = out_.buffer();
         const bool picture = o_.show && e.decoded && picture_.update(*e.decoded);
         if (o_.show && tty_ && shown_)
-            out += "\x1b[1A\r\x1b[2K";  // the picture stays at the bottom
+            out += "\x1b[1A\r\x1b[2K"sv;  // the picture stays at the bottom
         if (o_.json && o_.nlohmann_writer)
             nlohmann_line(out, r, e, pkp_j1939);
         else if (o_.json)
@@ -151,72 +146,106 @@ public:
 private:
     void text_line(std::string& out, const logs::record& r, const session_event& e, bool foreign,
                    bool pkp_j1939) {
-        if (!r.time.empty()) {
-            out += '(';
-            append_untrusted(out, r.time, 32);
-            out += ") ";
-        }
-        if (!r.interface.empty()) {
-            append_untrusted(out, r.interface, 16);
-            out += ' ';
-        }
-        const auto frame_start = out.size();
-        append_frame(out, r.frame);
-        const auto width = out.size() - frame_start;
-        out.append(width < 25 ? 25 - width : 0, ' ');
-        out += "  ";
         const auto n = node_of(e);
+        // The common head, "(time) can0 215#0000010000000008       node 15h  ", in one append
+        // (the appends are what the text output costs); escaped text takes the slow path.
+        char head[128];
+        std::size_t k = 0;
+        auto put = [&](std::string_view t) {
+            for (char c : t) head[k++] = c;
+        };
+        const bool fast =
+            r.time.size() <= 32 && r.interface.size() <= 16 && plain(r.time) && plain(r.interface);
+        if (fast) {
+            if (!r.time.empty()) {
+                head[k++] = '(';
+                put(r.time);
+                put(") ");
+            }
+            if (!r.interface.empty()) {
+                put(r.interface);
+                head[k++] = ' ';
+            }
+        } else {
+            if (!r.time.empty()) {
+                out += '(';
+                append_untrusted(out, r.time, 32);
+                out += ") "sv;
+            }
+            if (!r.interface.empty()) {
+                append_untrusted(out, r.interface, 16);
+                out += ' ';
+            }
+        }
+        const auto frame_start = k;
+        const int id_digits = r.frame.is_extended() ? 8 : 3;
+        for (int i = id_digits - 1; i >= 0; --i)
+            head[k++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
+        head[k++] = '#';
+        for (auto b : r.frame.data()) {
+            head[k++] = upper_hex[b >> 4];
+            head[k++] = upper_hex[b & 15];
+        }
+        while (k - frame_start < 25) head[k++] = ' ';
+        put("  ");
         if (e.decoded) {
+            out.append(head, k);
+            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part
             append_message_text(out, *e.decoded, canopen::node_id::make(n).value_or(e.node));
+        } else {
+            out.append(head, k);
+        }
+        if (e.decoded) {
+            // the message is written above
         } else if (pkp_j1939) {
-            out += "j1939  not a frame of a ";
+            out += "j1939  not a frame of a "sv;
             out += to_string(session_.model());
-            out += " (it has no J1939)";
+            out += " (it has no J1939)"sv;
         } else if (foreign && e.cls.fn == canopen::function::other) {
-            out += "unknown frame: no keypad uses COB-ID ";
+            out += "unknown frame: no keypad uses COB-ID "sv;
             append_hex_h(out, r.frame.raw_id(), 3);
         } else if (foreign) {
-            out += "node ";
+            out += "node "sv;
             append_hex_h(out, n, 2);
-            out += "  ";
+            out += "  "sv;
             out += to_string(e.cls.fn);
-            out += "  another node's frame (keypad is ";
+            out += "  another node's frame (keypad is "sv;
             append_hex_h(out, e.node.value(), 2);
             out += ')';
         } else {
-            out += "node ";
+            out += "node "sv;
             append_hex_h(out, n, 2);
-            out += "  ";
+            out += "  "sv;
             out += to_string(e.cls.fn);
-            out += "  error: ";
+            out += "  error: "sv;
             out += to_string(e.decoded.error());
         }
         if (e.sdo == sdo_pairing::reply) {
-            out += "  [reply to ";
+            out += "  [reply to "sv;
             append_hex_h(out, e.request.index, 4);
-            out += " sub ";
+            out += " sub "sv;
             append_decimal(out, e.request.subindex);
             out += ']';
         } else if (e.sdo == sdo_pairing::unanswered) {
-            out += "  [reply to no request]";
+            out += "  [reply to no request]"sv;
         }
         if (e.upload_done) {
-            out += "  [text: \"";
+            out += "  [text: \""sv;
             append_escaped(out, session_.text(), 64);
-            out += "\"]";
+            out += "\"]"sv;
         }
         if (e.upload_error != errc{}) {
-            out += "  [upload failed: ";
+            out += "  [upload failed: "sv;
             out += to_string(e.upload_error);
             out += ']';
         }
         if (e.new_node) {
-            out += "  [node id now ";
+            out += "  [node id now "sv;
             append_hex_h(out, e.new_node->value(), 2);
             out += ']';
         }
         if (e.new_protocol && e.decoded) {
-            out += "  [protocol now ";
+            out += "  [protocol now "sv;
             out += to_string(*e.new_protocol);
             out += ']';
         }
@@ -234,7 +263,7 @@ private:
         w.field_bool("ext", r.frame.is_extended());
         w.key("data");
         out += '"';
-        for (auto b : r.frame.data()) append_hex(out, b, 2);
+        append_hex_bytes(out, r.frame.data().data(), r.frame.data().size());
         out += '"';
         w.field("function", to_string(e.cls.fn));
         w.field("node", node_of(e));

@@ -97,7 +97,7 @@ private:
 // field in the form encode takes back.
 inline void append_message_text(std::string& out, const powerkey::message& m,
                                 powerkey::canopen::node_id node) {
-    std::array<char, 512> buf{};
+    std::array<char, 256> buf;  // describe() writes what it returns; 160 hold every message
     const auto text = powerkey::describe(m, node, buf);
     if (text)
         out += *text;

@@ -47,14 +47,32 @@ inline bool plain(std::string_view s) {
     return true;
 }
 
+// One append per number: appending digit by digit costs more than the rest of a line.
 inline void append_hex(std::string& out, std::uint64_t v, int digits) {
-    for (int i = digits - 1; i >= 0; --i) out += upper_hex[(v >> (4 * i)) & 15];
+    char b[17];
+    const int n = digits > 16 ? 16 : digits;
+    for (int i = 0; i < n; ++i) b[i] = upper_hex[(v >> (4 * (n - 1 - i))) & 15];
+    out.append(b, static_cast<std::size_t>(n));
 }
 
 // A node id, COB-ID, address ...: fixed digits and an h, as the manuals write them ("3Ah").
 inline void append_hex_h(std::string& out, std::uint64_t v, int digits) {
-    append_hex(out, v, digits);
-    out += 'h';
+    char b[18];
+    const int n = digits > 16 ? 16 : digits;
+    for (int i = 0; i < n; ++i) b[i] = upper_hex[(v >> (4 * (n - 1 - i))) & 15];
+    b[n] = 'h';
+    out.append(b, static_cast<std::size_t>(n) + 1);
+}
+
+// Bytes as hex digits, "0102AB", in one append.
+inline void append_hex_bytes(std::string& out, const std::uint8_t* data, std::size_t n) {
+    char b[128];
+    if (n > 64) n = 64;
+    for (std::size_t i = 0; i < n; ++i) {
+        b[2 * i] = upper_hex[data[i] >> 4];
+        b[2 * i + 1] = upper_hex[data[i] & 15];
+    }
+    out.append(b, 2 * n);
 }
 
 inline void append_decimal(std::string& out, std::uint64_t v) {
