@@ -119,6 +119,24 @@ check_encode 000#8100 --node 0x3A --broadcast nmt command=reset_node
 check_encode 000#8100 --node 0x3A nmt command=reset_node target=0
 check_encode 000#0115 nmt command=start
 
+# --show draws every model as the model table says: the PKP-3500-MT's 15 keys in three rows, keys 1
+# and 11 without an LED, its two encoder rings (encoder_leds).
+printf '%s\n' '195#0100000010' '415#0300000000000000' '215#0050000000000000' > "$tmp/show.log"
+"$pk" decode --model pkp3500mt --show "$tmp/show.log" > "$tmp/out" || fail "--show pkp3500mt exit status"
+grep -qxF '    [ 1* ][ 2 .][ 3 .][ 4 .][ 5 .]' "$tmp/out" || fail "--show pkp3500mt: key 1 (no LED): $(cat "$tmp/out")"
+grep -qxF '    ring 1 **..............  ring 2 ................' "$tmp/out" || fail "--show pkp3500mt: rings: $(cat "$tmp/out")"
+grep -qxF '    [11  ][12 .][13 R][14 .][15 R]' "$tmp/out" || fail "--show pkp3500mt: LEDs 13 15 red: $(cat "$tmp/out")"
+printf '%s\n' '215#0001000000000000' > "$tmp/show.log"  # stride 8: LED 1 green
+"$pk" decode --model pkp2400si --show "$tmp/show.log" | grep -qF '[ 1 G][ 2 .]' || fail "--show pkp2400si: stride 8"
+
+# --model auto on the SI family: a reported model string (PKP3500MT), else the narrowest model
+# that reads the log; a reported name whose model refuses frames does not win (pkp2600.log
+# quotes the PKP manual's "PKU2400").
+for m in pkp3500mt pkp2600si pkp2400si pkp2600; do
+  "$pk" decode --model auto "$logs/$m.log" 2>&1 > /dev/null | head -1 | grep -q "^powerkey: --model auto: $m: " ||
+    fail "--model auto on $m.log: $("$pk" decode --model auto "$logs/$m.log" 2>&1 > /dev/null | head -1)"
+done
+
 # --show never mixes into JSON: the combination is a usage error.
 echo '195#01' | "$pk" decode --json --show > "$tmp/out" 2> "$tmp/err"; rc=$?
 [ $rc -eq 2 ] && [ ! -s "$tmp/out" ] || fail "--json --show: status $rc, output $(cat "$tmp/out")"
