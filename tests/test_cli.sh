@@ -133,8 +133,8 @@ printf '%s\n' '215#0001000000000000' > "$tmp/show.log"  # stride 8: LED 1 green
 # that reads the log; a reported name whose model refuses frames does not win (pkp2600.log
 # quotes the PKP manual's "PKU2400").
 for m in pkp3500mt pkp2600si pkp2400si pkp2600; do
-  "$pk" decode --model auto "$logs/$m.log" 2>&1 > /dev/null | head -1 | grep -q "^powerkey: --model auto: $m: " ||
-    fail "--model auto on $m.log: $("$pk" decode --model auto "$logs/$m.log" 2>&1 > /dev/null | head -1)"
+  "$pk" decode --model auto "$logs/$m.log" > /dev/null 2> "$tmp/err"
+  head -1 "$tmp/err" | grep -q "^powerkey: --model auto: $m: " || fail "--model auto on $m.log: $(head -1 "$tmp/err")"
 done
 
 # --show never mixes into JSON: the combination is a usage error.
