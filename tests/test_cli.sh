@@ -202,7 +202,7 @@ usage "powerkey: The following argument was not expected: frobnicate (powerkey h
 
 # help says the exit codes and the input forms.
 "$pk" help > "$tmp/help" || fail "help exit status"
-for s in "Exit status: 0" "  1 bad input" "  2 usage" "Vector ASC, PEAK TRC 1.x and 2.x, python-can CSV, Vector BLF" "195#09.00.00.00.12"; do
+for s in "Exit status: 0" "  1 bad input" "  2 usage" "powerkey simulate --model M" "powerkey check --model M" "Vector ASC, PEAK TRC 1.x and 2.x, python-can CSV, Vector BLF" "195#09.00.00.00.12"; do
   grep -qF "$s" "$tmp/help" || fail "help lacks '$s'"
 done
 
