@@ -6,6 +6,7 @@
 #include "ops.hpp"
 #include "ops_pk1000.hpp"
 #include "ops_pkp.hpp"
+#include "ops_si.hpp"
 
 #include <array>
 #include <cstddef>
@@ -13,10 +14,11 @@
 
 namespace bench {
 
-inline constexpr std::array<std::span<const op>, 3> op_groups = {
+inline constexpr std::array<std::span<const op>, 4> op_groups = {
     std::span<const op>(core_ops),
     std::span<const op>(pk1000_ops),
     std::span<const op>(pkp_ops),
+    std::span<const op>(si_ops),
 };
 
 // Calls f(op) for every operation, floor first.

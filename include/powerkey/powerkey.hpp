@@ -13,6 +13,7 @@
 #include <powerkey/version.hpp>
 
 #include <powerkey/behaviour/checker.hpp>
+#include <powerkey/behaviour/clock.hpp>
 #include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/key_modes.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
