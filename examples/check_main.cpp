@@ -1,4 +1,4 @@
-// `powerkey check` as a program of its own until the integrator hooks it into the powerkey tool:
+// `powerkey check` as a program of its own too (the powerkey tool hosts it as `check`):
 // powerkey_check --model M [--node N] [--json] FILE... (examples/tool/cmd_check.cpp).
 int run_check(int argc, char** argv);
 

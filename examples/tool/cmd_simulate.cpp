@@ -6,7 +6,7 @@
 // skipped), from the files in order or standard input ("-" or none), and writes
 // the frames the keypad sends as candump log lines in time order, starting with its boot-up.
 //
-//   --model M       pk1000, pkp2200, pkp2400, pkp2600 (any name parse_model takes)
+//   --model M       any of the twelve models (any name parse_model takes)
 //   --node N        the keypad's node id: decimal, 0x15 or 15h (default 15h)
 //   --press T:K     press key K at T seconds after power-on (repeatable)
 //   --release T:K   release key K at T seconds after power-on (repeatable)

@@ -1,56 +1,62 @@
-// powerkey tool: field values both ways, generated from the kind/fields convention.
-//   bool                  JSON true/false; on the command line true/false, yes/no, on/off, 1/0
-//   integers, bounded     JSON numbers; on the command line 58, 0x3A or 3Ah
-//   enums                 their stable name, or the number when the value has no unique name
-//   std::array<uint8_t>   a hex string, "0102AB" (JSON and command line)
-//   index_set<N>          JSON array [1,7]; on the command line 1,7 or - for none
+// powerkey tool: field values both ways, for every field type of the kind/fields convention.
+// What the text output prints (describe() of the library), encode accepts back:
+//   bool                  yes/no (also true/false, on/off, 1/0); JSON true/false
+//   integers, bounded     hex with h (3Ah) but counts and times (tick, period_ms, size, ...) in
+//                         decimal, as describe() prints them; encode also takes 58 and 0x3A
+//   enums                 their name from the enum's table (names.hpp; aliases are taken too), or
+//                         the number (hex with h) for a value without a name
+//   std::array<uint8_t>   hex bytes "72 69 6E" (with or without spaces); JSON "72696E"
+//   index_set<N>          "1 7", "1-28" or "-" for none (also 1,7); JSON [1,7]
+// Reading JSON goes through nlohmann::json; writing JSON through json_writer.hpp.
 #ifndef POWERKEY_TOOL_FIELD_VALUE_HPP
 #define POWERKEY_TOOL_FIELD_VALUE_HPP
 
-#include "json.hpp"
+#include "json_writer.hpp"
+#include "text.hpp"
 
-#include <powerkey/detail/hex.hpp>
+#include <nlohmann/json.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace tool {
 
 // --- enums by name ------------------------------------------------------------------------------
 
-// Name -> value of an enum, built once by trying values through its to_string. Types of one or
-// two bytes are tried in full; wider ones (the 32-bit SDO abort codes) over every value whose
-// low 8 bits and high 16 bits may be non-zero (CiA 301 codes are of the form 0xMMMM'00LL and
-// 0xMMMM'LLLL with small LL). When two values share a name the higher one keeps it (NMT 02h stop,
-// not the legacy 00h) and the lower one is written as a number.
+// The names of an enum in value order, for error messages ("start, stop, ..."), at most 12:
+// straight from its table (names.hpp), first names only.
 template <class E>
-const std::unordered_map<std::string_view, std::underlying_type_t<E>>& enum_names() {
-    using U = std::underlying_type_t<E>;
-    static const auto table = [] {
-        std::unordered_map<std::string_view, U> t;
-        auto add = [&t](U v) {
-            const auto n = powerkey::enum_name(static_cast<E>(v));
-            if (!n.empty()) t.emplace(n, v);  // scanning downwards: the first (highest) stays
-        };
-        if constexpr (sizeof(U) <= 2) {
-            for (std::uint32_t v = std::numeric_limits<U>::max() + 1u; v-- > 0;)
-                add(static_cast<U>(v));
-        } else {
-            for (std::uint32_t hi = 0x1000; hi-- > 0;)
-                for (std::uint32_t lo = 0x100; lo-- > 0;) add(static_cast<U>((hi << 16) | lo));
-        }
-        return t;
-    }();
-    return table;
+std::string enum_name_list() {
+    std::string s;
+    std::size_t i = 0;
+    const auto values = powerkey::enum_values<E>();
+    for (const E v : values) {
+        if (i == 12) break;
+        s.append(i++ ? ", " : "").append(powerkey::to_string(v));
+    }
+    if (values.size() > 12) s += ", ... (" + std::to_string(values.size()) + " names)";
+    return s;
 }
 
 // --- numbers ------------------------------------------------------------------------------------
 
+inline int hex_digit_value(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+}
+
+// 58, 0x3A or 3Ah.
 inline bool parse_number(std::string_view s, std::uint64_t& out) {
     int base = 10;
     if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
@@ -63,26 +69,53 @@ inline bool parse_number(std::string_view s, std::uint64_t& out) {
     if (s.empty() || s.size() > 16) return false;
     std::uint64_t v = 0;
     for (char c : s) {
-        const int d = powerkey::detail::hex_value(c);
+        const int d = hex_digit_value(c);
         if (d < 0 || d >= base) return false;
+        if (base == 10 && v > (std::numeric_limits<std::uint64_t>::max() - 9) / 10) return false;
         v = v * static_cast<std::uint64_t>(base) + static_cast<std::uint64_t>(d);
     }
     out = v;
     return true;
 }
 
-// --- writing ------------------------------------------------------------------------------------
+// Fields whose numbers print in hex (with h): all but counts and times, the rule of describe()
+// (describe.hpp's decimal_fields and the _mv / _ms suffixes), so that errors quote ranges the way
+// decode's text prints values.
+inline bool hex_field(std::string_view name) {
+    for (const auto d : powerkey::detail::decimal_fields)
+        if (d == name) return false;
+    return !(name.ends_with("_mv") || name.ends_with("_ms"));
+}
+
+// --- text ---------------------------------------------------------------------------------------
+
+template <class T>
+constexpr std::uint64_t max_of() {
+    if constexpr (powerkey::is_bounded<T>::value)
+        return T::max;
+    else
+        return std::numeric_limits<T>::max();
+}
+
+// Appends the text form of a field value: describe()'s own (its put_value), so list, errors and
+// decode's text agree.
+template <class T>
+void write_text_value(std::string& out, std::string_view name, const T& v) {
+    std::array<char, 160> buf{};
+    powerkey::text_writer w(buf);
+    powerkey::detail::put_value(w, name, v);
+    out += w.view();
+}
+
+// --- JSON writing -------------------------------------------------------------------------------
 
 template <class T>
 void write_json_value(json::object_writer& w, const T& v) {
     if constexpr (std::is_same_v<T, bool>) {
         w.boolean(v);
     } else if constexpr (std::is_enum_v<T>) {
-        const auto n = powerkey::enum_name(v);
-        const auto& names = enum_names<T>();
-        const auto it = n.empty() ? names.end() : names.find(n);
-        if (it != names.end() && it->second == static_cast<std::underlying_type_t<T>>(v))
-            w.string(n);
+        if (powerkey::is_named(v))
+            w.string(powerkey::to_string(v));
         else
             w.number(static_cast<std::uint64_t>(v));
     } else if constexpr (powerkey::is_index_set<T>::value) {
@@ -97,10 +130,7 @@ void write_json_value(json::object_writer& w, const T& v) {
         w.raw("]");
     } else if constexpr (powerkey::is_byte_array<T>::value) {
         std::string hex;
-        for (auto b : v) {
-            hex += powerkey::detail::hex_digit(b >> 4u);
-            hex += powerkey::detail::hex_digit(b);
-        }
+        for (auto b : v) append_hex(hex, b, 2);
         w.string(hex);
     } else if constexpr (powerkey::is_bounded<T>::value) {
         w.number(v.value());
@@ -112,105 +142,146 @@ void write_json_value(json::object_writer& w, const T& v) {
 
 // --- reading ------------------------------------------------------------------------------------
 
+// The range of a number field, for error messages: "0..63", "1..7Fh".
 template <class T>
-std::string set_from_number(T& v, std::uint64_t n);
+std::string range_of(std::string_view name) {
+    std::uint64_t lo = 0;
+    if constexpr (powerkey::is_bounded<T>::value) lo = T::min;
+    std::string s;
+    auto put = [&](std::uint64_t v) {
+        if (hex_field(name))
+            append_hex_h(s, v, hex_digits(max_of<T>()));
+        else
+            append_decimal(s, v);
+    };
+    put(lo);
+    s += "..";
+    put(max_of<T>());
+    return s;
+}
 
-// Sets v from text (the command line, or a JSON string). Returns "" or what is wrong.
 template <class T>
-std::string set_from_text(T& v, std::string_view s) {
+std::string set_from_number(T& v, std::uint64_t n, std::string_view name);
+
+// Sets v from text (the command line, or a JSON string). Returns "" or what is wrong, naming the
+// allowed values or range; the caller puts the field's name in front.
+template <class T>
+std::string set_from_text(T& v, std::string_view s, std::string_view name = "") {
+    const std::string shown = "'" + escape(s, 32) + "'";
     if constexpr (std::is_same_v<T, bool>) {
-        if (s == "true" || s == "yes" || s == "on" || s == "1") return v = true, "";
-        if (s == "false" || s == "no" || s == "off" || s == "0") return v = false, "";
-        return "expected true or false";
+        if (s == "yes" || s == "true" || s == "on" || s == "1") return v = true, "";
+        if (s == "no" || s == "false" || s == "off" || s == "0") return v = false, "";
+        return shown + " is not yes or no (also true/false, on/off, 1/0)";
     } else if constexpr (std::is_enum_v<T>) {
         using U = std::underlying_type_t<T>;
-        const auto& names = enum_names<T>();
-        if (const auto it = names.find(s); it != names.end())
-            return v = static_cast<T>(it->second), "";
+        if (const auto named = powerkey::from_string<T>(s)) return v = *named, "";
         std::uint64_t n = 0;
-        if (!parse_number(s, n)) return "unknown name";
-        if (n > std::numeric_limits<U>::max()) return "value out of range";
+        if (!parse_number(s, n)) return "unknown name " + shown + " (" + enum_name_list<T>() + ")";
+        if (n > std::numeric_limits<U>::max())
+            return shown + " is outside 0.." + std::to_string(std::numeric_limits<U>::max());
         v = static_cast<T>(static_cast<U>(n));
         return "";
     } else if constexpr (powerkey::is_index_set<T>::value) {
         T set{};
         if (s == "-" || s.empty()) return v = set, "";
+        const std::string range = "1.." + std::to_string(T::max);
         while (!s.empty()) {
-            const auto comma = s.find(',');
-            std::uint64_t n = 0;
-            if (!parse_number(s.substr(0, comma), n)) return "expected numbers like 1,7";
-            if (n < 1 || n > T::max) return "number outside 1.." + std::to_string(T::max);
-            set.insert(static_cast<unsigned>(n));
-            if (comma == std::string_view::npos) break;
-            s.remove_prefix(comma + 1);
+            const auto sep = s.find_first_of(", ");
+            const auto item = s.substr(0, sep);
+            s.remove_prefix(sep == std::string_view::npos ? s.size() : sep + 1);
+            if (item.empty()) continue;
+            const auto dash = item.find('-');
+            std::uint64_t a = 0, b = 0;
+            if (!parse_number(item.substr(0, dash), a) ||
+                (dash != std::string_view::npos && !parse_number(item.substr(dash + 1), b)))
+                return shown + " is not a list of numbers like 1,7 or 1-28 or -";
+            if (dash == std::string_view::npos) b = a;
+            if (a < 1 || b > T::max || a > b)
+                return "'" + escape(item, 32) + "' is outside " + range;
+            for (auto i = a; i <= b; ++i) set.insert(static_cast<unsigned>(i));
         }
         v = set;
         return "";
     } else if constexpr (powerkey::is_byte_array<T>::value) {
-        if (s.size() % 2 != 0 || s.size() > 2 * v.size()) return "expected hex bytes";
         T bytes{};
-        for (std::size_t i = 0; i < s.size() / 2; ++i) {
-            const int hi = powerkey::detail::hex_value(s[2 * i]);
-            const int lo = powerkey::detail::hex_value(s[2 * i + 1]);
-            if (hi < 0 || lo < 0) return "expected hex bytes";
-            bytes[i] = static_cast<std::uint8_t>((hi << 4) | lo);
+        std::size_t n = 0;
+        const std::string expected =
+            " is not hex bytes (at most " + std::to_string(v.size()) + ", like 72 69 6E or 72696E)";
+        for (std::size_t i = 0; i < s.size();) {
+            if (s[i] == ' ') {
+                ++i;
+                continue;
+            }
+            const int hi = i + 1 < s.size() ? hex_digit_value(s[i]) : -1;
+            const int lo = i + 1 < s.size() ? hex_digit_value(s[i + 1]) : -1;
+            if (hi < 0 || lo < 0 || n == v.size()) return shown + expected;
+            bytes[n++] = static_cast<std::uint8_t>((hi << 4) | lo);
+            i += 2;
         }
         v = bytes;
         return "";
     } else {
         std::uint64_t n = 0;
-        if (!parse_number(s, n)) return "expected a number";
-        return set_from_number(v, n);
+        if (!parse_number(s, n))
+            return shown + " is not a number (58, 0x3A or 3Ah; " + range_of<T>(name) + ")";
+        return set_from_number(v, n, name);
     }
 }
 
 template <class T>
-std::string set_from_number(T& v, std::uint64_t n) {
+std::string set_from_number(T& v, std::uint64_t n, std::string_view name) {
     if constexpr (powerkey::is_bounded<T>::value) {
         const auto r = T::make(n);
-        if (!r) return "value out of range";
+        if (!r) return std::to_string(n) + " is outside " + range_of<T>(name);
         v = *r;
         return "";
     } else if constexpr (std::is_same_v<T, bool>) {
-        if (n > 1) return "expected true or false";
+        if (n > 1) return std::to_string(n) + " is not yes or no";
         v = n == 1;
         return "";
     } else if constexpr (std::is_enum_v<T>) {
         using U = std::underlying_type_t<T>;
-        if (n > std::numeric_limits<U>::max()) return "value out of range";
+        if (n > std::numeric_limits<U>::max())
+            return std::to_string(n) + " is outside 0.." +
+                   std::to_string(std::numeric_limits<U>::max());
         v = static_cast<T>(static_cast<U>(n));
         return "";
     } else if constexpr (std::is_integral_v<T>) {
-        if (n > std::numeric_limits<T>::max()) return "value out of range";
+        if (n > std::numeric_limits<T>::max())
+            return std::to_string(n) + " is outside " + range_of<T>(name);
         v = static_cast<T>(n);
         return "";
+    } else if constexpr (powerkey::is_index_set<T>::value) {
+        return "expected a list like [1,7]";
     } else {
-        return "expected " + std::string(powerkey::is_index_set<T>::value ? "a list" : "hex text");
+        return "expected hex bytes like \"72696E\"";
     }
 }
 
 template <class T>
-std::string set_from_json(T& v, const json::value& j) {
-    switch (j.t) {
-        case json::value::type::string: return set_from_text(v, j.s);
-        case json::value::type::number: return set_from_number(v, j.n);
-        case json::value::type::boolean:
-            if constexpr (std::is_same_v<T, bool>) return v = j.b, "";
-            return "unexpected boolean";
-        case json::value::type::array:
-            if constexpr (powerkey::is_index_set<T>::value) {
-                T set{};
-                for (const auto& item : j.items) {
-                    if (item.t != json::value::type::number || item.n < 1 || item.n > T::max)
-                        return "expected numbers 1.." + std::to_string(T::max);
-                    set.insert(static_cast<unsigned>(item.n));
-                }
-                v = set;
-                return "";
-            }
-            return "unexpected array";
-        default: return "unexpected value";
+std::string set_from_json(T& v, const nlohmann::json& j, std::string_view name = "") {
+    if (j.is_string()) return set_from_text(v, j.get_ref<const std::string&>(), name);
+    if (j.is_number_unsigned()) return set_from_number(v, j.get<std::uint64_t>(), name);
+    if (j.is_number_integer()) return "a negative number";
+    if (j.is_boolean()) {
+        if constexpr (std::is_same_v<T, bool>) return v = j.get<bool>(), "";
+        return "unexpected true/false";
     }
+    if (j.is_array()) {
+        if constexpr (powerkey::is_index_set<T>::value) {
+            T set{};
+            for (const auto& item : j) {
+                if (!item.is_number_unsigned() || item.get<std::uint64_t>() < 1 ||
+                    item.get<std::uint64_t>() > T::max)
+                    return "expected numbers 1.." + std::to_string(T::max);
+                set.insert(static_cast<unsigned>(item.get<std::uint64_t>()));
+            }
+            v = set;
+            return "";
+        }
+        return "unexpected array";
+    }
+    return "unexpected value";
 }
 
 }  // namespace tool

@@ -1,88 +1,80 @@
 // powerkey tool: `decode --show` draws the keypad after every frame that changes it: each key
 // with its LED colour (ANSI colours on a terminal, letters otherwise) and pressed keys marked.
-// It reads the messages through their fields: `keys` of a key-state message, and `red`, `green`,
-// `blue` of the LED on / blink messages, so it follows whatever the profiles name that way.
+// It reads the messages through the library's accessors (pressed_keys, led_on_map,
+// led_blink_map) and the model table (keys, LED mask, encoder rings), so every model is drawn.
 #ifndef POWERKEY_TOOL_SHOW_HPP
 #define POWERKEY_TOOL_SHOW_HPP
 
-#include <powerkey/decoder.hpp>
-#include <powerkey/fields.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/names.hpp>
 
 #include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <string>
 #include <string_view>
-#include <type_traits>
+#include <variant>
 
 namespace tool {
 
 class keypad_picture {
 public:
     explicit keypad_picture(powerkey::model m)
-        : keys_(m == powerkey::model::pk1000    ? 10
-                : m == powerkey::model::pkp2200 ? 4
-                : m == powerkey::model::pkp2400 ? 8
-                                                : 12),
-          leds_(m == powerkey::model::pk1000 ? 28 : keys_),
+        : model_(m),
+          info_(powerkey::info(m).value_or(powerkey::model_info{})),
           ansi_(isatty(1) != 0) {}
 
-    // Takes in a decoded message; true when the picture changed.
-    template <class M>
-    bool update(const M& msg) {
-        const std::string_view kind = powerkey::kind_of(msg);
-        const bool is_keys = kind.find("key_state") != std::string_view::npos ||
-                             kind.find("keys_response") != std::string_view::npos ||
-                             kind.ends_with("_keys");
-        const bool is_on = kind.find("led_on") != std::string_view::npos;
-        const bool is_blink = kind.find("led_blink") != std::string_view::npos;
-        const bool is_state = kind.ends_with("set_led_state");
-        if (!is_keys && !is_on && !is_blink && !is_state) return false;
+    // Takes in a decoded message; true when the picture changed. Keys from pressed_keys, LED maps
+    // from led_on_map / led_blink_map (only the LEDs a frame covers change), a PKP command
+    // 6500h/01h by its key and state, the PKP-3500-MT's rings from encoder_leds.
+    bool update(const powerkey::message& msg) {
         const auto before = state_;
-        // Fields of one colour plane (PK1000 2001h/2002h: colour + leds), or of one key (PKP
-        // command 6500h/01h: key + state), are gathered first.
-        int colour = -1;
-        std::uint64_t leds = 0;
-        bool has_leds = false;
-        unsigned key = 0;
-        std::string_view led_state;
-        powerkey::for_each_field(msg, [&](std::string_view name, const auto& v) {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (powerkey::is_index_set<T>::value) {
-                if (is_keys && (name == "keys" || name == "pressed")) state_.keys = v.mask();
-                const int plane = plane_of(name);
-                if (plane >= 0 && is_on) state_.on[plane] = v.mask();
-                if (plane >= 0 && is_blink) state_.blink[plane] = v.mask();
-                if (name == "leds") {
-                    leds = v.mask();
-                    has_leds = true;
-                }
-            } else if constexpr (std::is_enum_v<T>) {
-                if (name == "colour") colour = plane_of(powerkey::enum_name(v));
-                if (name == "state") led_state = powerkey::enum_name(v);
-            } else if constexpr (powerkey::is_bounded<T>::value) {
-                if (name == "key") key = v.value();
+        if (const auto k = powerkey::pressed_keys(msg)) state_.keys = k->mask();
+        auto apply = [](std::uint64_t* planes, const powerkey::led_map_update& u) {
+            for (int p = 0; p < 3; ++p) {
+                const auto pl = static_cast<powerkey::plane>(p);
+                const std::uint64_t covered = u.covered.of(pl).mask();
+                planes[p] = (planes[p] & ~covered) | (u.map.of(pl).mask() & covered);
             }
-        });
-        if (has_leds && colour >= 0 && is_on) state_.on[colour] = leds;
-        if (has_leds && colour >= 0 && is_blink) state_.blink[colour] = leds;
-        if (is_state && key >= 1 && key <= 64) set_key(key - 1, led_state);
+        };
+        if (const auto u = powerkey::led_on_map(msg, model_)) apply(state_.on, *u);
+        if (const auto u = powerkey::led_blink_map(msg, model_)) apply(state_.blink, *u);
+        if (const auto* c = std::get_if<powerkey::command>(&msg);
+            c && c->code == powerkey::command_code::set_led_state && c->key >= 1 && c->key <= 64)
+            set_key(c->key - 1u, powerkey::to_string(c->state));
+        if (const auto* r = std::get_if<powerkey::encoder_leds>(&msg))
+            state_.rings = r->leds.mask();
         return !(before == state_);
     }
 
+    // One cell per key (and per further LED, PK1000 11..28): rows as the keypad has them (up to
+    // 8 keys one row, 10 and 12 two, 15 three), a cell with no LED (PKP-3500-MT 1 and 11) shows
+    // no colour, then the PKP-3500-MT's two encoder rings of 16 LEDs.
     [[nodiscard]] std::string draw() const {
+        const unsigned keys = info_.keys;
+        unsigned highest = 0;
+        for (unsigned i = 0; i < 32; ++i)
+            if ((info_.led_mask >> i) & 1u) highest = i + 1;
+        const unsigned cells = highest > keys ? highest : keys;
+        const unsigned rows = keys <= 8 ? 1 : keys <= 12 ? 2 : 3;
+        const unsigned per_row = keys == 0 ? 8 : (keys + rows - 1) / rows;
         std::string s = "    ";
-        for (unsigned i = 0; i < leds_; ++i) {
+        for (unsigned i = 0; i < cells; ++i) {
+            if (i != 0 && ((i < keys && i % per_row == 0) || (i >= keys && (i - keys) % 10 == 0)))
+                s += "\n    ";
+            const bool has_led = ((info_.led_mask >> i) & 1u) != 0;
             const unsigned planes =
                 bit(state_.on[0], i) | (bit(state_.on[1], i) << 1) | (bit(state_.on[2], i) << 2);
             const unsigned blink = bit(state_.blink[0], i) | (bit(state_.blink[1], i) << 1) |
                                    (bit(state_.blink[2], i) << 2);
-            const bool pressed = i < keys_ && bit(state_.keys, i) != 0;
+            const bool pressed = i < keys && bit(state_.keys, i) != 0;
             char label[12];
             std::snprintf(label, sizeof label, "%2u", i + 1);
             if (ansi_) {
                 static constexpr int bg[8] = {0, 41, 42, 43, 44, 45, 46, 47};
-                const unsigned shown = planes | blink;
+                const unsigned shown = has_led ? planes | blink : 0;
                 s += "\x1b[";
                 s += shown ? std::to_string(bg[shown]) : std::string("100");
                 if (blink) s += ";5";
@@ -99,11 +91,18 @@ public:
                 s += "[";
                 s += label;
                 s += pressed ? '*' : ' ';
-                s += c;
+                s += has_led ? c : ' ';
                 s += "]";
             }
         }
         s += "\n";
+        if (info_.encoder_leds_pdo) {
+            for (unsigned r = 0; r < 2; ++r) {
+                s += r == 0 ? "    ring 1 " : "  ring 2 ";
+                for (unsigned i = 0; i < 16; ++i) s += bit(state_.rings, 16 * r + i) ? '*' : '.';
+            }
+            s += "\n";
+        }
         return s;
     }
 
@@ -143,10 +142,11 @@ private:
         std::uint64_t keys = 0;
         std::uint64_t on[3] = {0, 0, 0};
         std::uint64_t blink[3] = {0, 0, 0};
+        std::uint64_t rings = 0;
         bool operator==(const state&) const = default;
     };
-    unsigned keys_;
-    unsigned leds_;
+    powerkey::model model_;
+    powerkey::model_info info_;
     bool ansi_;
     state state_;
 };

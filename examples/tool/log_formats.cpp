@@ -1,0 +1,755 @@
+// powerkey tool: the log readers (log_formats.hpp). Written from the formats as their writers
+// produce them (candump and log2asc of can-utils 2020.11, python-can 4.1's writers, PEAK's TRC
+// file format document 1.0-2.1), and tested against files those writers make at test time
+// (tests/test_log_formats.sh).
+#include "log_formats.hpp"
+
+#include <zlib.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+
+namespace tool::logs {
+namespace {
+
+using powerkey::can::frame;
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() &&
+           (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n'))
+        s.remove_suffix(1);
+    return s;
+}
+
+std::string_view next_token(std::string_view& s) {
+    std::size_t i = 0;
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    std::size_t n = i;
+    while (n < s.size() && s[n] != ' ' && s[n] != '\t') ++n;
+    const auto t = s.substr(i, n - i);
+    s.remove_prefix(n);
+    return t;
+}
+
+int hex_value(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+}
+
+// A hex (at most 8 digits) or decimal number that fits 32 bits; false for anything else.
+bool parse_uint(std::string_view s, std::uint32_t& out, int base = 16) {
+    if (s.empty() || s.size() > (base == 16 ? 8u : 10u)) return false;
+    std::uint64_t v = 0;
+    for (char c : s) {
+        const int d = hex_value(c);
+        if (d < 0 || d >= base) return false;
+        v = v * static_cast<unsigned>(base) + static_cast<unsigned>(d);
+    }
+    if (v > 0xFFFF'FFFFu) return false;
+    out = static_cast<std::uint32_t>(v);
+    return true;
+}
+
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+// "1)" then a number: a TRC 1.x data line (a file without its ";" header).
+bool trc_numbered(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return i > 0 && i + 1 < s.size() && s[i] == ')' && (s[i + 1] == ' ' || s[i + 1] == '\t');
+}
+
+// candump's error-frame flag in a 32-bit identifier (linux/can.h CAN_ERR_FLAG).
+constexpr std::uint32_t can_err_flag = 0x2000'0000;
+
+std::uint16_t le16(std::string_view d, std::size_t at) {
+    return static_cast<std::uint16_t>(static_cast<unsigned char>(d[at]) |
+                                      (static_cast<unsigned char>(d[at + 1]) << 8));
+}
+std::uint32_t le32(std::string_view d, std::size_t at) {
+    return static_cast<std::uint32_t>(le16(d, at)) |
+           (static_cast<std::uint32_t>(le16(d, at + 2)) << 16);
+}
+std::uint64_t le64(std::string_view d, std::size_t at) {
+    return static_cast<std::uint64_t>(le32(d, at)) |
+           (static_cast<std::uint64_t>(le32(d, at + 4)) << 32);
+}
+constexpr std::size_t blf_base_header = 16;  // "LOBJ", header size, version, object size, type
+
+}  // namespace
+
+std::string_view to_string(format f) noexcept {
+    switch (f) {
+        case format::unknown: return "unknown";
+        case format::candump: return "candump";
+        case format::asc: return "Vector ASC";
+        case format::trc: return "PEAK TRC";
+        case format::csv: return "python-can CSV";
+        case format::blf: return "Vector BLF";
+        case format::not_a_log: return "not a log";
+    }
+    return "unknown";
+}
+
+std::string_view to_string(skip s) noexcept {
+    switch (s) {
+        case skip::remote: return "remote frame";
+        case skip::fd: return "CAN FD frame";
+        case skip::error_frame: return "error frame";
+    }
+    return "frame";
+}
+
+bool base64_decode(std::string_view in, std::vector<std::uint8_t>& out) {
+    out.clear();
+    std::uint32_t acc = 0;
+    int bits = 0;
+    for (char c : in) {
+        int v = 0;
+        if (c >= 'A' && c <= 'Z')
+            v = c - 'A';
+        else if (c >= 'a' && c <= 'z')
+            v = c - 'a' + 26;
+        else if (c >= '0' && c <= '9')
+            v = c - '0' + 52;
+        else if (c == '+')
+            v = 62;
+        else if (c == '/')
+            v = 63;
+        else if (c == '=')
+            break;
+        else
+            return false;
+        acc = ((acc << 6) | static_cast<std::uint32_t>(v)) & 0xFFFFFFu;
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out.push_back(static_cast<std::uint8_t>(acc >> bits));
+        }
+    }
+    return true;
+}
+
+// --- the stream ---------------------------------------------------------------------------------
+
+void reader::feed(std::string_view bytes) {
+    if (!started_) {
+        if (carry_.size() + bytes.size() < 4) {
+            carry_.append(bytes);  // too little to tell BLF from text yet
+            return;
+        }
+        started_ = true;
+        std::string all = std::move(carry_);
+        carry_.clear();
+        all.append(bytes);
+        std::string_view v = all;
+        if (starts_with(v, "LOGG")) {
+            format_ = format::blf;
+            return blf_feed(v);
+        }
+        if (detect_binary(v)) return;
+        if (starts_with(v, "\xEF\xBB\xBF")) v.remove_prefix(3);  // UTF-8 byte-order mark
+        return text_feed(v);
+    }
+    if (format_ == format::blf) return blf_feed(bytes);
+    text_feed(bytes);
+}
+
+void reader::text_feed(std::string_view bytes) {
+    while (!bytes.empty() && format_ != format::not_a_log) {
+        const auto nl = bytes.find('\n');
+        if (nl == std::string_view::npos) {
+            carry_.append(bytes);
+            return;
+        }
+        if (!carry_.empty()) {
+            carry_.append(bytes.substr(0, nl));
+            const std::string whole = std::move(carry_);
+            carry_.clear();
+            line(whole);
+        } else {
+            line(bytes.substr(0, nl));
+        }
+        bytes.remove_prefix(nl + 1);
+    }
+}
+
+void reader::finish() {
+    if (!started_) {
+        started_ = true;
+        std::string rest = std::move(carry_);
+        carry_.clear();
+        if (detect_binary(rest)) return;
+        if (starts_with(rest, "\xEF\xBB\xBF")) rest.erase(0, 3);
+        text_feed(rest);
+        if (!carry_.empty()) {
+            const std::string last = std::move(carry_);
+            carry_.clear();
+            if (format_ != format::not_a_log) line(last);
+        }
+        return;
+    }
+    if (format_ == format::blf) {
+        if (blf_broken_) return;
+        if (!blf_header_done_) return bad("the BLF file ends inside its header (truncated?)", "");
+        std::size_t used = 0;
+        blf_objects(blf_in_, true, true, used);
+        if (!blf_broken_ && used + 4 <= blf_in_.size())
+            bad("the BLF file ends inside an object (truncated?)", "");
+        blf_in_.clear();
+        return;
+    }
+    if (!carry_.empty() && format_ != format::not_a_log) {
+        const std::string rest = std::move(carry_);
+        carry_.clear();
+        line(rest);
+    }
+}
+
+void reader::emit(const frame& f, std::string_view time, std::string_view interface) {
+    ++frames_;
+    out_.frame(record{f, time, interface, line_});
+}
+
+void reader::emit_raw(std::uint32_t id, bool extended, std::span<const std::uint8_t> data,
+                      std::string_view time, std::string_view interface) {
+    powerkey::can::payload p{};
+    const std::size_t n = data.size() < 8 ? data.size() : 8;
+    for (std::size_t i = 0; i < n; ++i) p[i] = data[i];
+    const auto length = powerkey::can::dlc::make(n).value();
+    if (extended) {
+        const auto i = powerkey::can::extended_id::make(id);
+        if (!i) return bad("identifier out of range", "");
+        emit(frame(*i, length, p), time, interface);
+    } else {
+        const auto i = powerkey::can::standard_id::make(id);
+        if (!i) return bad("identifier out of range", "");
+        emit(frame(*i, length, p), time, interface);
+    }
+}
+
+void reader::skip_one(skip s) {
+    const auto i = static_cast<std::size_t>(s);
+    if (skipped_[i]++ == 0) first_skipped_[i] = line_;
+}
+
+void reader::bad(std::string_view why, std::string_view text) {
+    ++problems_;
+    out_.problem(line_, why, text);
+}
+
+void reader::line(std::string_view text) {
+    ++line_;
+    const auto s = trim(text);
+    if (s.empty()) return;
+    if (format_ == format::unknown) {
+        detect(s);
+        if (format_ == format::not_a_log) return;
+    }
+    switch (format_) {
+        case format::asc: return asc_line(s);
+        case format::trc: return trc_line(s);
+        case format::csv: return csv_line(s);
+        default: return candump_line(s);
+    }
+}
+
+// The forms that are no text, by their first bytes (before any line is split: a pcapng file
+// begins with a line feed).
+bool reader::detect_binary(std::string_view s) {
+    auto other = [&](std::string_view what) {
+        format_ = format::not_a_log;
+        looks_like_ = what;
+        return true;
+    };
+    if (starts_with(s, "\xD4\xC3\xB2\xA1") || starts_with(s, "\xA1\xB2\xC3\xD4") ||
+        starts_with(s, "\x4D\x3C\xB2\xA1") || starts_with(s, "\xA1\xB2\x3C\x4D"))
+        return other("a pcap capture");
+    if (starts_with(s, std::string_view("\x0A\x0D\x0D\x0A", 4))) return other("a pcapng capture");
+    if (starts_with(s, "MDF     ") || starts_with(s, "UnFinMF"))
+        return other("an ASAM MDF (MF4) measurement file");
+    if (starts_with(s, "\x1F\x8B")) return other("a gzip-compressed file");
+    if (starts_with(s, "PK\x03\x04")) return other("a zip archive");
+    if (s.substr(0, 512).find('\0') != std::string_view::npos)
+        return other("a binary file that is not Vector BLF");
+    return false;
+}
+
+void reader::detect(std::string_view s) {
+    auto other = [&](std::string_view what) {
+        format_ = format::not_a_log;
+        looks_like_ = what;
+    };
+    if (starts_with(s, "date ") || starts_with(s, "base hex") || starts_with(s, "base dec") ||
+        starts_with(s, "Begin Triggerblock") || starts_with(s, "// version")) {
+        format_ = format::asc;
+    } else if (s.front() == ';' || trc_numbered(s)) {
+        format_ = format::trc;
+    } else if (starts_with(s, "timestamp,")) {
+        format_ = format::csv;
+    } else if (s.front() == '{') {
+        other("JSON lines (the output of powerkey decode --json?)");
+    } else {
+        format_ = format::candump;
+    }
+}
+
+// --- candump, cansend and candump's screen form
+// ---------------------------------------------------
+
+void reader::candump_line(std::string_view s) {
+    if (s.front() == '#' || starts_with(s, "//")) return;
+    const auto whole = s;
+    std::string_view time;
+    if (s.front() == '(') {
+        const auto close = s.find(')');
+        if (close == std::string_view::npos) return bad("unclosed timestamp", whole);
+        time = s.substr(1, close - 1);
+        s.remove_prefix(close + 1);
+    }
+    std::string_view rest = s;
+    const std::string_view first = next_token(rest);
+    std::string_view interface;
+    std::string_view frame_text;
+    if (first.find('#') != std::string_view::npos) {
+        frame_text = first;  // cansend form, maybe after a timestamp
+    } else {
+        interface = first;
+        std::string_view second = next_token(rest);
+        if (second.find('#') != std::string_view::npos) {
+            frame_text = second;  // candump -l / -L form
+        } else {
+            // The screen form: [RX|TX flag flag] ID [len] bytes... ['ascii'] or "remote request"
+            if (second == "RX" || second == "TX") {  // candump -x: direction, BRS and ESI flags
+                next_token(rest);
+                next_token(rest);
+                second = next_token(rest);
+            }
+            const std::string_view len = next_token(rest);
+            std::uint32_t id = 0;
+            if (len.size() < 3 || len.front() != '[' || len.back() != ']' ||
+                !parse_uint(second, id))
+                return bad("not a frame (expected ID#DATA or a candump line)", whole);
+            if (second.size() != 3 && second.size() != 8)
+                return bad("identifier of other than 3 or 8 hex digits", whole);
+            std::uint32_t count = 0;
+            if (!parse_uint(len.substr(1, len.size() - 2), count, 10))
+                return bad("the [length] is not a number", whole);
+            const bool extended = second.size() == 8;
+            if (extended && (id & can_err_flag) != 0) return skip_one(skip::error_frame);
+            if (count > 8) return skip_one(skip::fd);
+            std::array<std::uint8_t, 8> data{};
+            std::size_t n = 0;
+            for (auto b = next_token(rest); !b.empty(); b = next_token(rest)) {
+                if (b == "remote") return skip_one(skip::remote);
+                if (b.front() == '\'' || b == "ERRORFRAME") break;  // -a text, -e marker
+                if (b.size() != 2 || hex_value(b[0]) < 0 || hex_value(b[1]) < 0)
+                    return bad("data bytes must be two hex digits each", whole);
+                if (n == 8) return bad("more than 8 data bytes", whole);
+                data[n++] = static_cast<std::uint8_t>((hex_value(b[0]) << 4) | hex_value(b[1]));
+            }
+            if (n != count) return bad("the [length] does not match the data bytes", whole);
+            if (!extended && id > 0x7FF) return bad("identifier out of range", whole);
+            if (extended && id > 0x1FFF'FFFF) return bad("identifier out of range", whole);
+            return emit_raw(id, extended, {data.data(), n}, time, interface);
+        }
+    }
+    // ID#DATA, then maybe the direction python-can and asc2log write (R or T).
+    const auto after = next_token(rest);
+    if (!after.empty() && !((after == "R" || after == "T") && trim(rest).empty()))
+        return bad("unexpected text after the frame", whole);
+    const auto hash = frame_text.find('#');
+    const auto id_text = frame_text.substr(0, hash);
+    const std::string_view data_text = frame_text.substr(hash + 1);
+    std::uint32_t id = 0;
+    if (!parse_uint(id_text, id)) return bad("malformed frame (expected ID#DATA)", whole);
+    if (id_text.size() != 3 && id_text.size() != 8)
+        return bad("identifier of other than 3 or 8 hex digits", whole);
+    const bool extended = id_text.size() == 8;
+    if (extended && (id & can_err_flag) != 0) return skip_one(skip::error_frame);
+    if (!data_text.empty() && data_text.front() == '#') return skip_one(skip::fd);
+    if (!data_text.empty() && (data_text.front() == 'R' || data_text.front() == 'r'))
+        return skip_one(skip::remote);
+    std::array<std::uint8_t, 8> data{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < data_text.size();) {
+        if (data_text[i] == '.') {  // cansend's 01.02.03
+            ++i;
+            continue;
+        }
+        if (i + 1 >= data_text.size()) return bad("odd number of hex digits in the data", whole);
+        const int hi = hex_value(data_text[i]);
+        const int lo = hex_value(data_text[i + 1]);
+        if (hi < 0 || lo < 0) return bad("malformed frame (expected ID#DATA)", whole);
+        if (n == 8) return bad("more than 8 data bytes", whole);
+        data[n++] = static_cast<std::uint8_t>((hi << 4) | lo);
+        i += 2;
+    }
+    if (!extended && id > 0x7FF) return bad("identifier out of range", whole);
+    if (extended && id > 0x1FFF'FFFF) return bad("identifier out of range", whole);
+    emit_raw(id, extended, {data.data(), n}, time, interface);
+}
+
+// --- Vector ASC
+// -----------------------------------------------------------------------------------
+
+void reader::asc_line(std::string_view s) {
+    if (starts_with(s, "base ")) {
+        asc_decimal_ = s.find("base dec") != std::string_view::npos;
+        return;
+    }
+    std::string_view rest = s;
+    const auto time = next_token(rest);
+    if (time.empty() || time.front() < '0' || time.front() > '9') return;  // header, comments
+    auto channel = next_token(rest);
+    const int base = asc_decimal_ ? 10 : 16;
+    auto interface_of = [this](std::string_view ch) -> std::string_view {
+        std::uint32_t n = 0;
+        if (!parse_uint(ch, n, 10) || n == 0) return ch;
+        iface_buf_ = "can" + std::to_string(n - 1);  // ASC channels count from 1, SocketCAN from 0
+        return iface_buf_;
+    };
+    auto parse_id = [&](std::string_view t, std::uint32_t& id, bool& extended) {
+        extended = !t.empty() && (t.back() == 'x' || t.back() == 'X');
+        if (extended) t.remove_suffix(1);
+        return parse_uint(t, id, base);
+    };
+    std::array<std::uint8_t, 64> data{};
+    auto parse_bytes = [&](std::string_view& r, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) {
+            std::uint32_t b = 0;
+            if (!parse_uint(next_token(r), b, base) || b > 255) return false;
+            data[i] = static_cast<std::uint8_t>(b);
+        }
+        return true;
+    };
+    if (channel == "CANFD") {
+        // time CANFD channel dir id [name] brs esi dlc length data... duration bits flags crc ...
+        channel = next_token(rest);
+        next_token(rest);  // Rx / Tx
+        std::uint32_t id = 0;
+        bool extended = false;
+        if (!parse_id(next_token(rest), id, extended))
+            return bad("malformed ASC CANFD line (identifier)", s);
+        auto brs = next_token(rest);
+        if (brs != "0" && brs != "1") brs = next_token(rest);  // a symbolic name came first
+        next_token(rest);                                      // esi
+        next_token(rest);                                      // dlc
+        std::uint32_t length = 0;
+        if (!parse_uint(next_token(rest), length, 10) || length > 64)
+            return bad("malformed ASC CANFD line (length)", s);
+        if (!parse_bytes(rest, length)) return bad("malformed ASC CANFD line (data)", s);
+        next_token(rest);  // message duration
+        next_token(rest);  // bit count
+        std::uint32_t flags = 0;
+        if (!parse_uint(next_token(rest), flags)) return bad("malformed ASC CANFD line (flags)", s);
+        if ((flags & 0x1000u) != 0 || length > 8) return skip_one(skip::fd);  // EDL
+        if ((flags & 0x10u) != 0) return skip_one(skip::remote);
+        return emit_raw(id, extended, {data.data(), length}, time, interface_of(channel));
+    }
+    const auto id_text = next_token(rest);
+    if (id_text == "ErrorFrame") return skip_one(skip::error_frame);
+    std::uint32_t id = 0;
+    bool extended = false;
+    if (!parse_id(id_text, id, extended)) return;  // statistics, events, markers ...
+    const auto dir = next_token(rest);
+    if (dir != "Rx" && dir != "Tx" && dir != "TxRq") return;
+    const auto type = next_token(rest);
+    if (type == "r") return skip_one(skip::remote);
+    if (type != "d") return bad("malformed ASC line (expected d or r after the direction)", s);
+    std::uint32_t dlc = 0;
+    if (!parse_uint(next_token(rest), dlc, 16) || dlc > 15)
+        return bad("malformed ASC line (length)", s);
+    const std::size_t n = dlc > 8 ? 8 : dlc;
+    if (!parse_bytes(rest, n)) return bad("malformed ASC line (data)", s);
+    emit_raw(id, extended, {data.data(), n}, time, interface_of(channel));
+}
+
+// --- PEAK TRC
+// -------------------------------------------------------------------------------------
+
+void reader::trc_line(std::string_view s) {
+    if (s.front() == ';') {
+        if (starts_with(s, ";$FILEVERSION=")) {
+            const auto v = trim(s.substr(14));
+            trc_v1_ = starts_with(v, "1.");
+            trc_columns_ = v == "1.1"   ? "NOTILD"
+                           : v == "1.2" ? "NOBTILD"
+                           : v == "1.3" ? "NOBTIRLD"
+                           : v == "2.0" ? "NOTIdlD"
+                           : v == "2.1" ? "NOTBIdRLD"
+                                        : "NOILD";
+        } else if (starts_with(s, ";$COLUMNS=")) {
+            trc_columns_.clear();
+            for (char c : s.substr(10))
+                if (c != ',' && c != ' ' && c != '\r') trc_columns_ += c;
+        }
+        return;
+    }
+    std::string_view rest = s;
+    std::string_view time, type, bus, id_text, dlc_text, len_text;
+    for (char c : trc_columns_) {
+        if (c == 'D') break;
+        const auto t = next_token(rest);
+        switch (c) {
+            case 'O': time = t; break;
+            case 'T': type = t; break;
+            case 'B': bus = t; break;
+            case 'I': id_text = t; break;
+            case 'L': dlc_text = t; break;
+            case 'l': len_text = t; break;
+            default: break;  // N, d, R
+        }
+    }
+    if (trc_v1_) {
+        if (!type.empty() && type != "Rx" && type != "Tx") return skip_one(skip::error_frame);
+    } else if (type != "DT") {
+        if (type == "RR") return skip_one(skip::remote);
+        if (type == "FD" || type == "FB" || type == "FE" || type == "BI") return skip_one(skip::fd);
+        if (type == "ER") return skip_one(skip::error_frame);
+        return;  // status, error counter and event lines
+    }
+    std::uint32_t id = 0;
+    if (!parse_uint(id_text, id)) return bad("malformed TRC line (identifier)", s);
+    if (trc_v1_ && trc_columns_ == "NOILD" && id == 0xFFFF'FFFFu) return;  // 1.0 bus information
+    std::uint32_t length = 0;
+    if (!parse_uint(len_text.empty() ? dlc_text : len_text, length, 10))
+        return bad("malformed TRC line (length)", s);
+    std::string_view data_rest = rest;
+    if (next_token(data_rest) == "RTR") return skip_one(skip::remote);
+    if (length > 8) return skip_one(skip::fd);
+    std::array<std::uint8_t, 8> data{};
+    for (std::uint32_t i = 0; i < length; ++i) {
+        std::uint32_t b = 0;
+        if (!parse_uint(next_token(rest), b) || b > 255) return bad("malformed TRC line (data)", s);
+        data[i] = static_cast<std::uint8_t>(b);
+    }
+    char t[40];
+    std::snprintf(t, sizeof t, "%.6f", std::strtod(std::string(time).c_str(), nullptr) / 1000.0);
+    time_buf_ = t;
+    std::string_view interface;
+    if (std::uint32_t n = 0; parse_uint(bus, n, 10) && n > 0) {
+        iface_buf_ = "can" + std::to_string(n - 1);  // PEAK buses count from 1
+        interface = iface_buf_;
+    }
+    emit_raw(id, id_text.size() > 4, {data.data(), length}, time_buf_, interface);
+}
+
+// --- python-can CSV
+// -------------------------------------------------------------------------------
+
+void reader::csv_line(std::string_view s) {
+    std::array<std::string_view, 16> cells{};
+    std::size_t n = 0;
+    for (std::string_view r = s; n < cells.size();) {
+        const auto comma = r.find(',');
+        cells[n++] = trim(r.substr(0, comma));
+        if (comma == std::string_view::npos) break;
+        r.remove_prefix(comma + 1);
+    }
+    static constexpr std::string_view names[7] = {
+        "timestamp", "arbitration_id", "extended", "remote", "error", "dlc", "data"};
+    if (cells[0] == "timestamp") {
+        for (std::size_t k = 0; k < 7; ++k) {
+            csv_col_[k] = -1;
+            for (std::size_t i = 0; i < n; ++i)
+                if (cells[i] == names[k]) csv_col_[k] = static_cast<int>(i);
+        }
+        return;
+    }
+    auto cell = [&](std::size_t k) -> std::string_view {
+        const int i = csv_col_[k];
+        return i >= 0 && static_cast<std::size_t>(i) < n ? cells[static_cast<std::size_t>(i)]
+                                                         : std::string_view{};
+    };
+    if (cell(4) == "1") return skip_one(skip::error_frame);
+    if (cell(3) == "1") return skip_one(skip::remote);
+    auto id_text = cell(1);
+    std::uint32_t id = 0;
+    const bool hex = starts_with(id_text, "0x") || starts_with(id_text, "0X");
+    if (hex) id_text.remove_prefix(2);
+    if (!parse_uint(id_text, id, hex ? 16 : 10)) return bad("malformed CSV line (identifier)", s);
+    std::vector<std::uint8_t> data;
+    if (!base64_decode(cell(6), data)) return bad("malformed CSV line (data is not base64)", s);
+    if (data.size() > 8) return skip_one(skip::fd);
+    emit_raw(id, cell(2) == "1", data, cell(0), {});
+}
+
+// --- Vector BLF
+// -----------------------------------------------------------------------------------
+
+void reader::blf_feed(std::string_view bytes) {
+    if (blf_broken_) return;
+    blf_in_.append(bytes);
+    std::size_t pos = 0;
+    if (!blf_header_done_) {
+        if (blf_in_.size() < 8) return;
+        const std::uint32_t header_size = le32(blf_in_, 4);
+        if (header_size < 8 || header_size > 4096) {
+            blf_broken_ = true;
+            return bad("the BLF file header has an impossible size", "");
+        }
+        if (blf_in_.size() < header_size) return;
+        if (header_size >= 56 && le16(blf_in_, 40) >= 1970) {  // start: a SYSTEMTIME at byte 40
+            std::tm t{};
+            t.tm_year = le16(blf_in_, 40) - 1900;
+            t.tm_mon = le16(blf_in_, 42) - 1;
+            t.tm_mday = le16(blf_in_, 46);
+            t.tm_hour = le16(blf_in_, 48);
+            t.tm_min = le16(blf_in_, 50);
+            t.tm_sec = le16(blf_in_, 52);
+            blf_start_ = static_cast<double>(timegm(&t)) + le16(blf_in_, 54) / 1000.0;
+        }
+        blf_header_done_ = true;
+        pos = header_size;
+    }
+    std::size_t used = 0;
+    blf_objects(std::string_view(blf_in_).substr(pos), true, false, used);
+    blf_in_.erase(0, pos + used);
+}
+
+// Walks the objects of `data`; `used` says how far the complete ones reach.
+void reader::blf_objects(std::string_view data, bool top, bool final, std::size_t& used) {
+    std::size_t pos = 0;
+    used = 0;
+    for (;;) {
+        if (blf_broken_) return;
+        // Objects are padded to 4 bytes (inside containers not always): find the next signature.
+        std::size_t at = pos;
+        bool found = false;
+        for (; at < pos + 8 && at + 4 <= data.size(); ++at)
+            if (data.substr(at, 4) == "LOBJ") {
+                found = true;
+                break;
+            }
+        if (!found && pos + 12 <= data.size()) {
+            blf_broken_ = true;
+            return bad("a BLF object without its LOBJ signature (damaged file?)", "");
+        }
+        if (!found || at + blf_base_header > data.size()) {
+            used = pos;
+            return;
+        }
+        const std::uint32_t size = le32(data, at + 8);
+        const std::uint32_t type = le32(data, at + 12);
+        if (size < blf_base_header) {
+            blf_broken_ = true;
+            return bad("a BLF object with an impossible size (damaged file?)", "");
+        }
+        // Top-level objects are followed by size % 4 padding bytes (the last one maybe not).
+        const std::size_t pad = top ? size % 4 : 0;
+        if (at + size > data.size() || (top && !final && at + size + pad > data.size())) {
+            used = pos;
+            return;
+        }
+        ++line_;
+        blf_object(data.substr(at, size), type);
+        pos = at + size + pad;
+        if (pos > data.size()) pos = data.size();
+        used = pos;
+    }
+}
+
+void reader::blf_object(std::string_view obj, std::uint32_t type) {
+    constexpr std::uint32_t can_message = 1, log_container = 10, can_error_ext = 73,
+                            can_message2 = 86, can_fd_message = 100, can_fd_message_64 = 101;
+    if (type == log_container) {
+        if (obj.size() < blf_base_header + 16) return bad("a BLF container too short", "");
+        const std::uint16_t method = le16(obj, blf_base_header);
+        const std::uint32_t size = le32(obj, blf_base_header + 8);
+        const auto payload = obj.substr(blf_base_header + 16);
+        // Writers use containers of about 128 KiB; a size from a damaged file is not allocated.
+        if (size > (16u << 20))
+            return bad("a BLF container larger than 16 MiB (damaged file?)", "");
+        std::string inner = std::move(blf_inner_);  // the tail of the previous container
+        blf_inner_.clear();
+        if (method == 0) {
+            inner.append(payload);
+        } else if (method == 2) {
+            const std::size_t old = inner.size();
+            inner.resize(old + size);
+            uLongf out = size;
+            const int rc = uncompress(reinterpret_cast<Bytef*>(inner.data() + old), &out,
+                                      reinterpret_cast<const Bytef*>(payload.data()),
+                                      static_cast<uLong>(payload.size()));
+            if (rc != Z_OK) {
+                blf_inner_ = inner.substr(0, old);
+                return bad("a BLF container that zlib cannot uncompress (damaged file?)", "");
+            }
+            inner.resize(old + out);
+        } else {
+            return bad("a BLF container compressed by an unknown method", "");
+        }
+        std::size_t used = 0;
+        blf_objects(inner, false, false, used);
+        blf_inner_.assign(inner, used);
+        return;
+    }
+    if (type != can_message && type != can_message2 && type != can_error_ext &&
+        type != can_fd_message && type != can_fd_message_64)
+        return;  // markers, statistics, other buses
+    const std::uint16_t header_size = le16(obj, 4);
+    const std::uint16_t header_version = le16(obj, 6);
+    if ((header_version != 1 && header_version != 2) || header_size < 32 ||
+        header_size > obj.size())
+        return bad("a BLF object header of an unknown version", "");
+    const std::uint32_t flags = le32(obj, blf_base_header);
+    const std::uint64_t stamp = le64(obj, blf_base_header + 8);
+    const double seconds =
+        blf_start_ + static_cast<double>(stamp) * (flags == 1 ? 1e-5 : 1e-9);  // 10 us or 1 ns
+    char t[40];
+    std::snprintf(t, sizeof t, "%.6f", seconds);
+    time_buf_ = t;
+    const auto body = obj.substr(header_size);
+    auto interface = [this](unsigned channel) -> std::string_view {
+        iface_buf_ = "can" + std::to_string(channel > 0 ? channel - 1 : 0);  // counted from 1
+        return iface_buf_;
+    };
+    if (type == can_error_ext) return skip_one(skip::error_frame);
+    std::array<std::uint8_t, 8> data{};
+    if (type == can_message || type == can_message2) {
+        // channel, flags (bit 0 transmitted, bit 7 remote), dlc, id (bit 31 extended), 8 bytes
+        if (body.size() < 16) return bad("a BLF CAN message too short", "");
+        const auto msg_flags = static_cast<unsigned char>(body[2]);
+        const unsigned dlc = static_cast<unsigned char>(body[3]);
+        const std::uint32_t id = le32(body, 4);
+        if ((msg_flags & 0x80u) != 0) return skip_one(skip::remote);
+        const unsigned n = dlc > 8 ? 8 : dlc;
+        for (unsigned i = 0; i < n; ++i) data[i] = static_cast<std::uint8_t>(body[8 + i]);
+        return emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), n}, time_buf_,
+                        interface(le16(body, 0)));
+    }
+    if (type == can_fd_message) {
+        // channel, flags, dlc, id, frame length, bit count, FD flags, valid bytes, 5 reserved, data
+        if (body.size() < 20) return bad("a BLF CAN FD message too short", "");
+        const auto msg_flags = static_cast<unsigned char>(body[2]);
+        const std::uint32_t id = le32(body, 4);
+        const auto fd_flags = static_cast<unsigned char>(body[13]);
+        const unsigned valid = static_cast<unsigned char>(body[14]);
+        if ((fd_flags & 0x1u) != 0 || valid > 8) return skip_one(skip::fd);
+        if ((msg_flags & 0x80u) != 0) return skip_one(skip::remote);
+        if (body.size() < 20 + valid) return bad("a BLF CAN FD message too short", "");
+        for (unsigned i = 0; i < valid; ++i) data[i] = static_cast<std::uint8_t>(body[20 + i]);
+        return emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), valid},
+                        time_buf_, interface(le16(body, 0)));
+    }
+    // CAN_FD_MESSAGE_64: channel, dlc, valid bytes, tx count, id, frame length, flags (EDL 1000h,
+    // remote 10h), ... 40 bytes, then the data.
+    if (body.size() < 40) return bad("a BLF CAN FD message too short", "");
+    const unsigned valid = static_cast<unsigned char>(body[2]);
+    const std::uint32_t id = le32(body, 4);
+    const std::uint32_t fd_flags = le32(body, 12);
+    if ((fd_flags & 0x1000u) != 0 || valid > 8) return skip_one(skip::fd);
+    if ((fd_flags & 0x10u) != 0) return skip_one(skip::remote);
+    if (body.size() < 40 + valid) return bad("a BLF CAN FD message too short", "");
+    for (unsigned i = 0; i < valid; ++i) data[i] = static_cast<std::uint8_t>(body[40 + i]);
+    emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), valid}, time_buf_,
+             interface(static_cast<unsigned char>(body[0])));
+}
+
+}  // namespace tool::logs

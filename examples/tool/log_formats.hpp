@@ -1,0 +1,127 @@
+// powerkey tool: every bus-log form people have, told apart by their content, read into CAN
+// frames. The readers know nothing of keypads: they give a frame, its time and interface as
+// written (or computed, for the binary and millisecond forms) and the line it came from.
+//
+//   candump     (1700000000.000000) can0 195#0900000012 [R|T]   candump -l / -L, python-can,
+//   asc2log
+//               195#09.00.00.00.12                               cansend arguments (dots allowed)
+//               (1700000000.000000)  can0  RX - -  195   [5]  09 00 00 00 12  '.....'
+//                                            candump's screen form, with -t, -x and -a
+//   asc         Vector ASC (CANoe, python-can, can-utils log2asc, also its -f CANFD form)
+//   trc         PEAK TRC 1.0 to 1.3 and 2.0/2.1 (PCAN-View, python-can)
+//   csv         python-can CSV (timestamp,arbitration_id,extended,remote,error,dlc,data)
+//   blf         Vector BLF, objects CAN_MESSAGE/CAN_MESSAGE2/CAN_FD_MESSAGE(_64) in plain or zlib
+//               compressed log containers
+//
+// Remote frames, CAN FD frames and error frames are valid log content the tool cannot decode;
+// they are counted by kind (`skipped`), not reported per line.
+#ifndef POWERKEY_TOOL_LOG_FORMATS_HPP
+#define POWERKEY_TOOL_LOG_FORMATS_HPP
+
+#include <powerkey/can/frame.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tool::logs {
+
+enum class format : std::uint8_t { unknown, candump, asc, trc, csv, blf, not_a_log };
+
+[[nodiscard]] std::string_view to_string(format f) noexcept;
+
+struct record {
+    powerkey::can::frame frame;
+    std::string_view time;       // seconds; empty when the log has none. Valid in the call only.
+    std::string_view interface;  // empty when the log has none. Valid in the call only.
+    std::size_t line = 0;        // line of a text log, object number of a BLF file
+};
+
+// What a reader passes over without a frame.
+enum class skip : std::uint8_t { remote, fd, error_frame };
+inline constexpr std::size_t skip_kinds = 3;
+[[nodiscard]] std::string_view to_string(skip s) noexcept;
+
+// Receives what a reader finds. `problem` is a line that should have been a frame and is not:
+// `why` is one short phrase (a constant), `text` the line (untrusted: escape before printing).
+class sink {
+public:
+    virtual ~sink() = default;
+    virtual void frame(const record& r) = 0;
+    virtual void problem(std::size_t line, std::string_view why, std::string_view text) = 0;
+};
+
+// One input stream. Feed it the bytes in any chunks; finish() at the end.
+class reader {
+public:
+    explicit reader(sink& out) : out_(out) {}
+    void feed(std::string_view bytes);
+    void finish();
+
+    [[nodiscard]] format detected() const noexcept { return format_; }
+    [[nodiscard]] std::size_t frames() const noexcept { return frames_; }
+    [[nodiscard]] std::size_t problems() const noexcept { return problems_; }
+    [[nodiscard]] std::size_t skipped(skip s) const noexcept {
+        return skipped_[static_cast<std::size_t>(s)];
+    }
+    [[nodiscard]] std::size_t first_skipped(skip s) const noexcept {
+        return first_skipped_[static_cast<std::size_t>(s)];
+    }
+    // For a stream with no frames: what its first lines or bytes look like, as a phrase that
+    // follows "looks like" (e.g. "a pcap capture"); empty when it looks like nothing known.
+    [[nodiscard]] const std::string& looks_like() const noexcept { return looks_like_; }
+
+private:
+    void text_feed(std::string_view bytes);
+    void line(std::string_view text);
+    bool detect_binary(std::string_view first_bytes);
+    void detect(std::string_view first);
+    void candump_line(std::string_view s);
+    void asc_line(std::string_view s);
+    void trc_line(std::string_view s);
+    void csv_line(std::string_view s);
+    void blf_feed(std::string_view bytes);
+    void blf_objects(std::string_view data, bool top, bool final, std::size_t& used);
+    void blf_object(std::string_view obj, std::uint32_t type);
+    void emit(const powerkey::can::frame& f, std::string_view time, std::string_view interface);
+    void emit_raw(std::uint32_t id, bool extended, std::span<const std::uint8_t> data,
+                  std::string_view time, std::string_view interface);
+    void skip_one(skip s);
+    void bad(std::string_view why, std::string_view text);
+
+    sink& out_;
+    format format_ = format::unknown;
+    std::string carry_;
+    std::size_t line_ = 0;
+    bool started_ = false;
+    std::size_t frames_ = 0;
+    std::size_t problems_ = 0;
+    std::array<std::size_t, skip_kinds> skipped_{};
+    std::array<std::size_t, skip_kinds> first_skipped_{};
+    std::string looks_like_;
+    std::string time_buf_;
+    std::string iface_buf_;
+    // ASC
+    bool asc_decimal_ = false;
+    // TRC: the column letters of a data line (N O T B I d R L l D), from the version or $COLUMNS
+    std::string trc_columns_ = "NOILD";
+    bool trc_v1_ = true;
+    // CSV: column positions
+    std::array<int, 7> csv_col_{0, 1, 2, 3, 4, 5, 6};
+    // BLF
+    std::string blf_in_;
+    std::string blf_inner_;
+    bool blf_header_done_ = false;
+    bool blf_broken_ = false;
+    double blf_start_ = 0;
+};
+
+// Helpers shared with the tests.
+[[nodiscard]] bool base64_decode(std::string_view in, std::vector<std::uint8_t>& out);
+
+}  // namespace tool::logs
+
+#endif
