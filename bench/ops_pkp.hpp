@@ -52,7 +52,8 @@ inline constexpr std::array pkp_sdo_response_frames = {
 };
 
 inline constexpr std::array pkp_key_messages = {
-    powerkey::message{powerkey::key_state{{}, 0x11}}, powerkey::message{powerkey::key_state{{1}, 0x12}},
+    powerkey::message{powerkey::key_state{{}, 0x11}},
+    powerkey::message{powerkey::key_state{{1}, 0x12}},
     powerkey::message{powerkey::key_state{{2}, 0x13}},
     powerkey::message{powerkey::key_state{{2, 7}, 0x14}}};
 inline constexpr std::array pkp_led_messages = {

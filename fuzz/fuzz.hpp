@@ -386,7 +386,9 @@ inline void put_value(std::vector<std::uint8_t>& out, const command& c) {
     put_value(out, c.node_id);
     put_value(out, c.show);
 }
-inline void put_value(std::vector<std::uint8_t>& out, const sdo_read& m) { put_value(out, m.object); }
+inline void put_value(std::vector<std::uint8_t>& out, const sdo_read& m) {
+    put_value(out, m.object);
+}
 inline void put_value(std::vector<std::uint8_t>& out, const sdo_write_reply& m) {
     put_value(out, m.object);
 }

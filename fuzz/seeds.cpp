@@ -13,9 +13,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <type_traits>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 

@@ -58,8 +58,7 @@ struct StringMaker<powerkey::result<T>> {
     static String convert(const powerkey::result<T>& r) {
         if (!r) return String("error ") + StringMaker<powerkey::errc>::convert(r.error());
         if constexpr (std::is_same_v<T, powerkey::message> ||
-                      std::is_same_v<T, powerkey::can::frame> ||
-                      std::is_same_v<T, powerkey::errc>)
+                      std::is_same_v<T, powerkey::can::frame> || std::is_same_v<T, powerkey::errc>)
             return StringMaker<T>::convert(*r);
         else
             return String("a value");

@@ -46,7 +46,6 @@ namespace calls {
         const auto lit = pk::led_set::from_mask(keys->mask());
         firmware::transmit(calls::build_leds(co::function::rpdo1, node, pk::leds{lit, {}, {}}));
         firmware::transmit(calls::build_leds(
-            co::function::rpdo2, node,
-            pk::leds{keys->contains(10) ? lit : pk::led_set{}, {}, {}}));
+            co::function::rpdo2, node, pk::leds{keys->contains(10) ? lit : pk::led_set{}, {}, {}}));
     }
 }

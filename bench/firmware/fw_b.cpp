@@ -1,8 +1,8 @@
 // Footprint firmware (b): a bus monitor that carries the whole any-frame decoder, both object
-// dictionaries and every model (the model is read at run time from a configuration register, so nothing can be
-// left out). For each frame it reports the kind of message, or the error, in a status register.
-// Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
-// can report the stack each one needs.
+// dictionaries and every model (the model is read at run time from a configuration register, so
+// nothing can be left out). For each frame it reports the kind of message, or the error, in a
+// status register. Each library call sits in its own function of namespace `calls`, so that
+// scripts/footprint.sh can report the stack each one needs.
 #include <powerkey/keypad/codec.hpp>
 
 #include "mailbox.hpp"
