@@ -9,7 +9,7 @@
 //
 // What it does, each with the manual section it comes from (PK1000 = PK1000_CANopen_UM_rev1.13,
 // PKP = PKP-2200-2400-LI_CANopen_UM_rev1.1; the SI family as the PK1000 where its manuals agree,
-// reference/si-family.md), and what is inferred, is listed in docs/behaviour.md. What a model has
+// docs/si-family.md), and what is inferred, is listed in docs/behaviour.md. What a model has
 // (1016h, writable transmission types, J1939, LED mask) comes from its model and dictionary rows.
 // Allocation-free, exception-free, constexpr: a whole session can run in a static_assert.
 #ifndef POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
@@ -62,7 +62,7 @@ constexpr std::uint16_t bit(model m) noexcept {
 inline constexpr std::uint16_t pk1000_bit = bit(model::pk1000), pkp2200_bit = bit(model::pkp2200),
                                pkp2400_bit = bit(model::pkp2400), pkp2600_bit = bit(model::pkp2600),
                                pkp_bits = pkp2200_bit | pkp2400_bit | pkp2600_bit;
-// The SI family (reference/si-family.md): the PKP-2600-SI and PKP-3500-MT manuals print their
+// The SI family (docs/si-family.md): the PKP-2600-SI and PKP-3500-MT manuals print their
 // strings; the other SI models' are inferred from the PKP-2600-SI's and their reported names.
 inline constexpr std::uint16_t si_bits =
     bit(model::pkp2600si) | bit(model::pkp3500mt) | bit(model::pkp3500si) | bit(model::pkp2500si) |
@@ -121,7 +121,7 @@ inline constexpr keypad_string keypad_strings[] = {
     {detail::bit(model::pkp3500mt), object::software_version, detail::bytes_of("1.00"), 4, true,
      "MT 38"},
     {detail::bit(model::pkp1500li), object::software_version, detail::bytes_of("2.10"), 4, true,
-     "reference/si-family.md"},
+     "docs/si-family.md"},
     {static_cast<std::uint16_t>(detail::si_inferred & ~detail::bit(model::pkp1500li)),
      object::software_version, detail::bytes_of("V2.8"), 4, true, "inferred from PKP2600SI 32"},
     {detail::bit(model::pkp2600si), object::model_name, detail::bytes_of("PKP2600SI"), 9, true,
@@ -129,9 +129,9 @@ inline constexpr keypad_string keypad_strings[] = {
     {detail::bit(model::pkp3500mt), object::model_name, detail::bytes_of("PKP3500MT"), 9, true,
      "MT 39"},
     {detail::bit(model::pkp3500si), object::model_name, detail::bytes_of("PKP3500SI"), 9, true,
-     "reference/si-family.md"},
+     "docs/si-family.md"},
     {detail::bit(model::pkp1500li), object::model_name, detail::bytes_of("PKP1500LI"), 9, true,
-     "reference/si-family.md"},
+     "docs/si-family.md"},
     {detail::bit(model::pkp2500si), object::model_name, detail::bytes_of("PKP2500SI"), 9, true,
      "inferred from the naming"},
     {detail::bit(model::pkp2200si), object::model_name, detail::bytes_of("PKP2200SI"), 9, true,
