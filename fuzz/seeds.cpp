@@ -3,12 +3,15 @@
 // The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
 // binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic;
 // the encoder's seeds are the same frames decoded, written in the form fill_any reads (put_any).
-// The rows are tests/decoder_rows.hpp's types: every table (core, PK1000, PKP) seeds the decoder
-// for each model of its row, and the encode_error_rows seed the encoder with refused messages.
+// The rows are tests/decoder_rows.hpp's types: every table (core, PK1000, PKP, the SI manuals'
+// rows and the SI reference rows) seeds the decoder for each model of its row, and the
+// encode_error_rows seed the encoder with refused messages.
 #include "decoder_rows.hpp"
 #include "fuzz.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
+#include "si_reference_rows.hpp"
+#include "si_rows.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
     // bus logs for the session follower (model byte, node, then each frame as an arbitrary frame:
     // kind byte 0).
     std::vector<std::uint8_t> pk1000_log{0, node_byte(0x15)}, pkp_log{2, node_byte(0x15)};
+    std::vector<std::uint8_t> mt_log{static_cast<std::uint8_t>(model::pkp3500mt), node_byte(0x15)};
     auto log_frame = [](std::vector<std::uint8_t>& log, const can::frame& f) {
         if (log.size() > 600) return;
         log.push_back(0);
@@ -149,25 +153,34 @@ int main(int argc, char** argv) {
             w.add("encode", e);
         });
     };
+    // A row goes into the log when it is for node 15h and for the log's model (its first byte).
     auto add_table = [&](const auto& rows, std::vector<std::uint8_t>* log) {
         for (const auto& r : rows) {
             const auto f = add_frame(r.frame, r.models, r.node);
             add_message(r.models, r.node, r.expected);
-            if (log != nullptr && r.node == 0x15) log_frame(*log, f);
+            if (log != nullptr && r.node == 0x15 &&
+                decoder_rows::applies(r.models, static_cast<model>(log->front())))
+                log_frame(*log, f);
         }
     };
     add_table(decoder_rows::core_rows, nullptr);
     add_table(pk1000_rows::rows, &pk1000_log);
     add_table(pkp_rows::rows, &pkp_log);
+    add_table(si_rows::rows, &mt_log);
+    add_table(si_reference_rows::rows, nullptr);
     for (const auto& r : decoder_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pkp_rows::error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : si_rows::error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : si_rows::errata_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : si_reference_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
     for (const auto& r : pkp_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
     for (const auto& r : decoder_rows::core_rows)
         w.add("core_decode", node_and_frame(node_byte(0x15), can::parse_candump(r.frame).value()));
     w.add("session", pk1000_log);
     w.add("session", pkp_log);
+    w.add("session", mt_log);
 
     // One seed per core message kind: the selector, a node, zero fields.
     for (std::uint8_t which = 0; which < 13; ++which)
