@@ -174,3 +174,34 @@ TEST_CASE("every manual row of every keypad has a description that fits 160 char
     check_fits(pk1000_rows::rows);
     check_fits(pkp_rows::rows);
 }
+
+// One field at a time, as the tool and the Wireshark plugin show them: describe()'s own rule
+// (counts and times in decimal, other numbers in hex with h, enumerators by name, sets as ranges).
+constexpr std::string_view value_text(std::span<char> buf, std::string_view name, auto v) {
+    text_writer w(buf);
+    describe_value(w, name, v);
+    return w.view();
+}
+
+TEST_CASE("describe_value writes one field as describe() does") {
+    std::array<char, 40> buf{};
+    CHECK(value_text(buf, "period_ms", std::uint16_t{100}) == "100");
+    CHECK(value_text(buf, "supply_mv", std::uint16_t{12000}) == "12000");
+    CHECK(value_text(buf, "index", std::uint16_t{0x2003}) == "2003h");
+    CHECK(value_text(buf, "can_id", std::uint16_t{0x215}) == "215h");
+    CHECK(value_text(buf, "level", std::uint8_t{0x20}) == "20h");
+    CHECK(value_text(buf, "colour", backlight_colour::blue) == "blue");
+    CHECK(value_text(buf, "colour", static_cast<backlight_colour>(0xEE)) == "EEh");
+    CHECK(value_text(buf, "invalid", true) == "yes");
+    CHECK(value_text(buf, "red", led_set{}) == "-");
+    CHECK(value_text(buf, "red", led_set{1, 2, 3, 7}) == "1-3 7");
+}
+
+TEST_CASE("is_decimal_field: counts and times in decimal, every other number in hex") {
+    for (const auto name :
+         {"tick", "period_ms", "period_10ms", "size", "bits", "key", "subindex", "unused",
+          "priority", "encoder", "ticks", "counter", "top", "event_timer_ms", "input_1_mv"})
+        CHECK_MESSAGE(is_decimal_field(name), name);
+    for (const auto name : {"level", "index", "can_id", "node_id", "target", "source", "raw", "ms"})
+        CHECK_MESSAGE(!is_decimal_field(name), name);
+}

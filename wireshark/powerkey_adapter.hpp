@@ -10,8 +10,8 @@
 //               field (the object of an SDO value, the code of a command: the fields that follow
 //               depend on it); field types through named_enum, enum_names<E>::entries,
 //               enum_values<E>(), is_index_set, is_byte_array, is_bounded, integers; how a value
-//               reads through describe's detail::put_value (and detail::put_number for which
-//               numbers are hex), text_writer
+//               reads through describe_value (and is_decimal_field for which numbers are
+//               hex), text_writer
 //   session     session<text_capacity>(model, node), step(frame) -> session_event: cls
 //               (canopen::cob_info: fn, node), node, sdo (sdo_pairing::none, to_string), request
 //               (index, subindex), upload_done + session::text(), upload_error (errc{},
@@ -117,13 +117,8 @@ std::vector<std::pair<std::uint32_t, std::string>> value_names_of() {
 }
 
 // Whether the library writes numbers of this field name in hex ("15h") or in decimal (counts
-// and times): describe's own rule, asked with the number 10.
-inline bool hex_number(std::string_view name) {
-    std::array<char, 16> buf{};
-    powerkey::text_writer w(buf);
-    powerkey::detail::put_number(w, name, 10, 1);
-    return w.view().ends_with('h');
-}
+// and times): describe's own rule.
+inline bool hex_number(std::string_view name) { return !powerkey::is_decimal_field(name); }
 
 template <class T>
 void note_field(seen_field& s, std::string_view name) {
@@ -341,7 +336,7 @@ template <class T>
 std::string described(std::string_view name, const T& v) {
     std::array<char, 128> buf{};
     powerkey::text_writer w(buf);
-    powerkey::detail::put_value(w, name, v);
+    powerkey::describe_value(w, name, v);
     return std::string(w.view());
 }
 

@@ -79,13 +79,8 @@ inline bool parse_number(std::string_view s, std::uint64_t& out) {
 }
 
 // Fields whose numbers print in hex (with h): all but counts and times, the rule of describe()
-// (describe.hpp's decimal_fields and the _mv / _ms suffixes), so that errors quote ranges the way
-// decode's text prints values.
-inline bool hex_field(std::string_view name) {
-    for (const auto d : powerkey::detail::decimal_fields)
-        if (d == name) return false;
-    return !(name.ends_with("_mv") || name.ends_with("_ms"));
-}
+// (powerkey::is_decimal_field), so that errors quote ranges the way decode's text prints values.
+inline bool hex_field(std::string_view name) { return !powerkey::is_decimal_field(name); }
 
 // --- text ---------------------------------------------------------------------------------------
 
@@ -97,13 +92,13 @@ constexpr std::uint64_t max_of() {
         return std::numeric_limits<T>::max();
 }
 
-// Appends the text form of a field value: describe()'s own (its put_value), so list, errors and
+// Appends the text form of a field value: describe()'s own (describe_value), so list, errors and
 // decode's text agree.
 template <class T>
 void write_text_value(std::string& out, std::string_view name, const T& v) {
     std::array<char, 160> buf{};
     powerkey::text_writer w(buf);
-    powerkey::detail::put_value(w, name, v);
+    powerkey::describe_value(w, name, v);
     out += w.view();
 }
 

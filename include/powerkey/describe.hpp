@@ -94,11 +94,21 @@ constexpr std::string_view decimal_fields[] = {
     "tick",   "period_ms", "period_10ms", "size",  "bits",    "key", "subindex",
     "unused", "priority",  "encoder",     "ticks", "counter", "top"};
 
+}  // namespace detail
+
+// Whether describe() writes the numbers of field `name` in decimal (counts and times: the list
+// above, and names ending in _ms or _mv) rather than in hex with h.
+[[nodiscard]] constexpr bool is_decimal_field(std::string_view name) noexcept {
+    for (auto d : detail::decimal_fields)
+        if (d == name) return true;
+    return name.ends_with("_mv") || name.ends_with("_ms");
+}
+
+namespace detail {
+
 constexpr void put_number(text_writer& w, std::string_view name, std::uint64_t v,
                           int width) noexcept {
-    for (auto d : decimal_fields)
-        if (d == name) return w.put_decimal(v);
-    if (name.ends_with("_mv") || name.ends_with("_ms")) return w.put_decimal(v);
+    if (is_decimal_field(name)) return w.put_decimal(v);
     int digits = 2;
     while (digits < 2 * width && (v >> (4 * digits)) != 0) ++digits;
     if (name == "index") digits = 4;
@@ -150,6 +160,13 @@ constexpr void put_value(text_writer& w, std::string_view name, const T& v) noex
 
 }  // namespace detail
 
+// Writes one field's value as describe() writes it after "name: " (a tool, a dissector or a
+// binding that shows fields one by one shows them the same way). An overflow is w's to report.
+template <class T>
+constexpr void describe_value(text_writer& w, std::string_view name, const T& v) noexcept {
+    detail::put_value(w, name, v);
+}
+
 // Writes the description of m, sent to or by keypad `node`, into `out`. Returns the text (a view
 // of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
 // 160 characters hold every message of every model.
@@ -165,7 +182,7 @@ template <class M>
         w.put("  ");
         w.put(name);
         w.put(": ");
-        detail::put_value(w, name, value);
+        describe_value(w, name, value);
     });
     if (w.overflow()) return errc::buffer_too_small;
     return w.view();
