@@ -2,37 +2,13 @@
 // arbitrary frame and node. Properties, for each decoder:
 //  - no crash, no undefined behaviour, no read of a data byte past the dlc (ASan poisons them);
 //  - a refusal carries a listed errc;
-//  - what decodes re-encodes to the same frame and decodes again to the same value (a fixed point);
+//  - what decodes re-encodes to the same frame and decodes again to the same value (a fixed point,
+//    properties.hpp's decode_fixed_point);
 //  - at most one decoder accepts a given frame, and the COB-ID classification agrees with it.
-#include "fuzz.hpp"
+#include "properties.hpp"
 
-namespace {
 using namespace powerkey;
 using namespace powerkey_fuzz;
-
-// Decodes under poison, then checks the refusal or the fixed point. Returns whether it decoded.
-template <class Decode, class Encode>
-bool round_trip(const can::frame& f, Decode decode, Encode encode) {
-    aligned_frame held{f};
-    auto decoded = [&] {
-        const poison_past_dlc guard(held.f);
-#ifdef POWERKEY_FUZZ_ASAN
-        POWERKEY_FUZZ_CHECK_FRAME(guard.effective(), f);
-#endif
-        return decode(held.f);
-    }();
-    if (!decoded) {
-        POWERKEY_FUZZ_CHECK_FRAME(is_listed(decoded.error()), f);
-        return false;
-    }
-    const can::frame encoded = encode(*decoded);
-    POWERKEY_FUZZ_CHECK_FRAME(encoded == f, f);
-    const auto again = decode(encoded);
-    POWERKEY_FUZZ_CHECK_FRAME(again.has_value() && *again == *decoded, f);
-    return true;
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     input in(data, size);
@@ -41,40 +17,40 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto info = canopen::classify(f);
 
     int accepted = 0;
-    if (round_trip(
+    if (decode_fixed_point(
             f, [](const can::frame& x) { return canopen::decode_nmt(x); },
             [](const auto& m) { return canopen::encode(m); })) {
         ++accepted;
         POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::nmt, f);
     }
-    if (round_trip(
+    if (decode_fixed_point(
             f, [](const can::frame& x) { return canopen::decode_sync(x); },
             [](const auto& m) { return canopen::encode(m); })) {
         ++accepted;
         POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::sync, f);
     }
-    if (round_trip(
+    if (decode_fixed_point(
             f, [node](const can::frame& x) { return canopen::decode_heartbeat(x, node); },
             [node](const auto& m) { return canopen::encode(node, m); })) {
         ++accepted;
         POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::heartbeat, f);
         POWERKEY_FUZZ_CHECK_FRAME(info.node == node.value(), f);
     }
-    if (round_trip(
+    if (decode_fixed_point(
             f, [node](const can::frame& x) { return canopen::decode_sdo_request(x, node); },
             [node](const auto& m) { return canopen::encode_request(node, m); })) {
         ++accepted;
         POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::sdo_rx, f);
         POWERKEY_FUZZ_CHECK_FRAME(info.node == node.value(), f);
     }
-    if (round_trip(
+    if (decode_fixed_point(
             f, [node](const can::frame& x) { return canopen::decode_sdo_response(x, node); },
             [node](const auto& m) { return canopen::encode_response(node, m); })) {
         ++accepted;
         POWERKEY_FUZZ_CHECK_FRAME(info.fn == canopen::function::sdo_tx, f);
         POWERKEY_FUZZ_CHECK_FRAME(info.node == node.value(), f);
     }
-    if (round_trip(
+    if (decode_fixed_point(
             f, [](const can::frame& x) { return j1939::decode_switch_to_canopen(x); },
             [](const auto& m) { return j1939::encode(m); })) {
         ++accepted;
