@@ -210,12 +210,12 @@ void from_py(T& v, py::handle o, std::string_view field) {
             std::string hex;
             for (const char c : text)
                 if (c != ' ') hex += c;
-            for (std::size_t i = 0; i + 1 < hex.size() + 1; i += 2) {
+            for (std::size_t i = 0; i < hex.size(); i += 2) {
                 const int hi = digit(hex[i]);
                 const int lo = i + 1 < hex.size() ? digit(hex[i + 1]) : -1;
                 if (hi < 0 || lo < 0)
-                    throw py::value_error(std::string(field) + ": '" + text +
-                                          "' is not hex bytes like 72696E");
+                    argument_error(std::string(field) + ": '" + text +
+                                   "' is not hex bytes like 72696E");
                 bytes += static_cast<char>((hi << 4) | lo);
             }
         } else if (py::isinstance<py::bytes>(o) || py::isinstance<py::bytearray>(o)) {
@@ -592,7 +592,8 @@ PYBIND11_MODULE(_powerkey, mod) {
              [](const py_message& a, py::handle b) {
                  return py::isinstance<py_message>(b) && a.m == b.cast<const py_message&>().m;
              })
-        .def("__hash__", [](const py_message&) { return 0; })
+        .def("__hash__",
+             [](const py_message& m) { return py::hash(py::str(std::string(kind_of(m.m)))); })
         .def("__repr__",
              [](const py_message& m) {
                  std::string s = "Message('" + std::string(kind_of(m.m)) + "'";
