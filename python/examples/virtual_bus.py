@@ -41,7 +41,7 @@ def main():
         node=args.node,
         configuration=[powerkey.message("sdo_write", object="led_brightness", level=0x30)],
         keypad_heartbeat=100,  # written to the keypad's 1017h during the setup
-        lost_after=350,
+        lost_after=1000,  # silent this long: lost (10 heartbeats; a loaded CI machine may stall)
     )
     listener = powerkey.Listener(model=args.model, node=args.node)
     notifier = can.Notifier(host_bus, [listener])

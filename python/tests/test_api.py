@@ -23,7 +23,8 @@ def test_model_by_name_enum_and_manual_name():
     ms = [powerkey.decode(*KEY3, model=m)
           for m in ("pkp2400", powerkey.Model.pkp2400, "PKP-2400-LI", "PKP-2400")]
     assert all(m == ms[0] for m in ms)
-    assert [str(n) for n in powerkey.names("model")] == [m.name for m in powerkey.Model.__members__.values()]
+    enum_names = [m.name for m in powerkey.Model.__members__.values()]
+    assert powerkey.names("model") == enum_names
     assert powerkey.parse_model("PKP-2400-LI") == powerkey.Model.pkp2400
     assert powerkey.model_info("pkp2400")["model"] == "pkp2400"
 
