@@ -1,0 +1,879 @@
+// powerkey._powerkey: the library for Python (docs/python.md). The package powerkey/ wraps it;
+// this module only speaks in plain Python values (ints, strs, lists, bytes) and the few types of
+// powerkey/_types.py, so that the vocabulary is the library's and the tool's JSON:
+//   - a message's fields come from the kind/fields convention (fields.hpp), written with the
+//     same rules as the tool's `decode --json` (examples/tool/field_value.hpp, write_json_value):
+//     bool, enum name (a number when unnamed), [keys], "HEX" bytes, numbers;
+//   - a message is built from a kind and fields as `powerkey encode` builds one, field by field
+//     through the same visitor;
+//   - a refusal raises powerkey.DecodeError / EncodeError whose `code` is the errc's name.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <powerkey/behaviour/controller.hpp>
+#include <powerkey/behaviour/virtual_keypad.hpp>
+#include <powerkey/describe.hpp>
+#include <powerkey/fields.hpp>
+#include <powerkey/keypad/accessors.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/names.hpp>
+#include <powerkey/session.hpp>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+namespace pb = powerkey::behaviour;
+using namespace powerkey;
+
+namespace {
+
+// --- the Python side's types (powerkey/_types.py), looked up once at import -------------------
+
+struct python_types {
+    py::object error, decode_error, encode_error, argument_error;
+    py::object led_map_update, backlight_update, to_frame;
+};
+python_types& types() {
+    // Leaked on purpose: Python objects must not be released after the interpreter is gone.
+    static auto* t = new python_types;
+    return *t;
+}
+
+[[noreturn]] void raise(const py::object& cls, const std::string& text, py::object code) {
+    const py::object e = cls(text, code);
+    PyErr_SetObject(cls.ptr(), e.ptr());
+    throw py::error_already_set();
+}
+[[noreturn]] void raise_code(const py::object& cls, const std::string& what, errc e) {
+    const std::string name(to_string(e));
+    raise(cls, what.empty() ? name : what + ": " + name, py::str(name));
+}
+[[noreturn]] void argument_error(const std::string& text) {
+    raise(types().argument_error, text, py::none());
+}
+
+std::string py_repr(py::handle o) { return py::repr(o).cast<std::string>(); }
+
+// --- names ----------------------------------------------------------------------------------
+
+template <named_enum E>
+py::object enum_to_py(E e) {
+    if (is_named(e)) return py::str(std::string(to_string(e)));
+    return py::int_(static_cast<std::uint64_t>(e));
+}
+
+// A value of E from its name (aliases too) or its number.
+template <named_enum E>
+E enum_from_py(py::handle o, const char* what) {
+    if (py::isinstance<py::str>(o)) {
+        const auto s = o.cast<std::string>();
+        if (const auto v = from_string<E>(s)) return *v;
+        std::string names;
+        for (const E v : enum_values<E>())
+            names.append(names.empty() ? "" : ", ").append(to_string(v));
+        argument_error(std::string(what) + ": unknown name '" + s + "' (" + names + ")");
+    }
+    if (py::isinstance<py::int_>(o) && !py::isinstance<py::bool_>(o)) {
+        using U = std::underlying_type_t<E>;
+        const auto n = o.cast<long long>();
+        if (n < 0 || static_cast<unsigned long long>(n) > std::numeric_limits<U>::max())
+            argument_error(std::string(what) + ": " + std::to_string(n) + " is outside 0.." +
+                           std::to_string(std::numeric_limits<U>::max()));
+        return static_cast<E>(static_cast<U>(n));
+    }
+    // A bound enum (powerkey.Model): its int value.
+    if (py::hasattr(o, "value") && py::isinstance<py::int_>(o.attr("value")))
+        return enum_from_py<E>(o.attr("value"), what);
+    throw py::type_error(std::string(what) + ": expected a name or a number, not " + py_repr(o));
+}
+
+model model_from_py(py::handle o) {
+    if (py::isinstance<model>(o)) return o.cast<model>();
+    if (py::isinstance<py::str>(o)) {
+        const auto s = o.cast<std::string>();
+        if (const auto m = parse_model(s)) return *m;
+        std::string names;
+        for (const model m : enum_values<model>())
+            names.append(names.empty() ? "" : ", ").append(to_string(m));
+        raise(types().argument_error, "model: unknown model '" + s + "' (" + names + ")",
+              py::str("value_out_of_range"));
+    }
+    throw py::type_error("model: expected a name like 'pkp2400' or powerkey.Model, not " +
+                         py_repr(o));
+}
+
+canopen::node_id node_from_py(py::handle o, const char* what = "node") {
+    if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
+        throw py::type_error(std::string(what) + ": expected an int 1..127, not " + py_repr(o));
+    const auto n = o.cast<long long>();
+    const auto id = canopen::node_id::make(n < 0 || n > 255 ? 0u : static_cast<unsigned>(n));
+    if (!id)
+        raise(types().argument_error,
+              std::string(what) + ": " + std::to_string(n) + " is outside 1..127",
+              py::str("value_out_of_range"));
+    return *id;
+}
+
+// A time in ms on the library's wrapping 32-bit counter.
+pb::millis millis_from(std::int64_t t) { return pb::millis{static_cast<std::uint32_t>(t)}; }
+
+// --- field values, both ways ----------------------------------------------------------------
+
+const char upper_hex[] = "0123456789ABCDEF";
+
+template <std::size_t N>
+py::list index_list(const index_set<N>& s) {
+    py::list l;
+    for (unsigned i = 1; i <= N; ++i)
+        if (s.contains(i)) l.append(i);
+    return l;
+}
+
+// The value as the tool's JSON writes it (examples/tool/field_value.hpp, write_json_value).
+template <class T>
+py::object to_py(const T& v) {
+    if constexpr (std::is_same_v<T, bool>) {
+        return py::bool_(v);
+    } else if constexpr (std::is_enum_v<T>) {
+        return enum_to_py(v);
+    } else if constexpr (is_index_set<T>::value) {
+        return index_list(v);
+    } else if constexpr (is_byte_array<T>::value) {
+        std::string hex;
+        for (const auto b : v) {
+            hex += upper_hex[b >> 4];
+            hex += upper_hex[b & 15];
+        }
+        return py::str(hex);
+    } else if constexpr (is_bounded<T>::value) {
+        return py::int_(static_cast<std::uint64_t>(v.value()));
+    } else {
+        static_assert(std::is_integral_v<T>, "a field type outside the kind/fields convention");
+        return py::int_(static_cast<std::uint64_t>(v));
+    }
+}
+
+[[noreturn]] void field_out_of_range(std::string_view field, const std::string& text) {
+    raise(types().encode_error, std::string(field) + ": " + text, py::str("value_out_of_range"));
+}
+
+std::uint64_t unsigned_from_py(py::handle o, std::string_view field, std::uint64_t max) {
+    if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
+        throw py::type_error(std::string(field) + ": expected an int, not " + py_repr(o));
+    if (o < py::int_(0) || o > py::int_(max))
+        field_out_of_range(field, py_repr(o) + " is outside 0.." + std::to_string(max));
+    return o.cast<std::uint64_t>();
+}
+
+// Sets v from a Python value: what to_py gives back, and the obvious others (bytes for a byte
+// array, any iterable of key numbers for a set, an enum's number).
+template <class T>
+void from_py(T& v, py::handle o, std::string_view field) {
+    if constexpr (std::is_same_v<T, bool>) {
+        if (py::isinstance<py::bool_>(o)) {
+            v = o.cast<bool>();
+        } else {
+            v = unsigned_from_py(o, field, 1) == 1;
+        }
+    } else if constexpr (std::is_enum_v<T>) {
+        v = enum_from_py<T>(o, std::string(field).c_str());
+    } else if constexpr (is_index_set<T>::value) {
+        if (py::isinstance<py::str>(o) || !py::isinstance<py::iterable>(o))
+            throw py::type_error(std::string(field) + ": expected numbers like [1, 7], not " +
+                                 py_repr(o));
+        T s{};
+        for (const auto item : o) {
+            const auto n = unsigned_from_py(item, field, T::max);
+            if (n < 1) field_out_of_range(field, "0 is outside 1.." + std::to_string(T::max));
+            s.insert(static_cast<unsigned>(n));
+        }
+        v = s;
+    } else if constexpr (is_byte_array<T>::value) {
+        std::string bytes;
+        if (py::isinstance<py::str>(o)) {
+            const auto text = o.cast<std::string>();
+            auto digit = [](char c) {
+                if (c >= '0' && c <= '9') return c - '0';
+                if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+                if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+                return -1;
+            };
+            std::string hex;
+            for (const char c : text)
+                if (c != ' ') hex += c;
+            for (std::size_t i = 0; i < hex.size(); i += 2) {
+                const int hi = digit(hex[i]);
+                const int lo = i + 1 < hex.size() ? digit(hex[i + 1]) : -1;
+                if (hi < 0 || lo < 0)
+                    argument_error(std::string(field) + ": '" + text +
+                                   "' is not hex bytes like 72696E");
+                bytes += static_cast<char>((hi << 4) | lo);
+            }
+        } else if (py::isinstance<py::bytes>(o) || py::isinstance<py::bytearray>(o)) {
+            bytes = py::bytes(py::module_::import("builtins").attr("bytes")(o)).cast<std::string>();
+        } else {
+            throw py::type_error(std::string(field) + ": expected bytes or a hex string, not " +
+                                 py_repr(o));
+        }
+        if (bytes.size() > v.size())
+            field_out_of_range(field, "more than " + std::to_string(v.size()) + " bytes");
+        T out{};
+        for (std::size_t i = 0; i < bytes.size(); ++i) out[i] = static_cast<std::uint8_t>(bytes[i]);
+        v = out;
+    } else if constexpr (is_bounded<T>::value) {
+        const auto n = unsigned_from_py(o, field, std::numeric_limits<std::uint64_t>::max());
+        const auto r = T::make(n);
+        if (!r)
+            field_out_of_range(field, std::to_string(n) + " is outside " + std::to_string(T::min) +
+                                          ".." + std::to_string(T::max));
+        v = *r;
+    } else {
+        v = static_cast<T>(unsigned_from_py(o, field, std::numeric_limits<T>::max()));
+    }
+}
+
+// --- messages -------------------------------------------------------------------------------
+
+// A message with the model and node it was decoded for (or built for), which the LED-map
+// accessors need.
+struct py_message {
+    message m;
+    std::optional<model> md;
+    std::optional<std::uint8_t> node;
+};
+
+py::dict fields_of(const message& m) {
+    py::dict d;
+    for_each_field(m, [&d](std::string_view name, const auto& v) {
+        d[py::str(std::string(name))] = to_py(v);
+    });
+    return d;
+}
+
+std::string kind_names() {
+    std::string s;
+    for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
+        s.append(s.empty() ? "" : ", ").append(S::kind);
+        return false;
+    });
+    return s;
+}
+
+// The message of `kind` with `fields` (the others keep their defaults; an NMT command's target
+// defaults to `node`, as the tool's). Unknown kinds and field names raise ArgumentError.
+message build_message(const std::string& kind, const py::dict& fields,
+                      std::optional<canopen::node_id> node) {
+    message out;
+    std::vector<std::string> used;
+    const bool found = for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
+        if (S::kind != kind) return false;
+        S s{};
+        S::fields(s, [&](std::string_view name, auto& value) {
+            const py::str key{std::string(name)};
+            if (fields.contains(key)) {
+                from_py(value, fields[key], name);
+                used.emplace_back(name);
+            } else if (name == "target" && node) {
+                from_py(value, py::int_(node->value()), name);
+            }
+        });
+        out = s;
+        return true;
+    });
+    if (!found) argument_error("unknown kind '" + kind + "' (" + kind_names() + ")");
+    for (const auto& [k, v] : fields) {
+        const auto name = py::str(k).cast<std::string>();
+        bool known = false;
+        for (const auto& u : used) known = known || u == name;
+        if (!known) {
+            std::string names;
+            for_each_field(out, [&names](std::string_view n, const auto&) {
+                names.append(names.empty() ? "" : ", ").append(n);
+            });
+            argument_error(kind + ": unknown field '" + name + "' (" +
+                           (names.empty() ? "none" : names) + ")");
+        }
+    }
+    return out;
+}
+
+// --- frames ---------------------------------------------------------------------------------
+
+// A frame from a can.Message (or anything with arbitration_id, data, is_extended_id), or from an
+// (id, data[, extended]) tuple. Remote and error frames carry no keypad message.
+can::frame frame_from_py(py::handle o) {
+    std::uint64_t id = 0;
+    py::object data;
+    std::optional<bool> ext;
+    if (py::hasattr(o, "arbitration_id")) {
+        for (const char* flag : {"is_remote_frame", "is_error_frame"})
+            if (py::hasattr(o, flag) && o.attr(flag).cast<bool>())
+                raise(types().decode_error,
+                      std::string("a ") + (flag[3] == 'r' ? "remote" : "error") +
+                          " frame carries no keypad message",
+                      py::str("unexpected_frame"));
+        id = o.attr("arbitration_id").cast<std::uint64_t>();
+        data = o.attr("data");
+        if (py::hasattr(o, "is_extended_id")) ext = o.attr("is_extended_id").cast<bool>();
+    } else if (py::isinstance<py::tuple>(o) && (py::len(o) == 2 || py::len(o) == 3)) {
+        const auto t = py::reinterpret_borrow<py::tuple>(o);
+        id = unsigned_from_py(t[0], "id", 0x1FFF'FFFF);
+        data = t[1];
+        if (py::len(t) == 3) ext = t[2].cast<bool>();
+    } else {
+        throw py::type_error("expected a can.Message or (id, data), not " + py_repr(o));
+    }
+    const auto bytes = py::module_::import("builtins")
+                           .attr("bytes")(data.is_none() ? py::bytes() : data)
+                           .cast<std::string>();
+    const bool extended = ext.value_or(id > 0x7FF);
+    const auto f =
+        can::make_frame(static_cast<std::uint32_t>(id),
+                        {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},
+                        extended ? can::id_format::extended : can::id_format::standard);
+    if (!f) raise_code(types().decode_error, "frame", f.error());
+    return *f;
+}
+
+can::frame frame_from_args(py::handle msg_or_id, py::handle data, py::handle extended) {
+    if (data.is_none()) return frame_from_py(msg_or_id);
+    if (extended.is_none()) return frame_from_py(py::make_tuple(msg_or_id, data));
+    return frame_from_py(py::make_tuple(msg_or_id, data, extended));
+}
+
+// A frame as powerkey._types.to_frame makes it: a can.Message (a powerkey.Frame without
+// python-can).
+py::object frame_to_py(const can::frame& f) {
+    const auto d = f.data();
+    return types().to_frame(
+        f.raw_id(), py::bytes(reinterpret_cast<const char*>(d.data()), d.size()), f.is_extended());
+}
+
+py::object optional_frame(const std::optional<can::frame>& f) {
+    if (!f) return py::none();
+    return frame_to_py(*f);
+}
+
+// --- accessors ------------------------------------------------------------------------------
+
+py::dict leds_to_py(const leds& l) {
+    py::dict d;
+    d["red"] = index_list(l.red);
+    d["green"] = index_list(l.green);
+    d["blue"] = index_list(l.blue);
+    return d;
+}
+
+leds leds_from_py(py::handle o, std::string_view what) {
+    leds l;
+    if (o.is_none()) return l;
+    if (!py::isinstance<py::dict>(o))
+        throw py::type_error(std::string(what) + ": expected a dict like {'green': [3]}, not " +
+                             py_repr(o));
+    for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(o)) {
+        const auto p = enum_from_py<plane>(k, "plane");
+        from_py(l.of(p), v, what);
+    }
+    return l;
+}
+
+py::object led_map_to_py(const std::optional<led_map_update>& u) {
+    if (!u) return py::none();
+    return types().led_map_update(leds_to_py(u->map), leds_to_py(u->covered));
+}
+
+model message_model(const py_message& m, py::handle given) {
+    if (!given.is_none()) return model_from_py(given);
+    if (m.md) return *m.md;
+    argument_error("this message has no model: give model=");
+}
+
+// --- session, virtual keypad, controller -----------------------------------------------------
+
+std::string_view run_state_name(pb::run_state s) {
+    switch (s) {
+        case pb::run_state::off: return "off";
+        case pb::run_state::pre_operational: return "pre_operational";
+        case pb::run_state::operational: return "operational";
+        case pb::run_state::stopped: return "stopped";
+        case pb::run_state::j1939: return "j1939";
+    }
+    return "";
+}
+
+struct py_session {
+    session<> s;
+    py_session(model m, canopen::node_id n) : s(m, n) {}
+};
+
+py::str latin1(std::string_view s) {
+    return py::reinterpret_steal<py::str>(
+        PyUnicode_DecodeLatin1(s.data(), static_cast<Py_ssize_t>(s.size()), nullptr));
+}
+
+py::dict session_event_to_py(const py_session& ps, const session_event& e) {
+    py::dict d;
+    d["function"] = enum_to_py(e.cls.fn);
+    d["node"] = e.node.value();
+    if (e.decoded) {
+        d["message"] = py_message{*e.decoded, ps.s.model(), e.node.value()};
+        d["error"] = py::none();
+    } else {
+        d["message"] = py::none();
+        d["error"] = enum_to_py(e.decoded.error());
+    }
+    d["sdo"] = enum_to_py(e.sdo);
+    d["request"] = e.sdo == sdo_pairing::reply
+                       ? py::object(py::make_tuple(e.request.index, e.request.subindex))
+                       : py::object(py::none());
+    d["upload_done"] = e.upload_done;
+    d["text"] = e.upload_done ? py::object(latin1(ps.s.text())) : py::object(py::none());
+    d["upload_error"] =
+        e.upload_error != errc{} ? enum_to_py(e.upload_error) : py::object(py::none());
+    d["new_node"] = e.new_node ? py::object(py::int_(e.new_node->value())) : py::none();
+    d["new_protocol"] = e.new_protocol ? enum_to_py(*e.new_protocol) : py::object(py::none());
+    return d;
+}
+
+using keypad_type = pb::virtual_keypad<64>;
+using controller_type = pb::controller<64, 128>;
+
+// The controller reads its configuration list from caller-owned storage: the list lives next to
+// it, constructed first, and neither moves.
+struct py_controller {
+    std::vector<message> list;
+    controller_type c;
+    py_controller(pb::controller_config cfg, std::vector<message> l)
+        : list(std::move(l)), c((cfg.configuration = list, cfg)) {}
+    py_controller(const py_controller&) = delete;
+    py_controller& operator=(const py_controller&) = delete;
+};
+
+py::dict controller_event_to_py(const pb::controller_event& e) {
+    py::dict d;
+    d["kind"] = enum_to_py(e.kind);
+    d["key"] = e.key;
+    d["node"] = e.node.value();
+    d["origin"] = enum_to_py(e.origin);
+    d["step"] = e.step;
+    d["what"] = enum_to_py(e.what);
+    d["value"] = e.value;
+    return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_powerkey, mod) {
+    mod.doc() = "powerkey: every CAN frame of Blink Marine PowerKey keypads (docs/python.md)";
+    {
+        const auto t = py::module_::import("powerkey._types");
+        auto& ty = types();
+        ty.error = t.attr("Error");
+        ty.decode_error = t.attr("DecodeError");
+        ty.encode_error = t.attr("EncodeError");
+        ty.argument_error = t.attr("ArgumentError");
+        ty.led_map_update = t.attr("LedMapUpdate");
+        ty.backlight_update = t.attr("BacklightUpdate");
+        ty.to_frame = t.attr("to_frame");
+    }
+
+    py::enum_<model> model_enum(mod, "Model", "The keypad models, by their tool names");
+    for (const model m : enum_values<model>())
+        model_enum.value(std::string(to_string(m)).c_str(), m);
+
+    mod.def("model_info", [](py::handle m) {
+        const auto mi = info(model_from_py(m)).value();
+        py::dict d;
+        d["model"] = enum_to_py(mi.id);
+        d["dictionary"] = enum_to_py(mi.dictionary);
+        d["keys"] = mi.keys;
+        d["leds"] = mi.leds;
+        d["planes"] = mi.planes;
+        d["stride"] = mi.stride;
+        d["led_mask"] = mi.led_mask;
+        d["brightness_pdo"] = mi.brightness_pdo;
+        d["encoder_leds_pdo"] = mi.encoder_leds_pdo;
+        d["backlight_pdo"] = mi.backlight_pdo;
+        d["backlight_colour"] = mi.backlight_colour;
+        d["encoders"] = mi.encoders;
+        d["j1939"] = mi.j1939;
+        d["replies_from_new_id"] = mi.replies_from_new_id;
+        return d;
+    });
+    mod.def("parse_model", [](py::handle m) { return model_from_py(m); });
+    mod.def("kinds", [] {
+        py::list l;
+        for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
+            l.append(std::string(S::kind));
+            return false;
+        });
+        return l;
+    });
+    mod.def("names", [](const std::string& what) -> py::list {
+        py::list l;
+        auto all = [&l]<class E>(std::type_identity<E>) {
+            for (const E v : enum_values<E>()) l.append(std::string(to_string(v)));
+        };
+        if (what == "model")
+            all(std::type_identity<model>{});
+        else if (what == "object")
+            all(std::type_identity<object>{});
+        else if (what == "errc")
+            all(std::type_identity<errc>{});
+        else if (what == "colour")
+            all(std::type_identity<colour>{});
+        else if (what == "backlight_colour")
+            all(std::type_identity<backlight_colour>{});
+        else if (what == "led_state")
+            all(std::type_identity<led_state>{});
+        else if (what == "baud_rate")
+            all(std::type_identity<baud_rate>{});
+        else if (what == "nmt_command")
+            all(std::type_identity<canopen::nmt_command>{});
+        else if (what == "nmt_state")
+            all(std::type_identity<canopen::nmt_state>{});
+        else if (what == "command_code")
+            all(std::type_identity<command_code>{});
+        else if (what == "event_kind")
+            all(std::type_identity<pb::event_kind>{});
+        else
+            argument_error("names: unknown enum '" + what + "'");
+        return l;
+    });
+
+    py::class_<py_message>(mod, "Message", "A decoded (or built) keypad message")
+        .def_property_readonly("kind",
+                               [](const py_message& m) { return std::string(kind_of(m.m)); })
+        .def_property_readonly("model",
+                               [](const py_message& m) -> py::object {
+                                   return m.md ? py::object(py::cast(*m.md))
+                                               : py::object(py::none());
+                               })
+        .def_property_readonly("node",
+                               [](const py_message& m) -> py::object {
+                                   return m.node ? py::object(py::int_(*m.node))
+                                                 : py::object(py::none());
+                               })
+        .def(
+            "to_dict", [](const py_message& m) { return fields_of(m.m); },
+            "The fields, as the tool's JSON `fields`")
+        .def("__getattr__",
+             [](const py_message& m, const std::string& name) {
+                 py::object found;
+                 for_each_field(m.m, [&](std::string_view n, const auto& v) {
+                     if (!found && n == name) found = to_py(v);
+                 });
+                 if (!found)
+                     throw py::attribute_error("'" + std::string(kind_of(m.m)) +
+                                               "' message has no field '" + name + "'");
+                 return found;
+             })
+        .def("__dir__",
+             [](const py_message& m) {
+                 py::list l;
+                 for (const char* a :
+                      {"kind", "model", "node", "to_dict", "describe", "pressed_keys", "led_on_map",
+                       "led_blink_map", "brightness", "backlight", "node_id_change", "nmt_state"})
+                     l.append(a);
+                 for_each_field(
+                     m.m, [&l](std::string_view n, const auto&) { l.append(std::string(n)); });
+                 return l;
+             })
+        .def("__eq__",
+             [](const py_message& a, py::handle b) {
+                 return py::isinstance<py_message>(b) && a.m == b.cast<const py_message&>().m;
+             })
+        .def("__hash__",
+             [](const py_message& m) { return py::hash(py::str(std::string(kind_of(m.m)))); })
+        .def("__repr__",
+             [](const py_message& m) {
+                 std::string s = "Message('" + std::string(kind_of(m.m)) + "'";
+                 for_each_field(m.m, [&s](std::string_view n, const auto& v) {
+                     s.append(", ").append(n).append("=").append(py_repr(to_py(v)));
+                 });
+                 return s + ")";
+             })
+        .def(
+            "describe",
+            [](const py_message& m, py::handle node) {
+                const auto n = node.is_none()
+                                   ? canopen::node_id::make(m.node.value_or(0x15)).value()
+                                   : node_from_py(node);
+                std::array<char, 256> buf{};
+                const auto t = describe(m.m, n, buf);
+                if (!t) raise_code(types().error, "describe", t.error());
+                return std::string(*t);
+            },
+            py::arg("node") = py::none(), "The library's one-line description (describe.hpp)")
+        .def("pressed_keys",
+             [](const py_message& m) -> py::object {
+                 const auto k = pressed_keys(m.m);
+                 return k ? py::object(index_list(*k)) : py::object(py::none());
+             })
+        .def(
+            "led_on_map",
+            [](const py_message& m, py::handle md) {
+                return led_map_to_py(led_on_map(m.m, message_model(m, md)));
+            },
+            py::arg("model") = py::none())
+        .def(
+            "led_blink_map",
+            [](const py_message& m, py::handle md) {
+                return led_map_to_py(led_blink_map(m.m, message_model(m, md)));
+            },
+            py::arg("model") = py::none())
+        .def("brightness",
+             [](const py_message& m) -> py::object {
+                 const auto l = brightness(m.m);
+                 return l ? py::object(py::int_(l->value())) : py::object(py::none());
+             })
+        .def("backlight",
+             [](const py_message& m) -> py::object {
+                 const auto u = backlight_of(m.m);
+                 if (!u) return py::none();
+                 return types().backlight_update(
+                     u->level ? py::object(py::int_(u->level->value())) : py::object(py::none()),
+                     u->colour ? enum_to_py(*u->colour) : py::object(py::none()));
+             })
+        .def("node_id_change",
+             [](const py_message& m) -> py::object {
+                 const auto n = node_id_change(m.m);
+                 return n ? py::object(py::int_(n->value())) : py::object(py::none());
+             })
+        .def("nmt_state", [](const py_message& m) -> py::object {
+            const auto s = nmt_state_of(m.m);
+            return s ? enum_to_py(*s) : py::object(py::none());
+        });
+
+    mod.def(
+        "decode",
+        [](py::handle msg_or_id, py::handle data, py::handle md, py::handle node,
+           py::handle extended) {
+            const auto f = frame_from_args(msg_or_id, data, extended);
+            const auto m = model_from_py(md);
+            const auto n = node_from_py(node);
+            const auto r = decode(f, n, m);
+            if (!r) {
+                std::string what = "decode ";
+                what += f.is_extended() ? "extended " : "";
+                what += "frame as " + std::string(to_string(m));
+                raise_code(types().decode_error, what, r.error());
+            }
+            return py_message{*r, m, n.value()};
+        },
+        py::arg("msg_or_id"), py::arg("data") = py::none(), py::kw_only(), py::arg("model"),
+        py::arg("node") = 0x15, py::arg("extended") = py::none());
+
+    mod.def(
+        "message",
+        [](const std::string& kind, py::handle md, py::handle node, const py::dict& fields) {
+            std::optional<canopen::node_id> n;
+            if (!node.is_none()) n = node_from_py(node);
+            py_message m{build_message(kind, fields, n), std::nullopt, std::nullopt};
+            if (!md.is_none()) m.md = model_from_py(md);
+            if (n) m.node = n->value();
+            return m;
+        },
+        py::arg("kind"), py::kw_only(), py::arg("model") = py::none(), py::arg("node") = py::none(),
+        py::arg("fields") = py::dict());
+
+    mod.def(
+        "encode_frame",
+        [](const py_message& m, py::handle md, py::handle node) {
+            const auto mm = message_model(m, md);
+            const auto n = node.is_none() ? canopen::node_id::make(m.node.value_or(0x15)).value()
+                                          : node_from_py(node);
+            const auto f = encode(n, mm, m.m);
+            if (!f)
+                raise_code(
+                    types().encode_error,
+                    "encode " + std::string(kind_of(m.m)) + " for " + std::string(to_string(mm)),
+                    f.error());
+            return frame_to_py(*f);
+        },
+        py::arg("message"), py::kw_only(), py::arg("model") = py::none(),
+        py::arg("node") = py::none());
+
+    // --- the session follower ------------------------------------------------------------------
+    py::class_<py_session>(mod, "Session")
+        .def(py::init([](py::handle md, py::handle node) {
+                 return new py_session(model_from_py(md), node_from_py(node));
+             }),
+             py::kw_only(), py::arg("model"), py::arg("node") = 0x15)
+        .def(
+            "step",
+            [](py_session& ps, py::handle msg_or_id, py::handle data, py::handle extended) {
+                const auto f = frame_from_args(msg_or_id, data, extended);
+                return session_event_to_py(ps, ps.s.step(f));
+            },
+            py::arg("msg_or_id"), py::arg("data") = py::none(), py::kw_only(),
+            py::arg("extended") = py::none())
+        .def_property_readonly("model", [](const py_session& ps) { return ps.s.model(); })
+        .def_property_readonly("node", [](const py_session& ps) { return ps.s.node().value(); })
+        .def_property_readonly("protocol",
+                               [](const py_session& ps) { return enum_to_py(ps.s.protocol()); })
+        .def_property_readonly("text", [](const py_session& ps) { return latin1(ps.s.text()); });
+
+    // --- the virtual keypad --------------------------------------------------------------------
+    py::class_<keypad_type>(mod, "VirtualKeypad")
+        .def(py::init([](py::handle md, py::handle node, bool drop, std::uint32_t response_ms) {
+                 return new keypad_type(model_from_py(md), node_from_py(node),
+                                        pb::keypad_options{drop, response_ms});
+             }),
+             py::kw_only(), py::arg("model"), py::arg("node") = 0x15,
+             py::arg("drop_sdo_while_busy") = true, py::arg("sdo_response_ms") = 1)
+        .def("power_on", [](keypad_type& k, std::int64_t t) { k.power_on(millis_from(t)); })
+        .def("power_off", [](keypad_type& k) { k.power_off(); })
+        .def("power_cycle", [](keypad_type& k, std::int64_t t) { k.power_cycle(millis_from(t)); })
+        .def("silence", [](keypad_type& k, std::int64_t t,
+                           std::uint32_t d) { k.silence(millis_from(t), pb::duration_ms{d}); })
+        .def("drop_received", [](keypad_type& k, std::uint32_t n) { k.drop_received(n); })
+        .def("drop_transmitted", [](keypad_type& k, std::uint32_t n) { k.drop_transmitted(n); })
+        .def("receive", [](keypad_type& k, py::handle frame,
+                           std::int64_t t) { k.receive(frame_from_py(frame), millis_from(t)); })
+        .def("advance", [](keypad_type& k, std::int64_t t) { k.advance(millis_from(t)); })
+        .def("press", [](keypad_type& k, unsigned key,
+                         std::int64_t t) { return k.press(key, millis_from(t)); })
+        .def("release", [](keypad_type& k, unsigned key,
+                           std::int64_t t) { return k.release(key, millis_from(t)); })
+        .def("set_keys",
+             [](keypad_type& k, py::handle keys, std::int64_t t) {
+                 key_set s;
+                 from_py(s, keys, "keys");
+                 k.set_keys(s, millis_from(t));
+             })
+        .def("transmit", [](keypad_type& k) { return optional_frame(k.transmit()); })
+        .def_property_readonly(
+            "state", [](const keypad_type& k) { return std::string(run_state_name(k.state())); })
+        .def_property_readonly("model", [](const keypad_type& k) { return k.which(); })
+        .def_property_readonly("node", [](const keypad_type& k) { return k.node().value(); })
+        .def_property_readonly("keys", [](const keypad_type& k) { return index_list(k.keys()); })
+        .def_property_readonly("led_on",
+                               [](const keypad_type& k) { return leds_to_py(k.led_on()); })
+        .def_property_readonly("led_blink",
+                               [](const keypad_type& k) { return leds_to_py(k.led_blink()); })
+        .def_property_readonly("brightness",
+                               [](const keypad_type& k) { return k.brightness().value(); })
+        .def_property_readonly("backlight",
+                               [](const keypad_type& k) {
+                                   const auto b = k.backlight();
+                                   return types().backlight_update(b.level.value(),
+                                                                   enum_to_py(b.colour));
+                               })
+        .def_property_readonly("baud", [](const keypad_type& k) { return enum_to_py(k.baud()); })
+        .def("tick", [](const keypad_type& k, std::int64_t t) { return k.tick(millis_from(t)); })
+        .def("read",
+             [](const keypad_type& k, py::handle o) -> py::object {
+                 const auto v = k.read(enum_from_py<object>(o, "object"));
+                 return v ? py::object(py::int_(*v)) : py::object(py::none());
+             })
+        .def_property_readonly("overflowed", [](const keypad_type& k) { return k.overflowed(); });
+
+    // --- the controller ------------------------------------------------------------------------
+    py::class_<py_controller>(mod, "Controller")
+        .def(py::init([](py::handle md, py::handle node, const py::list& configuration,
+                         bool any_node, bool identify, py::handle start, std::uint32_t heartbeat,
+                         std::uint32_t lost_after, std::uint32_t sdo_timeout,
+                         std::uint8_t sdo_retries, std::uint32_t probe_period,
+                         std::uint32_t refresh_period, std::uint32_t long_press,
+                         std::uint32_t repeat_delay, std::uint32_t repeat_period) {
+                 pb::controller_config cfg;
+                 cfg.keypad_model = model_from_py(md);
+                 cfg.node = node_from_py(node);
+                 cfg.any_node = any_node;
+                 cfg.identify = identify;
+                 cfg.start = enum_from_py<pb::start_mode>(start, "start");
+                 cfg.keypad_heartbeat = pb::duration_ms{heartbeat};
+                 cfg.lost_after = pb::duration_ms{lost_after};
+                 cfg.sdo_timeout = pb::duration_ms{sdo_timeout};
+                 cfg.sdo_retries = sdo_retries;
+                 cfg.probe_period = pb::duration_ms{probe_period};
+                 cfg.refresh_period = pb::duration_ms{refresh_period};
+                 cfg.long_press = pb::duration_ms{long_press};
+                 cfg.repeat_delay = pb::duration_ms{repeat_delay};
+                 cfg.repeat_period = pb::duration_ms{repeat_period};
+                 std::vector<message> list;
+                 for (const auto item : configuration) {
+                     if (!py::isinstance<py_message>(item))
+                         throw py::type_error(
+                             "configuration: expected powerkey.message(...) entries, not " +
+                             py_repr(item));
+                     list.push_back(item.cast<const py_message&>().m);
+                 }
+                 return new py_controller(cfg, std::move(list));
+             }),
+             py::kw_only(), py::arg("model"), py::arg("node") = 0x15,
+             py::arg("configuration") = py::list(), py::arg("any_node") = false,
+             py::arg("identify") = true, py::arg("start") = "nmt_start",
+             py::arg("keypad_heartbeat") = 200, py::arg("lost_after") = 600,
+             py::arg("sdo_timeout") = 300, py::arg("sdo_retries") = 2,
+             py::arg("probe_period") = 1000, py::arg("refresh_period") = 1000,
+             py::arg("long_press") = 800, py::arg("repeat_delay") = 500,
+             py::arg("repeat_period") = 200)
+        .def("step", [](py_controller& c, py::handle frame,
+                        std::int64_t t) { c.c.step(frame_from_py(frame), millis_from(t)); })
+        .def("tick", [](py_controller& c, std::int64_t t) { c.c.tick(millis_from(t)); })
+        .def("next_frame", [](py_controller& c) { return optional_frame(c.c.next_frame()); })
+        .def("poll",
+             [](py_controller& c) -> py::object {
+                 const auto e = c.c.poll();
+                 return e ? py::object(controller_event_to_py(*e)) : py::object(py::none());
+             })
+        .def(
+            "set_led",
+            [](py_controller& c, unsigned k, py::handle col, bool blink) {
+                return c.c.set_led(k, enum_from_py<colour>(col, "colour"), blink);
+            },
+            py::arg("key"), py::arg("colour"), py::arg("blink") = false)
+        .def(
+            "set_leds",
+            [](py_controller& c, py::handle on, py::handle blink) {
+                c.c.set_leds(leds_from_py(on, "on"), leds_from_py(blink, "blink"));
+            },
+            py::arg("on"), py::arg("blink") = py::none())
+        .def("set_brightness",
+             [](py_controller& c, py::handle l) {
+                 level v;
+                 from_py(v, l, "level");
+                 c.c.set_brightness(v);
+             })
+        .def(
+            "set_backlight",
+            [](py_controller& c, py::handle l, py::handle col) {
+                level v;
+                from_py(v, l, "level");
+                c.c.set_backlight(v, enum_from_py<backlight_colour>(col, "colour"));
+            },
+            py::arg("level"), py::arg("colour") = "keep")
+        .def("change_node",
+             [](py_controller& c, py::handle n) { c.c.change_node(node_from_py(n)); })
+        .def_property_readonly("state",
+                               [](const py_controller& c) { return enum_to_py(c.c.state()); })
+        .def_property_readonly("node", [](const py_controller& c) { return c.c.node().value(); })
+        .def_property_readonly("model", [](const py_controller& c) { return c.c.model(); })
+        .def_property_readonly("keypad_state",
+                               [](const py_controller& c) -> py::object {
+                                   const auto s = c.c.keypad_state();
+                                   return s ? enum_to_py(*s) : py::object(py::none());
+                               })
+        .def_property_readonly("keys",
+                               [](const py_controller& c) { return index_list(c.c.keys()); })
+        .def_property_readonly("leds_on",
+                               [](const py_controller& c) { return leds_to_py(c.c.leds_on()); })
+        .def_property_readonly("leds_blink",
+                               [](const py_controller& c) { return leds_to_py(c.c.leds_blink()); })
+        .def_property_readonly("text", [](const py_controller& c) { return latin1(c.c.text()); })
+        .def_property_readonly("sdo_outstanding",
+                               [](const py_controller& c) { return c.c.sdo_outstanding(); })
+        .def_property_readonly("events_dropped",
+                               [](const py_controller& c) { return c.c.events_dropped(); });
+}

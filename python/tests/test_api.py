@@ -1,0 +1,148 @@
+"""The Python surface: arguments, errors, messages, the Listener. The codec's answers themselves
+are checked against the C++ library in test_rows.py and test_tool_json.py."""
+
+import time
+
+import can
+import pytest
+
+import powerkey
+
+KEY3 = (0x195, bytes.fromhex("040000002A"))  # the README's key state: key 3 of a PKP-2400
+
+
+def test_can_message_and_id_bytes_agree():
+    msg = can.Message(arbitration_id=KEY3[0], data=KEY3[1], is_extended_id=False)
+    a = powerkey.decode(msg, model="pkp2400")
+    b = powerkey.decode(*KEY3, model="pkp2400")
+    assert a == b and a.kind == b.kind and a.to_dict() == b.to_dict()
+    assert a.model == powerkey.Model.pkp2400 and a.node == 0x15
+
+
+def test_model_by_name_enum_and_manual_name():
+    ms = [powerkey.decode(*KEY3, model=m)
+          for m in ("pkp2400", powerkey.Model.pkp2400, "PKP-2400-LI", "PKP-2400")]
+    assert all(m == ms[0] for m in ms)
+    enum_names = [m.name for m in powerkey.Model.__members__.values()]
+    assert powerkey.names("model") == enum_names
+    assert powerkey.parse_model("PKP-2400-LI") == powerkey.Model.pkp2400
+    assert powerkey.model_info("pkp2400")["model"] == "pkp2400"
+
+
+def test_unknown_model_is_an_argument_error():
+    with pytest.raises(powerkey.ArgumentError) as e:
+        powerkey.decode(*KEY3, model="pkp9999")
+    assert isinstance(e.value, powerkey.Error) and isinstance(e.value, ValueError)
+    assert e.value.code == "value_out_of_range"
+    with pytest.raises(TypeError):
+        powerkey.decode(*KEY3, model=3.5)
+
+
+def test_decode_errors_name_the_errc():
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(KEY3[0], KEY3[1][:2], model="pkp2400")
+    assert isinstance(e.value, powerkey.Error)
+    assert e.value.code in powerkey.names("errc")
+    assert e.value.code in str(e.value)
+
+
+def test_node():
+    other = powerkey.decode(0x196, KEY3[1], model="pkp2400", node=0x16)
+    assert other.keys == powerkey.decode(*KEY3, model="pkp2400").keys
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(0x196, KEY3[1], model="pkp2400")  # another node's frame
+    assert e.value.code in powerkey.names("errc")
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.decode(*KEY3, model="pkp2400", node=0x80)
+
+
+def test_remote_and_error_frames_carry_no_message():
+    rtr = can.Message(arbitration_id=0x195, is_remote_frame=True, is_extended_id=False, dlc=5)
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(rtr, model="pkp2400")
+    assert e.value.code == "unexpected_frame"
+
+
+def test_fields_attributes_and_dict():
+    m = powerkey.decode(*KEY3, model="pkp2400")
+    assert m.kind == "key_state"
+    assert {name: getattr(m, name) for name in m.to_dict()} == m.to_dict()
+    assert set(m.to_dict()) <= set(dir(m))
+    with pytest.raises(AttributeError):
+        m.no_such_field
+    assert m.pressed_keys() == powerkey.pressed_keys(m) == m.keys
+    assert "key_state" in repr(m)
+    assert isinstance(m.describe(), str)
+
+
+def test_encode_round_trip_and_message_objects():
+    m = powerkey.decode(*KEY3, model="pkp2400")
+    f = powerkey.encode(m.kind, model="pkp2400", **m.to_dict())
+    assert isinstance(f, can.Message) and not f.is_extended_id
+    assert (f.arbitration_id, bytes(f.data)) == KEY3
+    assert powerkey.encode_frame(m) == (KEY3[0], KEY3[1], False)
+    built = powerkey.message("key_state", **m.to_dict())
+    assert built == m
+    assert bytes(powerkey.encode(built, model="pkp2400").data) == KEY3[1]
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.encode(built)  # a built message has no model: give model=
+
+
+def test_encode_argument_errors():
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.encode("no_such_kind", model="pkp2400")
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.encode("led_on", model="pkp2400", purple=[1])
+    with pytest.raises(powerkey.EncodeError) as e:
+        powerkey.encode("led_brightness", model="pk1000", level=64)
+    assert e.value.code == "value_out_of_range"
+    with pytest.raises(powerkey.EncodeError) as e:
+        powerkey.encode("led_on", model="pkp2400", green=[33])
+    assert e.value.code == "value_out_of_range"
+    with pytest.raises(TypeError):
+        powerkey.encode("led_on", model="pkp2400", green="3")
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.encode("nmt", model="pkp2400", command="jump")
+
+
+def test_enum_fields_take_names_and_numbers():
+    by_name = powerkey.encode("nmt", model="pk1000", command="start")
+    by_number = powerkey.encode("nmt", model="pk1000", command=1)
+    assert bytes(by_name.data) == bytes(by_number.data)
+    # the NMT target defaults to the node, as the tool's encode
+    assert bytes(powerkey.encode("nmt", model="pk1000", node=0x20, command="start").data)[1] == 0x20
+
+
+def test_every_kind_builds_with_defaults():
+    for kind in powerkey.kinds():
+        assert powerkey.message(kind).kind == kind
+
+
+def test_listener_on_a_notifier():
+    channel = f"powerkey-test-{time.monotonic_ns()}"
+    sender = can.Bus(interface="virtual", channel=channel)
+    receiver = can.Bus(interface="virtual", channel=channel)
+    listener = powerkey.Listener(model="pkp2400")
+    notifier = can.Notifier(receiver, [listener])
+    try:
+        sender.send(can.Message(arbitration_id=KEY3[0], data=KEY3[1], is_extended_id=False))
+        sender.send(can.Message(arbitration_id=0x195, data=b"\x04", is_extended_id=False))
+        msg, event = listener.get_message(timeout=2.0)
+        assert msg.arbitration_id == KEY3[0]
+        assert event.message == powerkey.decode(*KEY3, model="pkp2400")
+        assert event.error is None and event.function == "tpdo1" and event.node == 0x15
+        msg, event = listener.get_message(timeout=2.0)
+        assert event.message is None and event.error in powerkey.names("errc")
+        assert listener.get_message(timeout=0.05) is None
+    finally:
+        notifier.stop()
+        sender.shutdown()
+        receiver.shutdown()
+
+
+def test_listener_callback():
+    got = []
+    listener = powerkey.Listener(model="pkp2400", callback=lambda m, e: got.append(e))
+    listener.on_message_received(can.Message(arbitration_id=KEY3[0], data=KEY3[1],
+                                             is_extended_id=False))
+    assert got[0].message.kind == "key_state"

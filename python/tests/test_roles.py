@@ -1,0 +1,84 @@
+"""The session follower, the virtual keypad and the controller, stepped from Python."""
+
+import pytest
+
+import powerkey
+from conftest import parse_candump
+
+
+def _frames(path):
+    for line in path.read_text().splitlines():
+        if line.strip() and not line.startswith("#"):
+            yield parse_candump(line)
+
+
+def test_session_decodes_like_decode(repo):
+    # Every event's message is decode()'s for the node the session followed.
+    s = powerkey.Session(model="pk1000")
+    for ident, data, ext in _frames(repo / "examples/logs/check-clean.log"):
+        e = s.step(ident, data, extended=ext)
+        if e.message is not None:
+            assert e.message == powerkey.decode(ident, data, model="pk1000", node=e.node,
+                                                extended=ext)
+        else:
+            with pytest.raises(powerkey.DecodeError) as err:
+                powerkey.decode(ident, data, model="pk1000", node=e.node, extended=ext)
+            assert err.value.code == e.error
+    assert s.model == powerkey.Model.pk1000
+
+
+def run(start, steps, keypad, controller, until):
+    """Both roles on one simulated bus, 1 ms a step from `start`, until until() holds; returns
+    the controller's events and the time reached."""
+    events = []
+    t = start
+    for t in range(start, start + steps):
+        keypad.advance(t)
+        for f in keypad.transmit_all():
+            controller.step(f, t)
+        controller.tick(t)
+        for f in controller.frames():
+            keypad.receive(f, t)
+        for e in controller.events():
+            events.append(e)
+            if e.kind == "key_pressed":
+                controller.set_led(e.key, "green")
+        if until(events):
+            break
+    return events, t
+
+
+@pytest.mark.parametrize("model", powerkey.names("model"))
+def test_controller_sets_up_the_keypad_and_lights_a_pressed_key(model):
+    keypad = powerkey.VirtualKeypad(model=model)
+    controller = powerkey.Controller(
+        model=model,
+        configuration=[powerkey.message("sdo_write", object="led_brightness", level=0x30)],
+    )
+    keypad.power_on(0)
+    events, t = run(0, 2000, keypad, controller, lambda ev: any(e.kind == "ready" for e in ev))
+    assert controller.state == "running"
+    events, t = run(t + 1, 50, keypad, controller, lambda ev: False)  # the NMT start arrives
+    assert keypad.state == "operational" and keypad.brightness == 0x30
+
+    assert keypad.press(3, t)
+    events, t = run(t + 1, 500, keypad, controller, lambda ev: 3 in keypad.led_on["green"])
+    assert [e.key for e in events if e.kind == "key_pressed"] == [3]
+    assert keypad.led_on["green"] == [3] and controller.leds_on["green"] == [3]
+
+
+def test_keypad_alone():
+    k = powerkey.VirtualKeypad(model="pkp2400", node=0x20)
+    assert k.state == "off"
+    k.power_on(0)
+    boot = k.transmit_all()
+    assert boot and powerkey.decode(boot[0], model="pkp2400", node=0x20).nmt_state() == "boot_up"
+    assert k.state == "pre_operational" and k.node == 0x20
+    k.receive(powerkey.encode("nmt", model="pkp2400", node=0x20, command="start"), 1)
+    assert k.state == "operational"
+    k.receive(powerkey.encode("led_on", model="pkp2400", node=0x20, red=[1, 2]), 2)
+    assert k.led_on["red"] == [1, 2]
+    assert k.press(5, 3)
+    sent = [powerkey.decode(f, model="pkp2400", node=0x20) for f in k.transmit_all()]
+    assert [m.pressed_keys() for m in sent if m.kind == "key_state"] == [[5]]
+    assert isinstance(k.read("led_brightness"), int)
