@@ -1002,3 +1002,14 @@ static_assert(scenario());
 }  // namespace
 
 TEST_CASE("a whole session is a constant expression") { CHECK(scenario()); }
+
+TEST_CASE("the keypad's run states have one name each") {
+    CHECK(to_string(run_state::off) == "off");
+    CHECK(to_string(run_state::pre_operational) == "pre_operational");
+    CHECK(to_string(run_state::operational) == "operational");
+    CHECK(to_string(run_state::stopped) == "stopped");
+    CHECK(to_string(run_state::j1939) == "j1939");
+    CHECK(enum_values<run_state>().size() == 5);
+    for (const auto s : enum_values<run_state>()) CHECK(from_string<run_state>(to_string(s)) == s);
+    CHECK(!from_string<run_state>("running").has_value());
+}

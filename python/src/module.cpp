@@ -399,17 +399,6 @@ model message_model(const py_message& m, py::handle given) {
 
 // --- session, virtual keypad, controller -----------------------------------------------------
 
-std::string_view run_state_name(pb::run_state s) {
-    switch (s) {
-        case pb::run_state::off: return "off";
-        case pb::run_state::pre_operational: return "pre_operational";
-        case pb::run_state::operational: return "operational";
-        case pb::run_state::stopped: return "stopped";
-        case pb::run_state::j1939: return "j1939";
-    }
-    return "";
-}
-
 struct py_session {
     session<> s;
     py_session(model m, canopen::node_id n) : s(m, n) {}
@@ -753,7 +742,7 @@ PYBIND11_MODULE(_powerkey, mod) {
              })
         .def("transmit", [](keypad_type& k) { return optional_frame(k.transmit()); })
         .def_property_readonly(
-            "state", [](const keypad_type& k) { return std::string(run_state_name(k.state())); })
+            "state", [](const keypad_type& k) { return std::string(to_string(k.state())); })
         .def_property_readonly("model", [](const keypad_type& k) { return k.which(); })
         .def_property_readonly("node", [](const keypad_type& k) { return k.node().value(); })
         .def_property_readonly("keys", [](const keypad_type& k) { return index_list(k.keys()); })

@@ -987,4 +987,14 @@ private:
 
 }  // namespace powerkey::behaviour
 
+template <>
+struct powerkey::enum_names<powerkey::behaviour::run_state> {
+    using s = behaviour::run_state;
+    static constexpr enum_name_entry<s> entries[] = {{s::off, "off"},
+                                                     {s::pre_operational, "pre_operational"},
+                                                     {s::operational, "operational"},
+                                                     {s::stopped, "stopped"},
+                                                     {s::j1939, "j1939"}};
+};
+
 #endif  // POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
