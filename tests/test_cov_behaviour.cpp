@@ -7,8 +7,11 @@
 #include <powerkey/behaviour/checker.hpp>
 #include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
+#include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sdo_upload.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
 
 #include <array>
@@ -148,7 +151,12 @@ TEST_CASE("virtual keypad: the strings each keypad reports") {
 // the events in the controller's queue.
 template <std::size_t Outbox, std::size_t Events>
 struct loop {
-    explicit loop(controller_config cfg) : ctl(cfg) {}
+    explicit loop(controller_config cfg, model m = model::pk1000)
+        : keypad(m), ctl(with_model(cfg, m)) {}
+    static controller_config with_model(controller_config c, model m) {
+        c.keypad_model = m;
+        return c;
+    }
     void run(std::uint32_t ms, bool poll = true) {
         for (std::uint32_t i = 0; i < ms; ++i) {
             const millis t{++now};
@@ -170,7 +178,7 @@ struct loop {
     void drain() {
         while (const auto e = ctl.poll()) events.push_back(*e);
     }
-    virtual_keypad<32> keypad{model::pk1000};
+    virtual_keypad<32> keypad;
     controller<Outbox, Events> ctl;
     std::uint32_t now = 0;
     std::vector<controller_event> events;
@@ -198,6 +206,55 @@ TEST_CASE("controller: with a one-frame outbox the setup still completes") {
     bool ready = false;
     for (const auto& e : one.events) ready = ready || e.kind == event_kind::ready;
     CHECK(ready);
+}
+
+TEST_CASE("controller: a request that found the outbox full is sent at the next tick") {
+    // PKP-2400: no brightness PDO, so the LED level goes by SDO (6201h sub 1, PKP 30) right
+    // after the NMT start, which fills a one-frame outbox.
+    loop<1, 64> l({}, model::pkp2400);
+    l.ctl.set_brightness(level::make(0x10).value());
+    l.keypad.power_on(millis{0});
+    l.run(2000);
+    CHECK(l.keypad.brightness() == level::make(0x10).value());
+}
+
+TEST_CASE("controller: replies for another object or out of turn do not end a read") {
+    controller<16, 64> ctl{controller_config{}};
+    std::uint32_t now = 0;
+    auto sent = [&ctl] {
+        std::vector<std::string> out;
+        while (const auto f = ctl.next_frame()) out.emplace_back(can::format_candump(*f).view());
+        return out;
+    };
+    auto events = [&ctl] {
+        std::vector<controller_event> out;
+        while (const auto e = ctl.poll()) out.push_back(*e);
+        return out;
+    };
+    ctl.step(frame_of("715#00"), millis{now});
+    // Found: the setup starts by reading the model id, 100Bh (PK1000 35).
+    const auto first = sent();
+    REQUIRE_FALSE(first.empty());
+    CHECK(first.back() == "615#400B100000000000");
+    (void)events();
+    // A late reply to a read of 2011h, an initiate reply for 1008h, and a segment before any
+    // initiate reply: none answers the read of 100Bh.
+    for (const std::string_view stray :
+         {"595#4F11200001000000", "595#410810000B000000", "595#00504B3130303000"}) {
+        CAPTURE(std::string(stray));
+        ctl.step(frame_of(stray), millis{++now});
+        CHECK(sent().empty());
+        CHECK(events().empty());
+    }
+    // The reply: 7 bytes, "PK1000" and a NUL (PK1000 35, E-CORE-5), in one segment.
+    ctl.step(frame_of("595#410B100007000000"), millis{++now});
+    CHECK(sent() == std::vector<std::string>{"615#6000000000000000"});
+    ctl.step(frame_of("595#01504B3130303000"), millis{++now});
+    const auto done = events();
+    REQUIRE_FALSE(done.empty());
+    CHECK(done[0].kind == event_kind::sdo_done);
+    CHECK(done[0].origin == sdo_origin::identify);
+    CHECK(done[0].what == object::model_name);
 }
 
 TEST_CASE("controller: a configuration entry that is no SDO request is skipped") {
@@ -239,6 +296,40 @@ TEST_CASE("expedited data of 1, 2 and 4 bytes, and the candump text as a string"
     const auto four_text = can::format_candump(four);
     const std::string_view text = four_text;  // the conversion to a view of its buffer
     CHECK(text == "615#2316100164007E00");
+}
+
+TEST_CASE("a segment other than the last that carries fewer than 7 bytes is noted") {
+    // CiA 301 7.2.4.3.7: only the last segment may leave bytes unused (n > 0).
+    canopen::segmented_upload<32> u(canopen::node_id::make(0x15).value());
+    CHECK(u.start({0x1008, 0}) == frame_of("615#4008100000000000"));
+    REQUIRE(u.step(frame_of("595#410810000B000000")).has_value());
+    const auto s = u.step(frame_of("595#02426C696E6B4D00"));  // "BlinkM", n = 1, not the last
+    REQUIRE(s.has_value());
+    CHECK(u.notes().short_segment);
+    canopen::segmented_upload<32> strict(canopen::node_id::make(0x15).value(),
+                                         canopen::upload_policy::strict);
+    (void)strict.start({0x1008, 0});
+    REQUIRE(strict.step(frame_of("595#410810000B000000")).has_value());
+    CHECK(strict.step(frame_of("595#02426C696E6B4D00")) == errc::size_mismatch);
+}
+
+TEST_CASE("J1939 identifiers a PGN cannot have, and the COB-ID bases of functions per node") {
+    // J1939-21: a PDU2 PGN (PF F0h and above) is broadcast, destination FFh only; a PDU1 PGN's
+    // low byte is the destination field, 00h in the PGN (PK1000 49: PGN EF00h).
+    j1939::identifier pdu2;
+    pdu2.pgn = j1939::pgn::make(0xFEF1).value();
+    pdu2.destination = 0x21;
+    CHECK(j1939::make_id(pdu2) == errc::value_out_of_range);
+    j1939::identifier pdu1;
+    pdu1.pgn = j1939::pgn::make(0xEF21).value();
+    CHECK(j1939::make_id(pdu1) == errc::value_out_of_range);
+    // CiA 301 7.3.5: NMT and SYNC have no node, nor has another identifier: cob_id gives 000h
+    // for them (use nmt_cob_id and sync_cob_id); SDO rx of node 15h is 615h.
+    const auto node = canopen::node_id::make(0x15).value();
+    for (const auto f : {canopen::function::nmt, canopen::function::sync, canopen::function::j1939,
+                         canopen::function::other})
+        CHECK(canopen::cob_id(f, node).value() == 0x000);
+    CHECK(canopen::cob_id(canopen::function::sdo_rx, node).value() == 0x615);
 }
 
 TEST_CASE("an SDO value of no kind and the command module show only their object") {
