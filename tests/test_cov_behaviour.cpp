@@ -10,6 +10,7 @@
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
@@ -330,6 +331,18 @@ TEST_CASE("J1939 identifiers a PGN cannot have, and the COB-ID bases of function
                          canopen::function::other})
         CHECK(canopen::cob_id(f, node).value() == 0x000);
     CHECK(canopen::cob_id(canopen::function::sdo_rx, node).value() == 0x615);
+}
+
+TEST_CASE("descriptions of the PKP-3500-MT encoder objects (MT 19 b, 20 c)") {
+    const auto node = canopen::node_id::make(0x15).value();
+    std::array<char, 160> buf{};
+    // 595#4F00200281000000: one tick counterclockwise; 615#2301200480000000: ring LED 8.
+    CHECK(describe(message{sdo_read_reply{object::encoder1_direction_counter, number_value(0x81)}},
+                   node, buf) ==
+          result<std::string_view>("node 15h  SDO read reply  object: encoder1_direction_counter  "
+                                   "counterclockwise: yes  ticks: 1"));
+    CHECK(describe(message{sdo_write{object::led_on_encoder, number_value(0x80)}}, node, buf) ==
+          result<std::string_view>("node 15h  SDO write  object: led_on_encoder  leds: 8"));
 }
 
 TEST_CASE("an SDO value of no kind and the command module show only their object") {
