@@ -112,13 +112,7 @@ constexpr name_row name_rows[] = {
     {"SI generic pages", "PKP-2200-SI", model::pkp2200si},
     {"SI generic pages", "PKP-2300-SI", model::pkp2300si},
     {"SI generic pages", "PKP-2400-SI", model::pkp2400si},
-    // the reported model strings (100Bh; PKP 6100h sub 2)
-    {"PK1000 35", "PK1000", model::pk1000},
-    {"PKP 22", "PKU2400", model::pkp2400},
-    {"PKP2600SI 33", "PKP2600SI", model::pkp2600si},
-    {"PKP3500-MT 39", "PKP3500MT", model::pkp3500mt},
-    {"PKP3500SI manual", "PKP3500SI", model::pkp3500si},
-    {"PKP-1500-LI manual", "PKP1500LI", model::pkp1500li},
+    // (the reported strings: report_rows; every_name_reads_back parses them too)
     // case, '-', '_' and spaces ignored
     {"spelling", "pkp 2400 li", model::pkp2400},
     {"spelling", "Pkp_3500_Mt", model::pkp3500mt},
@@ -135,9 +129,9 @@ constexpr bool parses(const name_row& r) { return parse_model(r.frame) == r.expe
 static_assert(
     powerkey_tests::all_rows_pass<first_failing(name_rows, parses), std::size(name_rows)>);
 
-// What a keypad reports is matched exactly, and only where a manual shows it.
+// What a keypad reports (100Bh; PKP 6100h sub 2) is matched exactly, and only where a manual
+// shows it.
 constexpr name_row report_rows[] = {
-    // the text: the reported string
     {"PK1000 35", "PK1000", model::pk1000},
     {"PKP 22", "PKU2400", model::pkp2400},
     {"PKP2600SI 33", "PKP2600SI", model::pkp2600si},
