@@ -151,11 +151,14 @@ constexpr message segment(bool toggle, std::uint8_t unused, bool last,
                                          last, bytes};
 }
 constexpr leds rgb(led_set r, led_set g = {}, led_set b = {}) noexcept { return {r, g, b}; }
-constexpr led_set span(unsigned from, unsigned to) noexcept {
-    led_set s;
+// Members from..to: LEDs by default, keys with key_span.
+template <class Set = led_set>
+constexpr Set span(unsigned from, unsigned to) noexcept {
+    Set s;
     for (unsigned k = from; k <= to; ++k) s.insert(k);
     return s;
 }
+constexpr key_set key_span(unsigned from, unsigned to) noexcept { return span<key_set>(from, to); }
 
 // --- the core rows ------------------------------------------------------------------------------
 

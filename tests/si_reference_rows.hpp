@@ -21,11 +21,6 @@ using decoder_rows::row;
 using o = object;
 using si_rows::ring;
 
-constexpr key_set key_span(unsigned from, unsigned to) noexcept {
-    key_set s;
-    for (unsigned k = from; k <= to; ++k) s.insert(k);
-    return s;
-}
 constexpr message keys(key_set k) noexcept { return key_state{k, 0x2A}; }
 constexpr message on(led_set r, led_set g = {}, led_set b = {}) noexcept {
     return led_on{rgb(r, g, b)};

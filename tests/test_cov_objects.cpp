@@ -1,0 +1,307 @@
+// The five object dictionaries through their public lookups only (rows_of, find_row by address
+// and by object, kind_of, in_range, readable, writable), so that the rows' storage may change
+// underneath: rows pinned from the manuals in every dictionary, what each dictionary lacks, and
+// every row found both ways.
+#include <doctest/doctest.h>
+
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/names.hpp>
+
+#include "support.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace {
+using namespace powerkey;
+using powerkey_tests::first_failing;
+
+constexpr std::uint32_t any = 0xFFFF'FFFF;  // no bound / no extra value
+
+struct dict_row {
+    std::string_view section;
+    std::string_view frame;  // the address, as the row runner prints it
+    dictionary dict;
+    object id;
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::uint8_t size;
+    access acc;
+    std::uint32_t min, max, also, initial;
+};
+
+constexpr auto ro = access::read_only, rw = access::read_write, wo = access::write_only;
+constexpr auto pk = dictionary::pk1000, li = dictionary::pkp_li, packed = dictionary::si_packed,
+               mt = dictionary::si_mt, per = dictionary::si_per_colour;
+
+// Size: expedited bytes (2Bh = 2, 2Fh = 1, 23h = 4 in the manuals' writes), 0 for strings and for
+// the per-colour planes whose size is the model's stride. Range and default: the manual's.
+constexpr dict_row dict_rows[] = {
+    // PK1000_CANopen_UM_rev1.13
+    {"PK1000 16", "2000h/1", pk, object::keys, 0x2000, 1, 2, ro, 0, any, any, 0},
+    {"PK1000 17", "2001h/1", pk, object::led_on_red, 0x2001, 1, 4, rw, 0, any, any, 0},
+    {"PK1000 18", "2002h/2", pk, object::led_blink_green, 0x2002, 2, 4, rw, 0, any, any, 0},
+    {"PK1000 19 c, 3", "2003h/3", pk, object::backlight_colour, 0x2003, 3, 1, rw, 1, 9, any, 0x08},
+    {"PK1000 20", "2010h/0", pk, object::baud_rate, 0x2010, 0, 1, rw, 0, 7, any, 0x04},
+    {"PK1000 23", "2013h/0", pk, object::node_id, 0x2013, 0, 1, rw, 1, 0x7F, any, 0x15},
+    {"PK1000 24", "2014h/0", pk, object::startup_show, 0x2014, 0, 1, rw, 0, 2, any, 1},
+    {"PK1000 27, 49", "20FFh/1", pk, object::protocol_j1939, 0x20FF, 1, 2, rw, 0, 1, any, 0},
+    {"PK1000 36", "1011h/1", pk, object::restore_defaults, 0x1011, 1, 4, rw, 0, any, any, 0},
+    {"PK1000 37", "1018h/1", pk, object::vendor_id, 0x1018, 1, 4, ro, 0, any, any, 0x3E2},
+    {"PK1000 40", "1402h/2", pk, object::rpdo3_transmission_type, 0x1402, 2, 1, ro, 0, 0xF0, 0xFE,
+     0xFE},
+    {"PK1000 46, E-PK-11", "1800h/2", pk, object::tpdo1_transmission_type, 0x1800, 2, 1, rw, 1,
+     0xF0, 0xFE, 0xFE},
+    {"PK1000 48", "2200h/0", pk, object::serial_number_string, 0x2200, 0, 0, ro, 0, any, any, 0},
+    // PKP-2200-2400-LI_CANopen_UM_rev1.1
+    {"PKP 13", "6500h/1", li, object::command_module, 0x6500, 1, 4, wo, 0, any, any, 0},
+    {"PKP 14", "6000h/0", li, object::keys, 0x6000, 0, 4, ro, 0, any, any, 0},
+    {"PKP 15", "6001h/0", li, object::led_on, 0x6001, 0, 4, rw, 0, any, any, 0},
+    {"PKP 16", "6002h/0", li, object::led_blink, 0x6002, 0, 4, rw, 0, any, any, 0},
+    {"PKP 17, E-PKP-7", "1017h/0", li, object::heartbeat_time, 0x1017, 0, 2, rw, 10, 0xFFFF, any,
+     0},
+    {"PKP 23", "1018h/1", li, object::vendor_id, 0x1018, 1, 4, ro, 0, any, any, 0x35A},
+    {"PKP 30", "6201h/1", li, object::led_brightness, 0x6201, 1, 1, rw, 0, 0x3F, any, 0x3F},
+    {"PKP 32", "6301h/0", li, object::bootloader_present, 0x6301, 0, 1, ro, 0, 1, any, 0},
+    // PKP2600SI_CANopen_UM_rev1.5: 2001h/2002h in three pieces (17, 18)
+    {"2600SI 17 a sub 1 (2Bh)", "2001h/1", packed, object::led_on_r1_12_g1_4, 0x2001, 1, 2, rw, 0,
+     any, any, 0},
+    {"2600SI 17 a sub 2 (2Fh)", "2001h/2", packed, object::led_on_g5_12, 0x2001, 2, 1, rw, 0, any,
+     any, 0},
+    {"2600SI 17 a sub 3 (2Bh)", "2001h/3", packed, object::led_on_b1_12, 0x2001, 3, 2, rw, 0, any,
+     any, 0},
+    {"2600SI 18", "2002h/3", packed, object::led_blink_b1_12, 0x2002, 3, 2, rw, 0, any, any, 0},
+    {"2600SI 19 a", "2003h/1", packed, object::led_brightness, 0x2003, 1, 1, rw, 0, 0x3F, any,
+     0x3F},
+    {"2600SI 26 (write only)", "2100h/0", packed, object::demo_mode, 0x2100, 0, 1, wo, 0, 1, any,
+     0},
+    {"2600SI, 1017h 000Ah..FEFFh", "1017h/0", packed, object::heartbeat_time, 0x1017, 0, 2, rw, 10,
+     0xFEFF, any, 0},
+    // PKP3500-MT_CANopen_UM_rev1.3
+    {"MT 19 b", "2000h/2", mt, object::encoder1_direction_counter, 0x2000, 2, 1, ro, 0, any, any,
+     0},
+    {"MT 19 f: 00h off, 02h..10h, default 08h", "2000h/6", mt, object::encoder1_top_position,
+     0x2000, 6, 1, rw, 2, 0x10, 0, 8},
+    {"MT 19 g", "2000h/7", mt, object::encoder2_top_position, 0x2000, 7, 1, rw, 2, 0x10, 0, 8},
+    {"MT 20 a", "2001h/3", mt, object::led_on_blue, 0x2001, 3, 2, rw, 0, any, any, 0},
+    {"MT 20 c", "2001h/4", mt, object::led_on_encoder, 0x2001, 4, 4, rw, 0, any, any, 0},
+    {"MT 21 c", "2002h/4", mt, object::led_blink_encoder, 0x2002, 4, 4, rw, 0, any, any, 0},
+    {"MT 25: 08h (80 ms)..C8h (2 s)", "2006h/0", mt, object::analog_input_period, 0x2006, 0, 1, rw,
+     0x08, 0xC8, any, 0x08},
+    {"MT 50: 0032h..FEFFh ms", "1800h/5", mt, object::tpdo1_event_timer, 0x1800, 5, 2, rw, 0x32,
+     0xFEFF, any, 0},
+    // docs/si-family.md: the per-colour dictionary (planes of the model's stride: size 0)
+    {"si-family 2001h", "2001h/1", per, object::led_on_red, 0x2001, 1, 0, rw, 0, any, any, 0},
+    {"si-family 2002h", "2002h/3", per, object::led_blink_blue, 0x2002, 3, 0, rw, 0, any, any, 0},
+    {"si-family 2000h", "2000h/1", per, object::keys, 0x2000, 1, 2, ro, 0, any, any, 0},
+    {"si-family 20FFh (write only)", "20FFh/1", per, object::protocol_j1939, 0x20FF, 1, 2, wo, 0, 1,
+     any, 0},
+};
+
+constexpr bool row_is(const object_row& r, const dict_row& e) {
+    return r.id == e.id && r.address == canopen::sdo_address{e.index, e.sub} && r.size == e.size &&
+           r.access == e.acc && r.min == e.min && r.max == e.max && r.also == e.also &&
+           r.initial == e.initial;
+}
+
+// Found by its address and by its object, with every field as the manual gives it.
+constexpr bool found_both_ways(const dict_row& e) {
+    const auto by_address = find_row(e.dict, canopen::sdo_address{e.index, e.sub});
+    const auto by_object = find_row(e.dict, e.id);
+    return by_address && by_object && row_is(*by_address, e) && row_is(*by_object, e);
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(dict_rows, found_both_ways), std::size(dict_rows)>);
+
+// What each dictionary lacks: an address, and an object another dictionary has.
+struct absent_row {
+    std::string_view section;
+    std::string_view frame;
+    dictionary dict;
+    std::uint16_t index;
+    std::uint8_t sub;
+    object id;
+};
+constexpr absent_row absent_rows[] = {
+    {"PK1000: no 6000h, no command module", "6000h/0", pk, 0x6000, 0, object::command_module},
+    {"PK1000: 2003h has subs 1..6", "2003h/7", pk, 0x2003, 7, object::led_on_blue},
+    {"PKP: no 2000h, no J1939", "2000h/1", li, 0x2000, 1, object::protocol_j1939},
+    {"PKP: 6500h has sub 1 only", "6500h/2", li, 0x6500, 2, object::led_on_red},
+    {"2600SI: no 2001h/4, LEDs in pieces", "2001h/4", packed, 0x2001, 4, object::led_on_red},
+    {"2600SI: no encoders", "2000h/2", packed, 0x2000, 2, object::encoder1_tick_counter},
+    {"MT: no 2001h/5, no pieces", "2001h/5", mt, 0x2001, 5, object::led_on_r1_12_g1_4},
+    {"MT: no 6000h", "6000h/0", mt, 0x6000, 0, object::command_module},
+    {"si-family: no 2001h/4 (rings)", "2001h/4", per, 0x2001, 4, object::led_on_encoder},
+    {"si-family: no 2006h", "2006h/0", per, 0x2006, 0, object::analog_input_period},
+};
+constexpr bool absent(const absent_row& r) {
+    return !find_row(r.dict, canopen::sdo_address{r.index, r.sub}) && !find_row(r.dict, r.id) &&
+           !find_row(r.dict, static_cast<object>(object_count)) &&
+           !find_row(r.dict, static_cast<object>(0xFF));
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(absent_rows, absent), std::size(absent_rows)>);
+
+// Every row of every dictionary is found by its address and by its object, and is that row.
+constexpr bool every_row_found(dictionary d) {
+    const auto rows = rows_of(d);
+    if (rows.empty()) return false;
+    for (const auto& r : rows) {
+        const auto a = find_row(d, r.address);
+        const auto o = find_row(d, r.id);
+        if (!a || !o) return false;
+        const dict_row e{"",     "",       d,     r.id,  r.address.index, r.address.subindex,
+                         r.size, r.access, r.min, r.max, r.also,          r.initial};
+        if (!row_is(*a, e) || !row_is(*o, e)) return false;
+        if (kind_of(r.id).id != r.id) return false;
+    }
+    return true;
+}
+constexpr dictionary all_dictionaries[] = {pk, li, packed, mt, per};
+constexpr bool every_dictionary() {
+    for (const auto d : all_dictionaries)
+        if (!every_row_found(d)) return false;
+    return true;
+}
+static_assert(every_dictionary());
+
+// The access rule: a read-only row is not writable, a write-only row not readable.
+struct access_row {
+    std::string_view section;
+    std::string_view frame;
+    dictionary dict;
+    object id;
+    bool readable, writable;
+};
+constexpr access_row access_rows[] = {
+    {"PK1000 16: keys", "", pk, object::keys, true, false},
+    {"PK1000 19", "", pk, object::led_brightness, true, true},
+    {"PKP 13: command module", "", li, object::command_module, false, true},
+    {"2600SI 26", "", packed, object::demo_mode, false, true},
+    {"MT 24", "", mt, object::analog_input_0, true, false},
+    {"si-family 20FFh", "", per, object::protocol_j1939, false, true},
+};
+constexpr bool access_holds(const access_row& r) {
+    const auto row = find_row(r.dict, r.id);
+    return row && row->readable() == r.readable && row->writable() == r.writable;
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(access_rows, access_holds),
+                                            std::size(access_rows)>);
+
+// Ranges: both ends, one past each, and the extra value (FEh event-driven, 00h TOP off).
+struct range_row {
+    std::string_view section;
+    std::string_view frame;
+    dictionary dict;
+    object id;
+    std::uint32_t value;
+    bool in;
+};
+constexpr range_row range_rows[] = {
+    {"PK1000 46: 00h is not a TPDO type", "", pk, object::tpdo1_transmission_type, 0x00, false},
+    {"PK1000 46: 01h every SYNC", "", pk, object::tpdo1_transmission_type, 0x01, true},
+    {"PK1000 46: F0h every 240th SYNC", "", pk, object::tpdo1_transmission_type, 0xF0, true},
+    {"PK1000 46: F1h", "", pk, object::tpdo1_transmission_type, 0xF1, false},
+    {"PK1000 46: FDh", "", pk, object::tpdo1_transmission_type, 0xFD, false},
+    {"PK1000 46: FEh event-driven", "", pk, object::tpdo1_transmission_type, 0xFE, true},
+    {"PK1000 46: FFh", "", pk, object::tpdo1_transmission_type, 0xFF, false},
+    {"PK1000 23: node 00h", "", pk, object::node_id, 0x00, false},
+    {"PK1000 23: node 7Fh", "", pk, object::node_id, 0x7F, true},
+    {"PK1000 23: node 80h", "", pk, object::node_id, 0x80, false},
+    {"PKP 30: 3Fh", "", li, object::led_brightness, 0x3F, true},
+    {"PKP 30: 40h", "", li, object::led_brightness, 0x40, false},
+    {"PKP 17: 9 ms", "", li, object::heartbeat_time, 9, false},
+    {"PKP 17: FFFFh", "", li, object::heartbeat_time, 0xFFFF, true},
+    {"2600SI: 1017h FEFFh", "", packed, object::heartbeat_time, 0xFEFF, true},
+    {"2600SI: 1017h FF00h", "", packed, object::heartbeat_time, 0xFF00, false},
+    {"MT 19 f: 00h disabled", "", mt, object::encoder1_top_position, 0x00, true},
+    {"MT 19 f: 01h", "", mt, object::encoder1_top_position, 0x01, false},
+    {"MT 19 f: 02h", "", mt, object::encoder1_top_position, 0x02, true},
+    {"MT 19 f: 10h", "", mt, object::encoder1_top_position, 0x10, true},
+    {"MT 19 f: 11h", "", mt, object::encoder1_top_position, 0x11, false},
+    {"MT 25: 07h", "", mt, object::analog_input_period, 0x07, false},
+    {"MT 25: C8h", "", mt, object::analog_input_period, 0xC8, true},
+    {"MT 25: C9h", "", mt, object::analog_input_period, 0xC9, false},
+    {"MT 50: 31h", "", mt, object::tpdo1_event_timer, 0x31, false},
+    {"MT 50: 32h", "", mt, object::tpdo1_event_timer, 0x32, true},
+    {"si-family 2003h/3: 0Ah", "", per, object::backlight_colour, 0x0A, false},
+    {"si-family 2003h/3: 09h", "", per, object::backlight_colour, 0x09, true},
+};
+constexpr bool range_holds(const range_row& r) {
+    const auto row = find_row(r.dict, r.id);
+    return row && row->in_range(r.value) == r.in;
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(range_rows, range_holds), std::size(range_rows)>);
+
+// The value kind of the objects whose kind carries more (a plane, a piece of the LED string).
+struct kind_row {
+    std::string_view section;
+    std::string_view frame;
+    object id;
+    value_kind kind;
+    plane holds;
+    std::uint8_t offset, width;
+};
+constexpr kind_row kind_rows[] = {
+    {"PK1000 17: red plane", "", object::led_on_red, value_kind::led_plane, plane::red, 0, 0},
+    {"PK1000 18: green plane", "", object::led_blink_green, value_kind::led_plane, plane::green, 0,
+     0},
+    {"MT 20 a: blue plane", "", object::led_on_blue, value_kind::led_plane, plane::blue, 0, 0},
+    // PKP2600SI 17: red 1-12 and green 1-4 are bits 0..15 of the 36-bit string (stride 12),
+    // green 5-12 bits 16..23, blue 1-12 bits 24..35.
+    {"2600SI 17 sub 1", "", object::led_on_r1_12_g1_4, value_kind::led_part, plane::red, 0, 16},
+    {"2600SI 17 sub 2", "", object::led_on_g5_12, value_kind::led_part, plane::red, 16, 8},
+    {"2600SI 18 sub 3", "", object::led_blink_b1_12, value_kind::led_part, plane::red, 24, 12},
+    {"MT 20 c", "", object::led_on_encoder, value_kind::ring, plane::red, 0, 0},
+    {"MT 19 d", "", object::encoder2_direction_counter, value_kind::direction_counter, plane::red,
+     0, 0},
+    {"PK1000 31: 1001h aborts", "", object::error_register, value_kind::none, plane::red, 0, 0},
+    {"PKP 13", "", object::command_module, value_kind::commands, plane::red, 0, 0},
+    {"PK1000 28", "", object::consumer_heartbeat, value_kind::consumer_heartbeat, plane::red, 0, 0},
+    {"PK1000 36", "", object::restore_defaults, value_kind::restore, plane::red, 0, 0},
+};
+constexpr bool kind_holds(const kind_row& r) {
+    const auto k = kind_of(r.id);
+    return k.id == r.id && k.kind == r.kind && k.holds == r.holds && k.offset == r.offset &&
+           k.width == r.width;
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(kind_rows, kind_holds), std::size(kind_rows)>);
+// A value outside the enum has no kind.
+static_assert(kind_of(static_cast<object>(0xFF)).kind == value_kind::none);
+static_assert(load_signature == 0x6461'6F6C);  // "load" (6Ch 6Fh 61h 64h), PK1000 36
+}  // namespace
+
+TEST_CASE("dictionary rows pinned from the manuals, found by address and by object") {
+    powerkey_tests::check_rows(dict_rows, found_both_ways);
+}
+
+TEST_CASE("what each dictionary lacks is not found, by address or by object") {
+    powerkey_tests::check_rows(absent_rows, absent);
+}
+
+TEST_CASE("every row of every dictionary is found both ways and has a kind") {
+    CHECK(every_dictionary());
+    for (const auto d : all_dictionaries) {
+        CAPTURE(std::string(to_string(d)));
+        CHECK(every_row_found(d));
+    }
+    // Each model's dictionary is one of the five (info() of every model).
+    for (const auto m : enum_values<model>()) {
+        CAPTURE(std::string(to_string(m)));
+        REQUIRE(info(m).has_value());
+        CHECK_FALSE(rows_of(info(m)->dictionary).empty());
+    }
+}
+
+TEST_CASE("access, ranges and kinds of the rows") {
+    powerkey_tests::check_rows(access_rows, access_holds);
+    powerkey_tests::check_rows(range_rows, range_holds);
+    powerkey_tests::check_rows(kind_rows, kind_holds);
+    CHECK(kind_of(static_cast<object>(object_count)).kind == value_kind::none);
+    CHECK(kind_of(static_cast<object>(object_count)).id == static_cast<object>(object_count));
+}

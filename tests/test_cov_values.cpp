@@ -1,0 +1,458 @@
+// The shared values, the value builders, the command table and the field views, each against a
+// manual frame: a message filled in through fields() (as `powerkey encode --json` does) or built
+// with a *_value builder encodes to the manual's bytes and decodes back to itself.
+#include <doctest/doctest.h>
+
+#include <powerkey/fields.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/values.hpp>
+
+#include "support.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace {
+using namespace powerkey;
+using powerkey_tests::first_failing;
+using powerkey_tests::frame_of;
+
+// --- filling a message through fields() ----------------------------------------------------------
+
+struct field_value {
+    std::string_view name;
+    std::uint32_t number = 0;             // a number, a flag, an enum's byte, a set's mask
+    std::array<std::uint8_t, 4> bytes{};  // a string piece's bytes
+};
+
+// Sets the field called `v.name` from v, whatever its type; counts the fields it set.
+struct filler {
+    field_value v;
+    int set = 0;
+    template <class T>
+    constexpr void operator()(std::string_view name, T& field) {
+        if (name != v.name) return;
+        ++set;
+        if constexpr (std::is_same_v<T, bool>)
+            field = v.number != 0;
+        else if constexpr (std::is_integral_v<T> || std::is_enum_v<T>)
+            field = static_cast<T>(v.number);
+        else if constexpr (is_bounded<T>::value)
+            field = T::make(v.number).value();
+        else if constexpr (is_index_set<T>::value)
+            field = T::from_mask(v.number);
+        else if constexpr (std::is_same_v<T, std::array<std::uint8_t, 4>>)
+            field = v.bytes;
+    }
+};
+
+// m with each of `values` set through fields(); false in `all_set` when a name matched no field.
+constexpr message filled(message m, std::span<const field_value> values, bool& all_set) {
+    all_set = true;
+    for (const auto& v : values) {
+        filler f{v};
+        std::visit([&f](auto& s) { std::remove_cvref_t<decltype(s)>::fields(s, f); }, m);
+        all_set = all_set && f.set == 1;
+    }
+    return m;
+}
+
+struct fill_row {
+    std::string_view section;
+    std::string_view frame;
+    model id;
+    message base;  // the kind, object or command code
+    std::array<field_value, 5> values;
+    std::size_t count;
+};
+
+constexpr fill_row fill_rows[] = {
+    // PKP3500-MT 19 b: bit 7 counterclockwise, bits 0..6 the ticks
+    {"PKP3500-MT 19 b",
+     "595#4F00200281000000",
+     model::pkp3500mt,
+     sdo_read_reply{object::encoder1_direction_counter, {}},
+     {{{"counterclockwise", 1}, {"ticks", 1}}},
+     2},
+    {"PKP3500-MT 19 d",
+     "595#4F00200402000000",
+     model::pkp3500mt,
+     sdo_read_reply{object::encoder2_direction_counter, {}},
+     {{{"counterclockwise", 0}, {"ticks", 2}}},
+     2},
+    // PKP3500-MT 20 c: the encoder ring LEDs, LED 8 = bit 7
+    {"PKP3500-MT 20 c",
+     "615#2301200480000000",
+     model::pkp3500mt,
+     sdo_write{object::led_on_encoder, {}},
+     {{{"leds", 0x80}}},
+     1},
+    // PKP-1500-LI manual, 100Ah: "2.10" in one expedited reply (docs/si-family.md)
+    {"PKP-1500-LI 100Ah",
+     "595#430A1000322E3130",
+     model::pkp1500li,
+     sdo_read_reply{object::software_version, {}},
+     {{{"size", 4}, {"bytes", 0, {'2', '.', '1', '0'}}}},
+     2},
+    // PK1000 28: 100 ms, producer node 7Eh
+    {"PK1000 28",
+     "615#2316100164007E00",
+     model::pk1000,
+     sdo_write{object::consumer_heartbeat, {}},
+     {{{"period_ms", 100}, {"producer", 0x7E}}},
+     2},
+    // PK1000 38: the RPDO1 COB-ID, valid, no RTR, 215h
+    {"PK1000 38",
+     "595#4300140115020040",
+     model::pk1000,
+     sdo_read_reply{object::rpdo1_cob_id, {}},
+     {{{"invalid", 0}, {"no_rtr", 1}, {"can_id", 0x215}}},
+     3},
+    // PK1000 30 (E-PK-6, E-PK-7): profile 0191h, digital input and output, analogue output
+    {"PK1000 30",
+     "595#4300100091010B00",
+     model::pk1000,
+     sdo_read_reply{object::device_type, {}},
+     {{{"profile", 0x191},
+       {"digital_input", 1},
+       {"digital_output", 1},
+       {"analogue_input", 0},
+       {"analogue_output", 1}}},
+     5},
+    // PK1000 19 c, 20, 21, 23, 24: one field each
+    {"PK1000 19 c",
+     "615#2F03200305000000",
+     model::pk1000,
+     sdo_write{object::backlight_colour, {}},
+     {{{"colour", 0x05}}},
+     1},
+    {"PK1000 20",
+     "615#2F10200004000000",
+     model::pk1000,
+     sdo_write{object::baud_rate, {}},
+     {{{"baud_rate", 0x04}}},
+     1},
+    {"PK1000 21",
+     "615#2F11200001000000",
+     model::pk1000,
+     sdo_write{object::boot_up, {}},
+     {{{"enabled", 1}}},
+     1},
+    {"PK1000 23",
+     "615#2F1320003A000000",
+     model::pk1000,
+     sdo_write{object::node_id, {}},
+     {{{"node_id", 0x3A}}},
+     1},
+    {"PK1000 24",
+     "615#2F14200002000000",
+     model::pk1000,
+     sdo_write{object::startup_show, {}},
+     {{{"startup_show", 0x02}}},
+     1},
+    // PK1000 17 a: red LED 3 (bit 2 of the red plane)
+    {"PK1000 17 a",
+     "615#2301200104000000",
+     model::pk1000,
+     sdo_write{object::led_on_red, {}},
+     {{{"red", 0x04}}},
+     1},
+    // PK1000 46 b: event timer 500 ms
+    {"PK1000 46 b",
+     "615#2B001805F4010000",
+     model::pk1000,
+     sdo_write{object::tpdo1_event_timer, {}},
+     {{{"period_ms", 500}}},
+     1},
+    // PKP2600SI 17 a sub 2: bits 16..23 of the string, green 5..12; 40h = green 11
+    {"PKP2600SI 17 a sub 2",
+     "615#2F01200240000000",
+     model::pkp2600si,
+     sdo_write{object::led_on_g5_12, {}},
+     {{{"green", 1u << 10}}},
+     1},
+    // PKP 13 f: periodic key state every 32h x 10 ms; 13 a: LED 8 red
+    {"PKP 13 f",
+     "615#2300650112013200",
+     model::pkp2400,
+     command{command_code::set_periodic_transmission},
+     {{{"enabled", 1}, {"period_10ms", 0x32}}},
+     2},
+    {"PKP 13 a",
+     "615#2300650101080100",
+     model::pkp2400,
+     command{command_code::set_led_state},
+     {{{"key", 8}, {"state", 0x01}}},
+     2},
+    {"PKP 13 e",
+     "615#2300650111010000",
+     model::pkp2400,
+     command{command_code::set_baud_rate},
+     {{{"baud_rate", static_cast<std::uint32_t>(baud_rate::kbit_250)}}},
+     1},
+    {"PKP 13 h",
+     "615#2300650170180000",
+     model::pkp2400,
+     command{command_code::set_node_id},
+     {{{"node_id", 0x18}}},
+     1},
+    {"PKP 13 m",
+     "615#2300650150030000",
+     model::pkp2400,
+     command{command_code::set_startup_show},
+     {{{"startup_show", static_cast<std::uint32_t>(startup_show::disabled)}}},
+     1},
+    {"PKP 13 k",
+     "615#230065017D010000",
+     model::pkp2400,
+     command{command_code::set_default_backlight_colour},
+     {{{"colour", 0x01}}},
+     1},
+    {"PKP 13 b",
+     "615#2300650102100000",
+     model::pkp2400,
+     command{command_code::set_led_brightness},
+     {{{"level", 0x10}}},
+     1},
+};
+
+// Filled in through fields(), the message encodes to the manual's frame and decodes back.
+constexpr bool fills(const fill_row& r) {
+    bool all_set = false;
+    const auto m = filled(r.base, std::span(r.values.data(), r.count), all_set);
+    const auto node = canopen::default_node_id;
+    const auto f = encode(node, r.id, m);
+    const auto d = decode(frame_of(r.frame), node, r.id);
+    return all_set && f && *f == frame_of(r.frame) && d && *d == m;
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(fill_rows, fills), std::size(fill_rows)>);
+
+// --- the value builders
+// ----------------------------------------------------------------------------
+
+struct builder_row {
+    std::string_view section;
+    std::string_view frame;
+    model id;
+    message msg;
+};
+constexpr builder_row builder_rows[] = {
+    {"PK1000 20", "615#2F10200004000000", model::pk1000,
+     sdo_write{object::baud_rate, baud_value(baud_rate::kbit_125)}},
+    {"PK1000 24", "615#2F14200002000000", model::pk1000,
+     sdo_write{object::startup_show, show_value(startup_show::fast_flash)}},
+    {"PK1000 28", "615#23161001F4010100", model::pk1000,
+     sdo_write{object::consumer_heartbeat, consumer_heartbeat_value(500, 0x01)}},
+    {"PK1000 17 b", "595#4301200108000000", model::pk1000,
+     sdo_read_reply{object::led_on_red, leds_value({{4}, {}, {}})}},
+    {"PK1000 19 c", "615#2F03200305000000", model::pk1000,
+     sdo_write{object::backlight_colour, colour_value(backlight_colour::cyan)}},
+    {"PK1000 21", "595#4F11200001000000", model::pk1000,
+     sdo_read_reply{object::boot_up, flag_value(true)}},
+    {"PK1000 23", "615#2F1320003A000000", model::pk1000,
+     sdo_write{object::node_id, node_value(0x3A)}},
+    {"PKP 15 b: PKP-2200 green 2", "595#4301600020000000", model::pkp2200,
+     sdo_read_reply{object::led_on, leds_value({{}, {2}, {}})}},
+    {"PKP3500-MT 19 a", "595#4B002001FF7F0000", model::pkp3500mt,
+     sdo_read_reply{object::keys, keys_value(key_set::from_mask(0x7FFF))}},
+    {"PKP 30", "615#2F01620110000000", model::pkp2400,
+     sdo_write{object::led_brightness, level_value(0x10)}},
+    {"PKP-1500-LI 100Ah", "595#430A1000322E3130", model::pkp1500li,
+     sdo_read_reply{object::software_version, string_value(4, {'2', '.', '1', '0'})}},
+    {"PK1000 29", "615#2B17100032000000", model::pk1000,
+     sdo_write{object::heartbeat_time, number_value(50)}},
+};
+constexpr bool builds(const builder_row& r) {
+    const auto node = canopen::default_node_id;
+    const auto f = encode(node, r.id, r.msg);
+    const auto d = decode(frame_of(r.frame), node, r.id);
+    return f && *f == frame_of(r.frame) && d && *d == r.msg;
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(builder_rows, builds), std::size(builder_rows)>);
+
+// --- the command table (PKP section 13) ----------------------------------------------------------
+
+struct command_table_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    std::uint8_t code;
+    command_param p1, p2;
+};
+using cp = command_param;
+constexpr command_table_row command_table_rows[] = {
+    {"PKP 13 a: key, state", "", 0x01, cp::key, cp::state},
+    {"PKP 13 b: LED level", "", 0x02, cp::brightness, cp::none},
+    {"PKP 13 b: backlight level", "", 0x03, cp::brightness, cp::none},
+    {"PKP 13 c: colour", "", 0x04, cp::colour, cp::none},
+    {"PKP 13 d: on/off", "", 0x10, cp::flag, cp::none},
+    {"PKP 13 e: baud", "", 0x11, cp::baud, cp::none},
+    {"PKP 13 f: on/off, period", "", 0x12, cp::flag, cp::period_10ms},
+    {"PKP 13 g: on/off", "", 0x13, cp::flag, cp::none},
+    {"PKP 13 m: show", "", 0x50, cp::show, cp::none},
+    {"PKP 13 h: node", "", 0x70, cp::node, cp::none},
+    {"PKP 13 l: on/off", "", 0x7A, cp::flag, cp::none},
+    {"PKP 13 j: level", "", 0x7B, cp::brightness, cp::none},
+    {"PKP 13 i: level", "", 0x7C, cp::brightness, cp::none},
+    {"PKP 13 k: colour", "", 0x7D, cp::colour, cp::none},
+};
+constexpr bool command_found(const command_table_row& r) {
+    const auto row = find_command(r.code);
+    return row && static_cast<std::uint8_t>(row->code) == r.code && row->p1 == r.p1 &&
+           row->p2 == r.p2;
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(command_table_rows, command_found),
+                                            std::size(command_table_rows)>);
+// Bytes no command has: below, between and above the codes, and past the index (80h..FFh).
+constexpr bool no_other_command() {
+    for (unsigned c = 0; c < 256; ++c) {
+        bool listed = false;
+        for (const auto& r : command_table_rows) listed = listed || r.code == c;
+        if (find_command(static_cast<std::uint8_t>(c)).has_value() != listed) return false;
+    }
+    return true;
+}
+static_assert(no_other_command());
+
+// The fields each command shows: its code, then its row's parameters by name.
+struct command_fields_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    command_code code;
+    std::string_view names;  // space-separated, after "command"
+};
+constexpr command_fields_row command_fields_rows[] = {
+    {"PKP 13 a", "", command_code::set_led_state, "key state"},
+    {"PKP 13 b", "", command_code::set_led_brightness, "level"},
+    {"PKP 13 c", "", command_code::set_backlight_colour, "colour"},
+    {"PKP 13 e", "", command_code::set_baud_rate, "baud_rate"},
+    {"PKP 13 f", "", command_code::set_periodic_transmission, "enabled period_10ms"},
+    {"PKP 13 h", "", command_code::set_node_id, "node_id"},
+    {"PKP 13 m", "", command_code::set_startup_show, "startup_show"},
+    {"no such command", "", static_cast<command_code>(0x99), ""},
+};
+constexpr bool shows_fields(const command_fields_row& r) {
+    command c;
+    c.code = r.code;
+    std::array<std::string_view, 4> seen{};
+    std::size_t n = 0;
+    command::fields(std::as_const(c), [&](std::string_view name, const auto&) {
+        if (n < seen.size()) seen[n] = name;
+        ++n;
+    });
+    if (n == 0 || seen[0] != "command") return false;
+    std::string_view rest = r.names;
+    for (std::size_t i = 1; i < n; ++i) {
+        const auto end = rest.find(' ');
+        if (rest.substr(0, end) != seen[i]) return false;
+        rest = end == std::string_view::npos ? std::string_view{} : rest.substr(end + 1);
+    }
+    return rest.empty();
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(command_fields_rows, shows_fields),
+                                            std::size(command_fields_rows)>);
+
+// --- LED maps: colours and modes
+// -------------------------------------------------------------------
+
+// PKP sections 11, 12: amber = red + green, magenta = red + blue, cyan = green + blue, white all.
+struct colour_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    colour c;
+    bool red, green, blue;
+};
+constexpr colour_row colour_rows[] = {
+    {"PKP 11", "", colour::off, false, false, false},
+    {"PKP 11", "", colour::red, true, false, false},
+    {"PKP 11", "", colour::green, false, true, false},
+    {"PKP 11", "", colour::blue, false, false, true},
+    {"PKP 11: amber", "", colour::amber, true, true, false},
+    {"PKP 11: cyan", "", colour::cyan, false, true, true},
+    {"PKP 11: magenta", "", colour::magenta, true, false, true},
+    {"PKP 11: white", "", colour::white, true, true, true},
+};
+constexpr bool colour_holds(const colour_row& r) {
+    leds l{{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};  // key 2 white first: set() clears what c lacks
+    l.set(2, r.c);
+    const leds& cl = l;
+    return cl.of(plane::red).contains(2) == r.red && cl.of(plane::green).contains(2) == r.green &&
+           cl.of(plane::blue).contains(2) == r.blue && l.colour_of(2) == r.c &&
+           l.colour_of(1) == colour::white && l.colour_of(3) == colour::white && l.empty() == false;
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(colour_rows, colour_holds),
+                                            std::size(colour_rows)>);
+// A value outside the enum sets no plane.
+static_assert(leds{{5}, {5}, {5}}.set(5, static_cast<colour>(8)).colour_of(5) == colour::off);
+
+// PK1000 sections 12, 13: on, blink, and both = alternate blink.
+struct mode_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    bool on, blink;
+    led_mode mode;
+};
+constexpr mode_row mode_rows[] = {
+    {"PK1000 12", "", false, false, led_mode::off},
+    {"PK1000 12", "", true, false, led_mode::on},
+    {"PK1000 13", "", false, true, led_mode::blink},
+    {"PK1000 13", "", true, true, led_mode::alternate_blink},
+};
+constexpr bool mode_holds(const mode_row& r) {
+    leds on, blink;
+    if (r.on) on.of(plane::green).insert(7);
+    if (r.blink) blink.of(plane::green).insert(7);
+    return mode_of(on, blink, plane::green, 7) == r.mode &&
+           mode_of(on, blink, plane::red, 7) == led_mode::off &&
+           mode_of(on, blink, plane::blue, 7) == led_mode::off;
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(mode_rows, mode_holds), std::size(mode_rows)>);
+}  // namespace
+
+TEST_CASE("messages filled in through fields() encode to the manual's frames") {
+    powerkey_tests::check_rows(fill_rows, fills);
+}
+
+TEST_CASE("the value builders give the manual's frames") {
+    powerkey_tests::check_rows(builder_rows, builds);
+    // At run time too (the table above is built at compile time).
+    const auto node = canopen::default_node_id;
+    volatile std::uint8_t code = 0x04;
+    const auto baud = static_cast<baud_rate>(code);
+    CHECK(encode(node, model::pk1000, sdo_write{object::baud_rate, baud_value(baud)}) ==
+          frame_of("615#2F10200004000000"));
+    CHECK(
+        encode(node, model::pk1000,
+               sdo_write{object::startup_show, show_value(static_cast<startup_show>(code - 2))}) ==
+        frame_of("615#2F14200002000000"));
+    CHECK(encode(node, model::pk1000,
+                 sdo_write{object::consumer_heartbeat,
+                           consumer_heartbeat_value(static_cast<std::uint16_t>(code * 125),
+                                                    canopen::node_id::make(code - 3).value())}) ==
+          frame_of("615#23161001F4010100"));
+    CHECK(encode(node, model::pk1000,
+                 sdo_read_reply{object::led_on_red,
+                                leds_value({led_set::from_mask(code * 2u), {}, {}})}) ==
+          frame_of("595#4301200108000000"));
+}
+
+TEST_CASE("the command table: every command byte of PKP section 13 and no other") {
+    powerkey_tests::check_rows(command_table_rows, command_found);
+    powerkey_tests::check_rows(command_fields_rows, shows_fields);
+    CHECK(no_other_command());
+}
+
+TEST_CASE("LED colours and modes") {
+    powerkey_tests::check_rows(colour_rows, colour_holds);
+    powerkey_tests::check_rows(mode_rows, mode_holds);
+}
