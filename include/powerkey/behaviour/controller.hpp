@@ -584,28 +584,18 @@ private:
         }
         // The shadow values this model takes by SDO only (no RPDO3/RPDO4 for them).
         if (take(dirty_brightness, !info_.brightness_pdo && has_brightness_)) {
-            if (find_row(info_.dictionary, object::led_brightness)) {
-                if (begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
-                              sdo_origin::shadow, 0))
-                    return;
-            } else if (has_commands()) {
-                command c;
-                c.code = command_code::set_led_brightness;
-                c.level = brightness_;
-                if (begin_job(c, sdo_origin::shadow, 0)) return;
-            }
+            // By SDO write of the object. (The command module 6500h could set it too, but the one
+            // dictionary with the module, the PKP's, also has the objects: 6201h sub 1 and 2.)
+            if (find_row(info_.dictionary, object::led_brightness) &&
+                begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
+                          sdo_origin::shadow, 0))
+                return;
         }
         if (take(dirty_level, !info_.backlight_pdo && has_backlight_)) {
-            if (find_row(info_.dictionary, object::backlight_level)) {
-                if (begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
-                              sdo_origin::shadow, 0))
-                    return;
-            } else if (has_commands()) {
-                command c;
-                c.code = command_code::set_backlight_level;
-                c.level = backlight_level_;
-                if (begin_job(c, sdo_origin::shadow, 0)) return;
-            }
+            if (find_row(info_.dictionary, object::backlight_level) &&
+                begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
+                          sdo_origin::shadow, 0))
+                return;
         }
         if (take(dirty_colour, !colour_by_pdo() && has_backlight_ &&
                                    backlight_colour_ != backlight_colour::keep)) {

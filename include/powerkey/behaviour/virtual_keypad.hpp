@@ -363,10 +363,6 @@ private:
         for (const auto& r : rows_of(dictionary::pk1000)) value_[idx(r.id)] = r.initial;
         for (const auto& r : rows_of(info_.dictionary)) value_[idx(r.id)] = r.initial;
         value_[idx(object::node_id)] = canopen::default_node_id.value();
-        // 1016h sub 1: off, monitoring node 01h ("01h default", PK1000 28); the row says 0,
-        // which the codec refuses as a value (no producer)
-        if (value_[idx(object::consumer_heartbeat)] == 0)
-            value_[idx(object::consumer_heartbeat)] = 0x0001'0000;
         if (find_row(info_.dictionary, object::total_keys)) {
             // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
             // (4 keys x RGB), 6 external LEDs; the other models by the same rule (inferred),
@@ -859,7 +855,8 @@ private:
     }
     // PKP 13 a: one key's LED. x on / x blink / x alternate blink set the plane in the on map,
     // the blink map, or both (both = alternate blink, PKP 12). The two-colour states are
-    // inferred from the PKP 12 "alternate" example: both colours blink, the first shown on.
+    // inferred from the PKP 12 "alternate" example: red and green blink, and the on map holds
+    // green for red/green, red for amber/red, both (amber) for green/amber.
     constexpr void set_led_state(unsigned k, led_state s) noexcept {
         for (unsigned c = 0; c < 3; ++c) {
             on_.of(static_cast<plane>(c)).erase(k);
