@@ -151,6 +151,18 @@ constexpr message segment(bool toggle, std::uint8_t unused, bool last,
                                          last, bytes};
 }
 constexpr leds rgb(led_set r, led_set g = {}, led_set b = {}) noexcept { return {r, g, b}; }
+// A key-state PDO (tick 2Ah, the manuals' examples), LED map PDOs, and one plane of an LED
+// register (PK1000 2001h/2002h, the SI family's per-colour objects).
+constexpr message keys(key_set k) noexcept { return key_state{k, 0x2A}; }
+constexpr message on(led_set r, led_set g = {}, led_set b = {}) noexcept {
+    return led_on{rgb(r, g, b)};
+}
+constexpr message blink(led_set r, led_set g = {}, led_set b = {}) noexcept {
+    return led_blink{rgb(r, g, b)};
+}
+constexpr object_value red(led_set s) noexcept { return leds_value(rgb(s)); }
+constexpr object_value green(led_set s) noexcept { return leds_value(rgb({}, s)); }
+constexpr object_value blue(led_set s) noexcept { return leds_value(rgb({}, {}, s)); }
 // Members from..to: LEDs by default, keys with key_span.
 template <class Set = led_set>
 constexpr Set span(unsigned from, unsigned to) noexcept {

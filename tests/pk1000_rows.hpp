@@ -22,12 +22,6 @@ using decoder_rows::error_row;
 using decoder_rows::row;
 using o = object;
 
-constexpr message keys(key_set k) noexcept { return key_state{k, 0x2A}; }
-constexpr message on(led_set r, led_set g) noexcept { return led_on{rgb(r, g)}; }
-constexpr message blink(led_set r, led_set g) noexcept { return led_blink{rgb(r, g)}; }
-// One plane of an LED register (2001h, 2002h).
-constexpr object_value red(led_set s) noexcept { return leds_value(rgb(s)); }
-constexpr object_value green(led_set s) noexcept { return leds_value(rgb({}, s)); }
 // A PDO COB-ID read: valid, no RTR (bit 30), the 11-bit id.
 constexpr message cob(object id, std::uint32_t can_id) noexcept {
     return value(id, 0x4000'0000u | can_id);

@@ -21,16 +21,6 @@ using decoder_rows::row;
 using o = object;
 using si_rows::ring;
 
-constexpr message keys(key_set k) noexcept { return key_state{k, 0x2A}; }
-constexpr message on(led_set r, led_set g = {}, led_set b = {}) noexcept {
-    return led_on{rgb(r, g, b)};
-}
-constexpr message blink(led_set r, led_set g = {}, led_set b = {}) noexcept {
-    return led_blink{rgb(r, g, b)};
-}
-constexpr object_value red(led_set s) noexcept { return leds_value(rgb(s)); }
-constexpr object_value green(led_set s) noexcept { return leds_value(rgb({}, s)); }
-constexpr object_value blue(led_set s) noexcept { return leds_value(rgb({}, {}, s)); }
 // The level-only backlight PDO: byte 1 00h, the stored colour (PKP3500SI/PKP2500SI manuals).
 constexpr message level_only(std::uint8_t l) noexcept {
     return backlight{level::make(l).value(), backlight_colour::keep};
