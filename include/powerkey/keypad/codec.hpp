@@ -57,7 +57,7 @@ constexpr std::uint8_t row_size(const model_info& m, const codec_row& r,
 // a bit that names no LED.
 constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
                                    const codec_row& r) noexcept {
-    const std::uint64_t mask = (std::uint64_t{1} << r.b) - 1;
+    const std::uint64_t mask = (std::uint64_t{1} << r.part_width()) - 1;
     if ((raw & ~mask) != 0) return errc::reserved_not_zero;
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
@@ -67,21 +67,9 @@ constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
 // reserved_not_zero (bytes past the size, bits that name no key or LED, reserved bits of a
 // COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
 // unknown_object (an object without a value).
-constexpr errc read_value(const model_info& m, const codec_row& r, std::uint8_t size,
-                          std::uint32_t data, bool write, object_value& v) noexcept {
-    if (size != row_size(m, r, size)) return errc::size_mismatch;
-    const std::uint32_t raw = data & (0xFFFF'FFFFu >> (32 - 8 * size));
-    if (raw != data) return errc::reserved_not_zero;
-    v.raw = raw;
+constexpr errc read_other_value(const model_info& m, const codec_row& r, std::uint8_t size,
+                                std::uint32_t raw, bool write, object_value& v) noexcept {
     switch (r.kind) {
-        case value_kind::number:
-        case value_kind::flag:
-        case value_kind::brightness:
-        case value_kind::colour:
-        case value_kind::baud:
-        case value_kind::show:
-        case value_kind::node:
-            return value_ranges[r.a].contains(raw) ? errc{} : errc::value_out_of_range;
         case value_kind::period:
             return raw == 0 || value_ranges[r.a].contains(raw) ? errc{}
                                                                 : errc::value_out_of_range;
@@ -126,10 +114,52 @@ constexpr errc read_value(const model_info& m, const codec_row& r, std::uint8_t 
         case value_kind::string: v.size = size; return errc{};
         case value_kind::restore:
             return write && raw != load_signature ? errc::value_out_of_range : errc{};
+        case value_kind::number:
+        case value_kind::flag:
+        case value_kind::brightness:
+        case value_kind::colour:
+        case value_kind::baud:
+        case value_kind::show:
+        case value_kind::node:
+            return value_ranges[r.a].contains(raw) ? errc{} : errc::value_out_of_range;
         case value_kind::none:
         case value_kind::commands: break;
     }
     return errc::unknown_object;
+}
+// The kinds number..node, most of what is read and written, take one range test here; the
+// others the switch above.
+constexpr errc read_value(const model_info& m, const codec_row& r, std::uint8_t size,
+                          std::uint32_t data, bool write, object_value& v) noexcept {
+    if (size != row_size(m, r, size)) return errc::size_mismatch;
+    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
+    v.raw = data;
+    if (r.kind <= value_kind::node)
+        return value_ranges[r.a].contains(data) ? errc{} : errc::value_out_of_range;
+    return read_other_value(m, r, size, data, write, v);
+}
+
+// The sdo_read_reply or sdo_write (T) of row r's value in an expedited SDO of specifier c. The
+// common case (a number kind of the size the specifier gives, in range) is tested first, with
+// nothing staged; every other frame takes read_value, which finds the error in the documented
+// order. Kept apart from the frame decoders so that their common paths stay short.
+template <class T>
+[[gnu::noinline]] constexpr result<message> checked_value_message(const model_info& m,
+                                                                  const codec_row& r,
+                                                                  std::uint8_t size,
+                                                                  std::uint32_t data,
+                                                                  bool write) noexcept {
+    T t{r.id, {}};
+    if (const auto e = read_value(m, r, size, data, write, t.value); e != errc{}) return e;
+    return message{t};
+}
+template <class T>
+constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
+                                        std::uint32_t data, bool write) noexcept {
+    if (r.kind <= value_kind::node && r.size() == size &&
+        (std::uint64_t{data} >> (8 * size)) == 0 && value_ranges[r.a].contains(data))
+        return message{T{r.id, {data, {}, 0}}};
+    return checked_value_message<T>(m, r, size, data, write);
 }
 
 // The expedited bytes of a value of row r (what read_value reads back; the codec checks it).
@@ -139,7 +169,7 @@ constexpr canopen::expedited_data write_value(const model_info& m, const codec_r
     if (r.kind == value_kind::led_plane) raw = v.map.of(static_cast<plane>(r.a)).mask();
     if (r.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
     if (r.kind == value_kind::led_part)
-        raw = (pack_leds(m, v.map, m.planes) >> r.a) & ((std::uint64_t{1} << r.b) - 1);
+        raw = (pack_leds(m, v.map, m.planes) >> r.a) & ((std::uint64_t{1} << r.part_width()) - 1);
     const std::uint8_t size = row_size(m, r, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
     canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
     store_le<4>(d.bytes, 0, raw);
@@ -218,19 +248,20 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
 // reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h), value_out_of_range
 // (a parameter outside its range).
-constexpr result<command> read_command(const model_info& m, std::uint8_t size,
+constexpr result<message> read_command(const model_info& m, std::uint8_t size,
                                        std::uint32_t data) noexcept {
     if (size != 4) return errc::size_mismatch;
     const auto byte = [data](unsigned i) { return static_cast<std::uint8_t>(data >> (8 * i)); };
-    const auto row = find_command(byte(0));
-    if (!row) return errc::unknown_command;
-    if (byte(3) != 0 || (row->p2 == command_param::none && byte(2) != 0))
+    const std::uint8_t i = byte(0) < command_index.size() ? command_index[byte(0)] : 0;
+    if (i == 0) return errc::unknown_command;
+    const command_row& row = command_table[i - 1u];
+    if (byte(3) != 0 || (row.p2 == command_param::none && byte(2) != 0))
         return errc::reserved_not_zero;
     command c;
-    c.code = row->code;
-    if (const auto e = read_param(m, row->p1, byte(1), c); e != errc{}) return e;
-    if (const auto e = read_param(m, row->p2, byte(2), c); e != errc{}) return e;
-    return c;
+    c.code = row.code;
+    if (const auto e = read_param(m, row.p1, byte(1), c); e != errc{}) return e;
+    if (const auto e = read_param(m, row.p2, byte(2), c); e != errc{}) return e;
+    return message{c};
 }
 
 constexpr canopen::expedited_data write_command(const command& c) noexcept {
@@ -263,37 +294,13 @@ constexpr canopen::sdo_abort abort(std::uint64_t w) noexcept {
 }
 }  // namespace sdo_wire
 
-// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
-// unknown_object (no such address); unknown_command (an access the row lacks); then read_value's
-// or read_command's.
-constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
-    if (f.size() != 8) return errc::wrong_length;
-    const std::uint64_t w = load_le<8>(f.bytes(), 0);
+// The requests decode_request does not take first: segment requests, aborts and the refusals.
+constexpr result<message> other_request(std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
     switch (c >> 5) {
-        case 1: {  // initiate download: only expedited with size indicated (e = s = 1)
-            if ((c & 0x13) != 0x03) return errc::unknown_command;
-            const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-            if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i - 1u];
-            if (!r.writable()) return errc::unknown_command;
-            if (r.kind == value_kind::commands)
-                return lift(read_command(m, sdo_wire::size(c), sdo_wire::data(w)));
-            sdo_write s{r.id(), {}};
-            if (const auto e = read_value(m, r, sdo_wire::size(c), sdo_wire::data(w), true, s.value);
-                e != errc{})
-                return e;
-            return message{s};
-        }
-        case 2: {  // initiate upload
-            if (c != 0x40 || sdo_wire::data(w) != 0) return errc::reserved_not_zero;
-            const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-            if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i - 1u];
-            if (!r.readable()) return errc::unknown_command;
-            return message{sdo_read{r.id()}};
-        }
-        case 3:  // upload segment
+        case 1: return errc::unknown_command;    // download: only expedited with size (e = s = 1)
+        case 2: return errc::reserved_not_zero;  // upload: only 40h with bytes 4..7 zero
+        case 3:                                  // upload segment
             if ((c & 0x0F) != 0 || (w >> 8) != 0) return errc::reserved_not_zero;
             return message{canopen::sdo_segment_request{(c & 0x10) != 0}};
         case 4:  // abort
@@ -303,12 +310,35 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
     }
 }
 
-// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_response_data);
-// unknown_object (no such address, or a segmented upload of an object that is not a string);
-// unknown_command (an access the row lacks); then read_value's.
-constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
+// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
+// unknown_object (no such address); unknown_command (an access the row lacks); then read_value's
+// or read_command's. The two frames a host sends most, an expedited write and a read, first.
+constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = load_le<8>(f.bytes(), 0);
+    const std::uint8_t c = sdo_wire::specifier(w);
+    if ((c & 0xF3) == 0x23) {  // initiate download, expedited with size: 23h, 27h, 2Bh, 2Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.writable()) return errc::unknown_command;
+        if (r.kind == value_kind::commands)
+            return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
+        return value_message<sdo_write>(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
+    }
+    if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return message{sdo_read{r.id}};
+    }
+    return other_request(w);
+}
+
+// The responses decode_response does not take first: segments, segmented-upload initiations,
+// aborts and the refusals.
+constexpr result<message> other_response(const model_info& m, std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
     switch (c >> 5) {
         case 0: {  // upload segment
@@ -321,38 +351,46 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
         }
         case 2: {  // initiate upload
             if ((c & 0x10) != 0) return errc::reserved_not_zero;
-            const bool expedited = (c & 0x02) != 0;
-            if (expedited && (c & 0x01) == 0) return errc::unknown_command;
-            if (!expedited && (c & 0x0C) != 0) return errc::reserved_not_zero;  // n: expedited
+            if ((c & 0x02) != 0) return errc::unknown_command;     // expedited without size
+            if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
             const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i - 1u];
-            if (!expedited) {
-                if (r.kind != value_kind::string) return errc::unknown_object;
-                return message{canopen::sdo_upload_initiate_response{r.address(), (c & 0x01) != 0,
-                                                                     sdo_wire::data(w)}};
-            }
-            if (!r.readable()) return errc::unknown_command;
-            sdo_read_reply s{r.id(), {}};
-            if (const auto e =
-                    read_value(m, r, sdo_wire::size(c), sdo_wire::data(w), false, s.value);
-                e != errc{})
-                return e;
-            return message{s};
+            if (r.kind != value_kind::string) return errc::unknown_object;
+            return message{canopen::sdo_upload_initiate_response{r.address(), (c & 0x01) != 0,
+                                                                 sdo_wire::data(w)}};
         }
-        case 3: {  // initiate download response
-            if (c != 0x60 || sdo_wire::data(w) != 0) return errc::reserved_not_zero;
-            const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-            if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i - 1u];
-            if (!r.writable()) return errc::unknown_command;
-            return message{sdo_write_reply{r.id()}};
-        }
-        case 4:  // abort
+        case 3: return errc::reserved_not_zero;  // download response: only 60h, bytes 4..7 zero
+        case 4:                                  // abort
             if (c != 0x80) return errc::reserved_not_zero;
             return message{canopen::sdo_abort_response{sdo_wire::abort(w)}};
         default: return errc::unknown_command;
     }
+}
+
+// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_response_data);
+// unknown_object (no such address, or a segmented upload of an object that is not a string);
+// unknown_command (an access the row lacks); then read_value's. The two frames a keypad answers
+// most, an expedited read reply and a write acknowledgement, first.
+constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = load_le<8>(f.bytes(), 0);
+    const std::uint8_t c = sdo_wire::specifier(w);
+    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return value_message<sdo_read_reply>(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
+    }
+    if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.writable()) return errc::unknown_command;
+        return message{sdo_write_reply{r.id}};
+    }
+    return other_response(m, w);
 }
 
 // --- PDO frames ---------------------------------------------------------------------------------

@@ -164,6 +164,7 @@ enum class object : std::uint8_t {
 
 // What an object's value is: its C++ type and the field names it shows (messages.hpp).
 enum class value_kind : std::uint8_t {
+    // number..node first: the codec checks these seven with one range test (kind <= node).
     number,              // "value": an unsigned number (counts, identity words, times, types)
     flag,                // "enabled": 00h off, 01h on
     brightness,          // "level": 00h..3Fh
@@ -738,37 +739,43 @@ constexpr std::uint32_t wire_key(canopen::sdo_address a) noexcept {
     return a.index | (std::uint32_t{a.subindex} << 16);
 }
 
-// The values a number kind accepts: min..max, or `also`; max >= min.
+// The values a number kind accepts: min..min + span, or `also` (a row's min, max - min, also).
 struct value_range {
     std::uint32_t min = 0;
-    std::uint32_t max = 0xFFFF'FFFF;
+    std::uint32_t span = 0xFFFF'FFFF;
     std::uint32_t also = 0xFFFF'FFFF;
     [[nodiscard]] constexpr bool contains(std::uint32_t v) const noexcept {
-        return v - min <= max - min || v == also;
+        return v - min <= span || v == also;
     }
     friend constexpr bool operator==(const value_range&, const value_range&) noexcept = default;
 };
 
 struct codec_row {
-    std::uint32_t key;  // bits 0..23 the wire_key of the address, 24..31 the object
+    std::uint32_t key;  // the wire_key of the address
+    object id;
     value_kind kind;
-    std::uint8_t flags;  // bits 0..2 the size (object_row::size), bit 3 readable, bit 4 writable
-    std::uint8_t a;      // the range (value_ranges); led_plane: the plane; led_part: its first bit
-    std::uint8_t b;      // led_part: its width in bits
+    // Bits 0..2 the size (object_row::size), bit 3 readable, bit 4 writable, bits 5..7 a
+    // led_part's width in bits / 4.
+    std::uint8_t flags;
+    std::uint8_t a;  // the range (value_ranges); led_plane: the plane; led_part: its first bit
 
-    [[nodiscard]] constexpr object id() const noexcept { return static_cast<object>(key >> 24); }
-    [[nodiscard]] constexpr std::uint32_t address_key() const noexcept { return key & 0xFF'FFFF; }
     [[nodiscard]] constexpr canopen::sdo_address address() const noexcept {
         return {static_cast<std::uint16_t>(key), static_cast<std::uint8_t>(key >> 16)};
     }
     [[nodiscard]] constexpr std::uint8_t size() const noexcept { return flags & 7; }
     [[nodiscard]] constexpr bool readable() const noexcept { return (flags & 8) != 0; }
     [[nodiscard]] constexpr bool writable() const noexcept { return (flags & 16) != 0; }
+    [[nodiscard]] constexpr unsigned part_width() const noexcept { return (flags >> 5) * 4u; }
     [[nodiscard]] constexpr std::uint64_t packed() const noexcept {
-        return key | std::uint64_t{static_cast<std::uint8_t>(kind)} << 32 |
-               std::uint64_t{flags} << 40 | std::uint64_t{a} << 48 | std::uint64_t{b} << 56;
+        return key | std::uint64_t{static_cast<std::uint8_t>(id)} << 24 |
+               std::uint64_t{static_cast<std::uint8_t>(kind)} << 32 |
+               std::uint64_t{flags} << 40 | std::uint64_t{a} << 48;
     }
 };
+
+constexpr value_range range_of(const object_row& r) noexcept {
+    return {r.min, r.max - r.min, r.also};
+}
 
 // Calls f(row) for every row of every dictionary.
 template <class F>
@@ -790,7 +797,7 @@ struct range_set {
 };
 constexpr auto collect_ranges() noexcept {
     range_set<64> s;
-    for_each_row([&s](const object_row& r) { s.add({r.min, r.max, r.also}); });
+    for_each_row([&s](const object_row& r) { s.add(range_of(r)); });
     return s;
 }
 inline constexpr auto all_ranges = collect_ranges();
@@ -802,22 +809,27 @@ inline constexpr auto value_ranges = [] {
 
 constexpr codec_row codec_row_of(const object_row& r) noexcept {
     const object_kind k = object_kinds[static_cast<std::size_t>(r.id)];
-    codec_row c{wire_key(r.address) | std::uint32_t{static_cast<std::uint8_t>(r.id)} << 24,
-                k.kind,
+    codec_row c{wire_key(r.address), r.id, k.kind,
                 static_cast<std::uint8_t>(r.size | (r.readable() ? 8 : 0) | (r.writable() ? 16 : 0)),
-                0, 0};
+                0};
     if (k.kind == value_kind::led_plane) {
         c.a = static_cast<std::uint8_t>(k.holds);
     } else if (k.kind == value_kind::led_part) {
         c.a = k.offset;
-        c.b = k.width;
+        c.flags = static_cast<std::uint8_t>(c.flags | (k.width / 4) << 5);
     } else {
         for (std::size_t i = 0; i < value_ranges.size(); ++i)
-            if (value_ranges[i] == value_range{r.min, r.max, r.also})
-                c.a = static_cast<std::uint8_t>(i);
+            if (value_ranges[i] == range_of(r)) c.a = static_cast<std::uint8_t>(i);
     }
     return c;
 }
+// A led_part's width fits the row: a multiple of 4 bits, at most 28.
+constexpr bool part_widths_fit() noexcept {
+    for (const auto& k : object_kinds)
+        if (k.kind == value_kind::led_part && (k.width % 4 != 0 || k.width / 4 > 7)) return false;
+    return true;
+}
+static_assert(part_widths_fit());
 
 // The distinct codec rows, packed (a 64-bit compare each: clang counts constexpr steps).
 struct codec_row_set {
@@ -842,9 +854,9 @@ inline constexpr auto codec_rows = [] {
     std::array<codec_row, all_codec_rows.size> t{};
     for (std::size_t i = 0; i < t.size(); ++i) {
         const auto v = all_codec_rows.items[i];
-        t[i] = {static_cast<std::uint32_t>(v), static_cast<value_kind>(v >> 32),
-                static_cast<std::uint8_t>(v >> 40), static_cast<std::uint8_t>(v >> 48),
-                static_cast<std::uint8_t>(v >> 56)};
+        t[i] = {static_cast<std::uint32_t>(v) & 0xFF'FFFF, static_cast<object>(v >> 24),
+                static_cast<value_kind>(v >> 32), static_cast<std::uint8_t>(v >> 40),
+                static_cast<std::uint8_t>(v >> 48)};
     }
     return t;
 }();
@@ -854,29 +866,23 @@ constexpr std::uint8_t codec_row_number(const object_row& r) noexcept {
 }
 
 // Per dictionary, a hash table of codec row number + 1 (0: empty) by address: open addressing
-// over 2^bits >= 1.5 N slots with one multiplier for all five, the first candidate with which
-// every address is found within two probes. All five tables in one array; a dictionary_view says
-// where each one is.
-struct dictionary_view {
-    std::uint16_t first;  // its first slot in address_slots
-    std::uint16_t mask;   // its slot count - 1
-    std::uint8_t shift;   // 32 - log2(its slot count)
-};
-constexpr unsigned slot_bits(std::size_t rows) noexcept {
-    unsigned bits = 1;
-    while ((std::size_t{1} << bits) < rows + rows / 2) ++bits;
-    return bits;
-}
+// over 256 slots, with one multiplier for all five dictionaries, the first candidate with which
+// every address is found within two probes. All five tables in one array, dictionary d's at
+// d * 256: a fixed size costs some slots (a dictionary has 44..101 rows) and saves the lookup
+// reading a size and a place per dictionary.
+inline constexpr unsigned slot_bits = 8;
+inline constexpr std::size_t slots_per_dictionary = std::size_t{1} << slot_bits;
+static_assert(static_cast<std::size_t>(dictionary::si_per_colour) + 1 == dictionary_count);
+
 // The most probes any address of rows needs.
-constexpr std::size_t max_probes(std::span<const object_row> rows, std::uint32_t multiplier) noexcept {
-    const unsigned bits = slot_bits(rows.size());
-    const std::size_t mask = (std::size_t{1} << bits) - 1;
-    std::array<bool, 1024> used{};
+constexpr std::size_t max_probes(std::span<const object_row> rows,
+                                 std::uint32_t multiplier) noexcept {
+    std::array<bool, slots_per_dictionary> used{};
     std::size_t most = 0;
     for (const auto& r : rows) {
-        std::size_t s = home_slot(wire_key(r.address), multiplier, 32 - bits);
+        std::size_t s = home_slot(wire_key(r.address), multiplier, 32 - slot_bits);
         std::size_t probes = 1;
-        for (; used[s]; ++probes) s = (s + 1) & mask;
+        for (; used[s]; ++probes) s = (s + 1) % slots_per_dictionary;
         used[s] = true;
         most = probes > most ? probes : most;
     }
@@ -894,43 +900,27 @@ constexpr std::uint32_t find_multiplier() noexcept {
 inline constexpr std::uint32_t hash_multiplier = find_multiplier();
 static_assert(hash_multiplier != 0, "no multiplier finds every address in two probes");
 
-inline constexpr auto dictionary_views = [] {
-    std::array<dictionary_view, dictionary_count> v{};
-    std::size_t first = 0;
-    for (std::size_t d = 0; d < dictionary_count; ++d) {
-        const unsigned bits = slot_bits(rows_of(dictionaries[d]).size());
-        v[d] = {static_cast<std::uint16_t>(first),
-                static_cast<std::uint16_t>((std::size_t{1} << bits) - 1),
-                static_cast<std::uint8_t>(32 - bits)};
-        first += std::size_t{1} << bits;
-    }
-    return v;
-}();
-inline constexpr std::size_t slot_count =
-    dictionary_views[dictionary_count - 1].first + dictionary_views[dictionary_count - 1].mask + 1u;
 inline constexpr auto address_slots = [] {
-    std::array<std::uint8_t, slot_count> t{};
+    std::array<std::uint8_t, dictionary_count * slots_per_dictionary> t{};
     for (std::size_t d = 0; d < dictionary_count; ++d) {
-        const auto& v = dictionary_views[d];
         for (const auto& r : rows_of(dictionaries[d])) {
-            std::size_t s = home_slot(wire_key(r.address), hash_multiplier, v.shift);
-            while (t[v.first + s] != 0) s = (s + 1) & v.mask;
-            t[v.first + s] = static_cast<std::uint8_t>(codec_row_number(r) + 1);
+            std::size_t s = home_slot(wire_key(r.address), hash_multiplier, 32 - slot_bits);
+            while (t[d * slots_per_dictionary + s] != 0) s = (s + 1) % slots_per_dictionary;
+            t[d * slots_per_dictionary + s] = static_cast<std::uint8_t>(codec_row_number(r) + 1);
         }
     }
     return t;
 }();
-static_assert(static_cast<std::size_t>(dictionary::si_per_colour) + 1 == dictionary_count);
 
 // The codec row number + 1 at wire address `key` (wire_key) in dictionary d, 0 when it has none.
-// Two probes, unrolled: every address is found within two (slot_bits).
+// Two probes, unrolled: every address is found within two (find_multiplier).
 constexpr std::uint8_t find_codec_row(dictionary d, std::uint32_t key) noexcept {
-    const dictionary_view& v = dictionary_views[static_cast<std::size_t>(d)];
-    const std::uint32_t home = home_slot(key, hash_multiplier, v.shift);
-    std::uint8_t s = address_slots[v.first + home];
-    if (s == 0 || codec_rows[s - 1u].address_key() == key) return s;
-    s = address_slots[v.first + ((home + 1) & v.mask)];
-    if (s == 0 || codec_rows[s - 1u].address_key() == key) return s;
+    const std::size_t table = static_cast<std::size_t>(d) * slots_per_dictionary;
+    const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
+    std::uint8_t s = address_slots[table + home];
+    if (s == 0 || codec_rows[s - 1u].key == key) return s;
+    s = address_slots[table + ((home + 1) % slots_per_dictionary)];
+    if (s == 0 || codec_rows[s - 1u].key == key) return s;
     return 0;
 }
 
@@ -974,7 +964,7 @@ constexpr std::uint8_t find_codec_row(dictionary d, object o) noexcept {
                                                            canopen::sdo_address a) noexcept {
     const std::uint8_t r = detail::find_codec_row(d, detail::wire_key(a));
     if (r == 0) return std::nullopt;
-    return find_row(d, detail::codec_rows[r - 1u].id());
+    return find_row(d, detail::codec_rows[r - 1u].id);
 }
 
 
