@@ -71,8 +71,7 @@ constexpr errc read_other_value(const model_info& m, const codec_row& r, std::ui
                                 std::uint32_t raw, bool write, object_value& v) noexcept {
     switch (r.kind) {
         case value_kind::period:
-            return raw == 0 || value_ranges[r.a].contains(raw) ? errc{}
-                                                                : errc::value_out_of_range;
+            return raw == 0 || value_ranges[r.a].contains(raw) ? errc{} : errc::value_out_of_range;
         case value_kind::keys: {
             const auto keys = unpack_keys(m, raw);
             return keys ? errc{} : keys.error();
@@ -109,8 +108,7 @@ constexpr errc read_other_value(const model_info& m, const codec_row& r, std::ui
         }
         case value_kind::cob_id:
             return (raw & 0x3FFF'F800u) != 0 ? errc::reserved_not_zero : errc{};
-        case value_kind::device_type:
-            return (raw >> 20) != 0 ? errc::reserved_not_zero : errc{};
+        case value_kind::device_type: return (raw >> 20) != 0 ? errc::reserved_not_zero : errc{};
         case value_kind::string: v.size = size; return errc{};
         case value_kind::restore:
             return write && raw != load_signature ? errc::value_out_of_range : errc{};
@@ -149,9 +147,12 @@ template <class T>
                                                                   std::uint8_t size,
                                                                   std::uint32_t data,
                                                                   bool write) noexcept {
-    T t{r.id, {}};
-    if (const auto e = read_value(m, r, size, data, write, t.value); e != errc{}) return e;
-    return message{t};
+    // Built where it is returned (one named result, NRVO), not built and copied in.
+    result<message> out{message{T{r.id, {}}}};
+    if (const auto e = read_value(m, r, size, data, write, std::get_if<T>(&*out)->value);
+        e != errc{})
+        out = e;
+    return out;
 }
 template <class T>
 constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
@@ -244,6 +245,18 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
     return 0;
 }
 
+// The command of `row` with parameter bytes b1 and b2, built where it is returned (NRVO).
+constexpr result<message> command_message(const model_info& m, const command_row& row,
+                                          std::uint8_t b1, std::uint8_t b2) noexcept {
+    result<message> out{message{command{}}};
+    command& c = *std::get_if<command>(&*out);
+    c.code = row.code;
+    errc e = read_param(m, row.p1, b1, c);
+    if (e == errc{}) e = read_param(m, row.p2, b2, c);
+    if (e != errc{}) out = e;
+    return out;
+}
+
 // The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
 // reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h), value_out_of_range
@@ -257,11 +270,7 @@ constexpr result<message> read_command(const model_info& m, std::uint8_t size,
     const command_row& row = command_table[i - 1u];
     if (byte(3) != 0 || (row.p2 == command_param::none && byte(2) != 0))
         return errc::reserved_not_zero;
-    command c;
-    c.code = row.code;
-    if (const auto e = read_param(m, row.p1, byte(1), c); e != errc{}) return e;
-    if (const auto e = read_param(m, row.p2, byte(2), c); e != errc{}) return e;
-    return message{c};
+    return command_message(m, row, byte(1), byte(2));
 }
 
 constexpr canopen::expedited_data write_command(const command& c) noexcept {
@@ -283,7 +292,9 @@ constexpr std::uint8_t specifier(std::uint64_t w) noexcept { return static_cast<
 constexpr std::uint32_t key(std::uint64_t w) noexcept {
     return static_cast<std::uint32_t>(w >> 8) & 0xFF'FFFF;
 }
-constexpr std::uint32_t data(std::uint64_t w) noexcept { return static_cast<std::uint32_t>(w >> 32); }
+constexpr std::uint32_t data(std::uint64_t w) noexcept {
+    return static_cast<std::uint32_t>(w >> 32);
+}
 // An expedited transfer's size from its specifier (bits 2..3: 4 - n).
 constexpr std::uint8_t size(std::uint8_t c) noexcept {
     return static_cast<std::uint8_t>(4 - ((c >> 2) & 3));
@@ -351,7 +362,7 @@ constexpr result<message> other_response(const model_info& m, std::uint64_t w) n
         }
         case 2: {  // initiate upload
             if ((c & 0x10) != 0) return errc::reserved_not_zero;
-            if ((c & 0x02) != 0) return errc::unknown_command;     // expedited without size
+            if ((c & 0x02) != 0) return errc::unknown_command;    // expedited without size
             if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
             const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
             if (i == 0) return errc::unknown_object;

@@ -645,18 +645,12 @@ inline constexpr object_row si_mt_own_rows[] = {
 // inferred for the others (docs/si-family.md says which fact is which). The mapping entries'
 // values depend on the stride and are not given.
 inline constexpr object_row si_per_colour_own_rows[] = {
-    {obj::led_on_red, {0x2001, 1}, 0, rw},
-    {obj::led_on_green, {0x2001, 2}, 0, rw},
-    {obj::led_on_blue, {0x2001, 3}, 0, rw},
-    {obj::led_blink_red, {0x2002, 1}, 0, rw},
-    {obj::led_blink_green, {0x2002, 2}, 0, rw},
-    {obj::led_blink_blue, {0x2002, 3}, 0, rw},
-    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro},
-    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
-    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro},
-    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
-    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro},
-    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
+    {obj::led_on_red, {0x2001, 1}, 0, rw},      {obj::led_on_green, {0x2001, 2}, 0, rw},
+    {obj::led_on_blue, {0x2001, 3}, 0, rw},     {obj::led_blink_red, {0x2002, 1}, 0, rw},
+    {obj::led_blink_green, {0x2002, 2}, 0, rw}, {obj::led_blink_blue, {0x2002, 3}, 0, rw},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro}, {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro}, {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro}, {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
 };
 
 // Each SI dictionary: its own rows, then the shared rows that no own row replaces.
@@ -688,8 +682,9 @@ inline constexpr auto si_packed_rows =
     si_join<si_join_size(si_packed_own_rows, si_common_rows)>(si_packed_own_rows, si_common_rows);
 inline constexpr auto si_mt_rows =
     si_join<si_join_size(si_mt_own_rows, si_common_rows)>(si_mt_own_rows, si_common_rows);
-inline constexpr auto si_per_colour_rows = si_join<si_join_size(
-    si_per_colour_own_rows, si_common_rows)>(si_per_colour_own_rows, si_common_rows);
+inline constexpr auto si_per_colour_rows =
+    si_join<si_join_size(si_per_colour_own_rows, si_common_rows)>(si_per_colour_own_rows,
+                                                                  si_common_rows);
 }  // namespace detail
 
 // The rows of a dictionary: manual order for the PK1000 and the PKP; for the SI dictionaries each
@@ -768,8 +763,8 @@ struct codec_row {
     [[nodiscard]] constexpr unsigned part_width() const noexcept { return (flags >> 5) * 4u; }
     [[nodiscard]] constexpr std::uint64_t packed() const noexcept {
         return key | std::uint64_t{static_cast<std::uint8_t>(id)} << 24 |
-               std::uint64_t{static_cast<std::uint8_t>(kind)} << 32 |
-               std::uint64_t{flags} << 40 | std::uint64_t{a} << 48;
+               std::uint64_t{static_cast<std::uint8_t>(kind)} << 32 | std::uint64_t{flags} << 40 |
+               std::uint64_t{a} << 48;
     }
 };
 
@@ -809,9 +804,9 @@ inline constexpr auto value_ranges = [] {
 
 constexpr codec_row codec_row_of(const object_row& r) noexcept {
     const object_kind k = object_kinds[static_cast<std::size_t>(r.id)];
-    codec_row c{wire_key(r.address), r.id, k.kind,
-                static_cast<std::uint8_t>(r.size | (r.readable() ? 8 : 0) | (r.writable() ? 16 : 0)),
-                0};
+    codec_row c{
+        wire_key(r.address), r.id, k.kind,
+        static_cast<std::uint8_t>(r.size | (r.readable() ? 8 : 0) | (r.writable() ? 16 : 0)), 0};
     if (k.kind == value_kind::led_plane) {
         c.a = static_cast<std::uint8_t>(k.holds);
     } else if (k.kind == value_kind::led_part) {
@@ -966,7 +961,6 @@ constexpr std::uint8_t find_codec_row(dictionary d, object o) noexcept {
     if (r == 0) return std::nullopt;
     return find_row(d, detail::codec_rows[r - 1u].id);
 }
-
 
 // --- names ----------------------------------------------------------------------------------
 
