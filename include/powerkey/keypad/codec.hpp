@@ -62,56 +62,20 @@ constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
 
-// The value of row r carried by the `size` (1..4) little-endian bytes of `data` into v; `write`
-// for a download (a restore must carry "load"). Errors: size_mismatch (not the row's size),
-// reserved_not_zero (bytes past the size, bits that name no key or LED, reserved bits of a
-// COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
-// unknown_object (an object without a value).
-constexpr errc read_other_value(const model_info& m, const codec_row& r, std::uint8_t size,
-                                std::uint32_t raw, bool write, object_value& v) noexcept {
+// The sdo_read_reply or sdo_write (T) of row r's value in the `size` (1..4) little-endian bytes
+// of `data`; `write` for a download (a restore must carry "load"). Errors: size_mismatch (not the
+// row's size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved
+// bits of a COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's
+// range), unknown_object (an object without a value). One switch on the row's kind, each case
+// returning its message: nothing is staged and copied.
+template <class T>
+constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
+                                        std::uint32_t data, bool write) noexcept {
+    if (size != row_size(m, r, size)) return errc::size_mismatch;
+    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
+    const auto number = [&r, data]() -> result<message> { return message{T{r.id, {data, {}, 0}}}; };
+    const auto map = [&r](const leds& l) -> result<message> { return message{T{r.id, {0, l, 0}}}; };
     switch (r.kind) {
-        case value_kind::period:
-            return raw == 0 || value_ranges[r.a].contains(raw) ? errc{} : errc::value_out_of_range;
-        case value_kind::keys: {
-            const auto keys = unpack_keys(m, raw);
-            return keys ? errc{} : keys.error();
-        }
-        case value_kind::led_plane:
-            if ((raw & ~m.led_mask) != 0) return errc::reserved_not_zero;
-            v.raw = 0;
-            v.map.of(static_cast<plane>(r.a)) = led_set::from_mask(raw);
-            return errc{};
-        case value_kind::led_part: {
-            const auto l = unpack_part(m, raw, r);
-            if (!l) return l.error();
-            v.raw = 0;
-            v.map = *l;
-            return errc{};
-        }
-        case value_kind::led_map: {
-            const auto l = unpack_leds(m, raw, m.object_planes());
-            if (!l) return l.error();
-            v.raw = 0;
-            v.map = *l;
-            return errc{};
-        }
-        case value_kind::ring:
-        case value_kind::direction_counter:
-        case value_kind::pdo_mapping: return errc{};
-        case value_kind::consumer_heartbeat: {
-            if ((raw >> 24) != 0) return errc::reserved_not_zero;
-            const auto time = raw & 0xFFFF;
-            if (!canopen::node_id::make((raw >> 16) & 0xFF) ||
-                (time != 0 && !value_ranges[r.a].contains(time)))
-                return errc::value_out_of_range;
-            return errc{};
-        }
-        case value_kind::cob_id:
-            return (raw & 0x3FFF'F800u) != 0 ? errc::reserved_not_zero : errc{};
-        case value_kind::device_type: return (raw >> 20) != 0 ? errc::reserved_not_zero : errc{};
-        case value_kind::string: v.size = size; return errc{};
-        case value_kind::restore:
-            return write && raw != load_signature ? errc::value_out_of_range : errc{};
         case value_kind::number:
         case value_kind::flag:
         case value_kind::brightness:
@@ -119,51 +83,60 @@ constexpr errc read_other_value(const model_info& m, const codec_row& r, std::ui
         case value_kind::baud:
         case value_kind::show:
         case value_kind::node:
-            return value_ranges[r.a].contains(raw) ? errc{} : errc::value_out_of_range;
+            if (!value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return number();
+        case value_kind::period:
+            if (data != 0 && !value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return number();
+        case value_kind::keys: {
+            const auto keys = unpack_keys(m, data);
+            if (!keys) return keys.error();
+            return number();
+        }
+        case value_kind::led_plane: {
+            if ((data & ~m.led_mask) != 0) return errc::reserved_not_zero;
+            leds l{};
+            l.of(static_cast<plane>(r.a)) = led_set::from_mask(data);
+            return map(l);
+        }
+        case value_kind::led_part: {
+            const auto l = unpack_part(m, data, r);
+            if (!l) return l.error();
+            return map(*l);
+        }
+        case value_kind::led_map: {
+            const auto l = unpack_leds(m, data, m.object_planes());
+            if (!l) return l.error();
+            return map(*l);
+        }
+        case value_kind::ring:
+        case value_kind::direction_counter:
+        case value_kind::pdo_mapping: return number();
+        case value_kind::consumer_heartbeat: {
+            if ((data >> 24) != 0) return errc::reserved_not_zero;
+            const auto time = data & 0xFFFF;
+            if (!canopen::node_id::make((data >> 16) & 0xFF) ||
+                (time != 0 && !value_ranges[r.a].contains(time)))
+                return errc::value_out_of_range;
+            return number();
+        }
+        case value_kind::cob_id:
+            if ((data & 0x3FFF'F800u) != 0) return errc::reserved_not_zero;
+            return number();
+        case value_kind::device_type:
+            if ((data >> 20) != 0) return errc::reserved_not_zero;
+            return number();
+        case value_kind::string: return message{T{r.id, {data, {}, size}}};
+        case value_kind::restore:
+            if (write && data != load_signature) return errc::value_out_of_range;
+            return number();
         case value_kind::none:
         case value_kind::commands: break;
     }
     return errc::unknown_object;
 }
-// The kinds number..node, most of what is read and written, take one range test here; the
-// others the switch above.
-constexpr errc read_value(const model_info& m, const codec_row& r, std::uint8_t size,
-                          std::uint32_t data, bool write, object_value& v) noexcept {
-    if (size != row_size(m, r, size)) return errc::size_mismatch;
-    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
-    v.raw = data;
-    if (r.kind <= value_kind::node)
-        return value_ranges[r.a].contains(data) ? errc{} : errc::value_out_of_range;
-    return read_other_value(m, r, size, data, write, v);
-}
 
-// The sdo_read_reply or sdo_write (T) of row r's value in an expedited SDO of specifier c. The
-// common case (a number kind of the size the specifier gives, in range) is tested first, with
-// nothing staged; every other frame takes read_value, which finds the error in the documented
-// order. Kept apart from the frame decoders so that their common paths stay short.
-template <class T>
-[[gnu::noinline]] constexpr result<message> checked_value_message(const model_info& m,
-                                                                  const codec_row& r,
-                                                                  std::uint8_t size,
-                                                                  std::uint32_t data,
-                                                                  bool write) noexcept {
-    // Built where it is returned (one named result, NRVO), not built and copied in.
-    result<message> out{message{T{r.id, {}}}};
-    if (const auto e = read_value(m, r, size, data, write, std::get_if<T>(&*out)->value);
-        e != errc{})
-        out = e;
-    return out;
-}
-template <class T>
-constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
-                                        std::uint32_t data, bool write) noexcept {
-    if (r.kind <= value_kind::node && r.size() == size &&
-        (std::uint64_t{data} >> (8 * size)) == 0 && value_ranges[r.a].contains(data))
-        return message{T{r.id, {data, {}, 0}}};
-    return checked_value_message<T>(m, r, size, data, write);
-}
-
-// The expedited bytes of a value of row r (what read_value reads back; the codec checks it).
+// The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
 constexpr canopen::expedited_data write_value(const model_info& m, const codec_row& r,
                                               const object_value& v) noexcept {
     std::uint64_t raw = v.raw;
@@ -322,7 +295,7 @@ constexpr result<message> other_request(std::uint64_t w) noexcept {
 }
 
 // Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
-// unknown_object (no such address); unknown_command (an access the row lacks); then read_value's
+// unknown_object (no such address); unknown_command (an access the row lacks); then value_message's
 // or read_command's. The two frames a host sends most, an expedited write and a read, first.
 constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
@@ -381,7 +354,7 @@ constexpr result<message> other_response(const model_info& m, std::uint64_t w) n
 
 // Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_response_data);
 // unknown_object (no such address, or a segmented upload of an object that is not a string);
-// unknown_command (an access the row lacks); then read_value's. The two frames a keypad answers
+// unknown_command (an access the row lacks); then value_message's. The two frames a keypad answers
 // most, an expedited read reply and a write acknowledgement, first.
 constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
