@@ -225,7 +225,7 @@ constexpr result<message> command_message(const model_info& m, const command_row
     command& c = *std::get_if<command>(&*out);
     c.code = row.code;
     errc e = read_param(m, row.p1, b1, c);
-    if (e == errc{}) e = read_param(m, row.p2, b2, c);
+    if (e == errc{} && row.p2 != command_param::none) e = read_param(m, row.p2, b2, c);
     if (e != errc{}) out = e;
     return out;
 }
