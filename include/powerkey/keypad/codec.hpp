@@ -46,34 +46,36 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 
 // The expedited size of row r's value: its own, the model's plane bytes for a per-colour LED
 // plane of size 0, or what a string piece carries (`carried`).
-constexpr std::uint8_t row_size(const model_info& m, const object_row& r, object_kind k,
+constexpr std::uint8_t row_size(const model_info& m, const codec_row& r,
                                 std::uint8_t carried) noexcept {
-    if (r.size != 0) return r.size;
-    if (k.kind == value_kind::led_plane) return static_cast<std::uint8_t>(m.stride / 8);
+    if (r.size() != 0) return r.size();
+    if (r.kind == value_kind::led_plane) return static_cast<std::uint8_t>(m.stride / 8);
     return carried;
 }
 
 // Bits [offset, offset + width) of the model's LED string, as a map; errc::reserved_not_zero for
 // a bit that names no LED.
-constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw, object_kind k) noexcept {
-    const std::uint64_t mask = (std::uint64_t{1} << k.width) - 1;
+constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
+                                   const codec_row& r) noexcept {
+    const std::uint64_t mask = (std::uint64_t{1} << r.part_width()) - 1;
     if ((raw & ~mask) != 0) return errc::reserved_not_zero;
-    return unpack_leds(m, std::uint64_t{raw} << k.offset, m.planes);
+    return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
 
-// The value of row r carried by d; `write` for a download (a restore must carry "load").
-// Errors: size_mismatch (not the row's size), reserved_not_zero (bytes past the size, bits that
-// name no key or LED, reserved bits of a COB-ID, device type or consumer heartbeat),
-// value_out_of_range (outside the row's range), unknown_object (an object without a value).
-constexpr result<object_value> read_value(const model_info& m, const object_row& r,
-                                          const canopen::expedited_data& d, bool write) noexcept {
-    const auto k = kind_of(r.id);
-    const std::uint8_t size = row_size(m, r, k, d.size.value());
-    if (d.size.value() != size) return errc::size_mismatch;
-    if (!all_zero(d.bytes, size, 4)) return errc::reserved_not_zero;
-    const std::uint32_t raw = d.value();
-    object_value v{raw, {}, 0};
-    switch (k.kind) {
+// The sdo_read_reply or sdo_write (T) of row r's value in the `size` (1..4) little-endian bytes
+// of `data`; `write` for a download (a restore must carry "load"). Errors: size_mismatch (not the
+// row's size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved
+// bits of a COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's
+// range), unknown_object (an object without a value). One switch on the row's kind, each case
+// returning its message: nothing is staged and copied.
+template <class T>
+constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
+                                        std::uint32_t data, bool write) noexcept {
+    if (size != row_size(m, r, size)) return errc::size_mismatch;
+    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
+    const auto number = [&r, data]() -> result<message> { return message{T{r.id, {data, {}, 0}}}; };
+    const auto map = [&r](const leds& l) -> result<message> { return message{T{r.id, {0, l, 0}}}; };
+    switch (r.kind) {
         case value_kind::number:
         case value_kind::flag:
         case value_kind::brightness:
@@ -81,68 +83,68 @@ constexpr result<object_value> read_value(const model_info& m, const object_row&
         case value_kind::baud:
         case value_kind::show:
         case value_kind::node:
-            if (!r.in_range(raw)) return errc::value_out_of_range;
-            return v;
+            if (!value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return number();
         case value_kind::period:
-            if (raw != 0 && !r.in_range(raw)) return errc::value_out_of_range;
-            return v;
+            if (data != 0 && !value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return number();
         case value_kind::keys: {
-            const auto keys = unpack_keys(m, raw);
+            const auto keys = unpack_keys(m, data);
             if (!keys) return keys.error();
-            return v;
+            return number();
         }
-        case value_kind::led_plane:
-            if ((raw & ~m.led_mask) != 0) return errc::reserved_not_zero;
-            v.raw = 0;
-            v.map.of(k.holds) = led_set::from_mask(raw);
-            return v;
+        case value_kind::led_plane: {
+            if ((data & ~m.led_mask) != 0) return errc::reserved_not_zero;
+            leds l{};
+            l.of(static_cast<plane>(r.a)) = led_set::from_mask(data);
+            return map(l);
+        }
         case value_kind::led_part: {
-            const auto l = unpack_part(m, raw, k);
+            const auto l = unpack_part(m, data, r);
             if (!l) return l.error();
-            return object_value{0, *l, 0};
+            return map(*l);
+        }
+        case value_kind::led_map: {
+            const auto l = unpack_leds(m, data, m.object_planes());
+            if (!l) return l.error();
+            return map(*l);
         }
         case value_kind::ring:
-        case value_kind::direction_counter: return v;
-        case value_kind::led_map: {
-            const auto l = unpack_leds(m, raw, m.object_planes());
-            if (!l) return l.error();
-            return object_value{0, *l, 0};
-        }
+        case value_kind::direction_counter:
+        case value_kind::pdo_mapping: return number();
         case value_kind::consumer_heartbeat: {
-            if ((raw >> 24) != 0) return errc::reserved_not_zero;
-            const auto time = raw & 0xFFFF;
-            if (!canopen::node_id::make((raw >> 16) & 0xFF) || (time != 0 && !r.in_range(time)))
+            if ((data >> 24) != 0) return errc::reserved_not_zero;
+            const auto time = data & 0xFFFF;
+            if (!canopen::node_id::make((data >> 16) & 0xFF) ||
+                (time != 0 && !value_ranges[r.a].contains(time)))
                 return errc::value_out_of_range;
-            return v;
+            return number();
         }
         case value_kind::cob_id:
-            if ((raw & 0x3FFF'F800u) != 0) return errc::reserved_not_zero;
-            return v;
+            if ((data & 0x3FFF'F800u) != 0) return errc::reserved_not_zero;
+            return number();
         case value_kind::device_type:
-            if ((raw >> 20) != 0) return errc::reserved_not_zero;
-            return v;
-        case value_kind::pdo_mapping: return v;
-        case value_kind::string: v.size = size; return v;
+            if ((data >> 20) != 0) return errc::reserved_not_zero;
+            return number();
+        case value_kind::string: return message{T{r.id, {data, {}, size}}};
         case value_kind::restore:
-            if (write && raw != load_signature) return errc::value_out_of_range;
-            return v;
+            if (write && data != load_signature) return errc::value_out_of_range;
+            return number();
         case value_kind::none:
         case value_kind::commands: break;
     }
     return errc::unknown_object;
 }
 
-// The expedited bytes of a value of row r (what read_value reads back; the codec checks it).
-constexpr canopen::expedited_data write_value(const model_info& m, const object_row& r,
+// The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
+constexpr canopen::expedited_data write_value(const model_info& m, const codec_row& r,
                                               const object_value& v) noexcept {
-    const auto k = kind_of(r.id);
     std::uint64_t raw = v.raw;
-    if (k.kind == value_kind::led_plane) raw = v.map.of(k.holds).mask();
-    if (k.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
-    if (k.kind == value_kind::led_part)
-        raw = (pack_leds(m, v.map, m.planes) >> k.offset) & ((std::uint64_t{1} << k.width) - 1);
-    const std::uint8_t size =
-        row_size(m, r, k, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
+    if (r.kind == value_kind::led_plane) raw = v.map.of(static_cast<plane>(r.a)).mask();
+    if (r.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
+    if (r.kind == value_kind::led_part)
+        raw = (pack_leds(m, v.map, m.planes) >> r.a) & ((std::uint64_t{1} << r.part_width()) - 1);
+    const std::uint8_t size = row_size(m, r, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
     canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
     store_le<4>(d.bytes, 0, raw);
     return d;
@@ -216,21 +218,32 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
     return 0;
 }
 
-// The command in a download to 6500h sub 1. Errors, in this order: size_mismatch (not 4 bytes),
-// unknown_command (byte 4 names no command), reserved_not_zero (byte 7, or byte 6 of a
-// one-parameter command, not 00h), value_out_of_range (a parameter outside its range).
-constexpr result<command> read_command(const model_info& m,
-                                       const canopen::expedited_data& d) noexcept {
-    if (d.size.value() != 4) return errc::size_mismatch;
-    const auto& b = d.bytes;
-    const auto row = find_command(b[0]);
-    if (!row) return errc::unknown_command;
-    if (b[3] != 0 || (row->p2 == command_param::none && b[2] != 0)) return errc::reserved_not_zero;
-    command c;
-    c.code = row->code;
-    if (const auto e = read_param(m, row->p1, b[1], c); e != errc{}) return e;
-    if (const auto e = read_param(m, row->p2, b[2], c); e != errc{}) return e;
-    return c;
+// The command of `row` with parameter bytes b1 and b2, built where it is returned (NRVO).
+constexpr result<message> command_message(const model_info& m, const command_row& row,
+                                          std::uint8_t b1, std::uint8_t b2) noexcept {
+    result<message> out{message{command{}}};
+    command& c = *std::get_if<command>(&*out);
+    c.code = row.code;
+    errc e = read_param(m, row.p1, b1, c);
+    if (e == errc{} && row.p2 != command_param::none) e = read_param(m, row.p2, b2, c);
+    if (e != errc{}) out = e;
+    return out;
+}
+
+// The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
+// Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
+// reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h), value_out_of_range
+// (a parameter outside its range).
+constexpr result<message> read_command(const model_info& m, std::uint8_t size,
+                                       std::uint32_t data) noexcept {
+    if (size != 4) return errc::size_mismatch;
+    const auto byte = [data](unsigned i) { return static_cast<std::uint8_t>(data >> (8 * i)); };
+    const std::uint8_t i = byte(0) < command_index.size() ? command_index[byte(0)] : 0;
+    if (i == 0) return errc::unknown_command;
+    const command_row& row = command_table[i - 1u];
+    if (byte(3) != 0 || (row.p2 == command_param::none && byte(2) != 0))
+        return errc::reserved_not_zero;
+    return command_message(m, row, byte(1), byte(2));
 }
 
 constexpr canopen::expedited_data write_command(const command& c) noexcept {
@@ -242,60 +255,126 @@ constexpr canopen::expedited_data write_command(const command& c) noexcept {
 }
 
 // --- SDO frames ---------------------------------------------------------------------------------
+// The frame read with one 64-bit load: byte 0 the specifier, bytes 1..3 the address as the
+// dictionaries' hash key (wire_key), bytes 4..7 the data. The checks and their order are those of
+// canopen::visit_sdo_request_data / visit_sdo_response_data; this is them without building the
+// CiA 301 structs first (docs/performance.md).
 
-constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
-    return canopen::visit_sdo_request_data<result<message>>(
-        f, [&m](const auto& r) -> result<message> {
-            using T = std::remove_cvref_t<decltype(r)>;
-            if constexpr (std::is_same_v<T, canopen::sdo_segment_request>) {
-                return message{r};
-            } else if constexpr (std::is_same_v<T, canopen::sdo_abort>) {
-                return message{canopen::sdo_abort_request{r}};
-            } else {
-                const auto i = row_index(m.dictionary, r.address);
-                if (i == no_row) return errc::unknown_object;
-                const object_row* row = &row_at(m.dictionary, i);
-                if constexpr (std::is_same_v<T, canopen::sdo_upload_request>) {
-                    if (!row->readable()) return errc::unknown_command;
-                    return message{sdo_read{row->id}};
-                } else {
-                    if (!row->writable()) return errc::unknown_command;
-                    if (kind_of(row->id).kind == value_kind::commands)
-                        return lift(read_command(m, r.value));
-                    const auto v = read_value(m, *row, r.value, true);
-                    if (!v) return v.error();
-                    return message{sdo_write{row->id, *v}};
-                }
-            }
-        });
+namespace sdo_wire {
+constexpr std::uint8_t specifier(std::uint64_t w) noexcept { return static_cast<std::uint8_t>(w); }
+constexpr std::uint32_t key(std::uint64_t w) noexcept {
+    return static_cast<std::uint32_t>(w >> 8) & 0xFF'FFFF;
+}
+constexpr std::uint32_t data(std::uint64_t w) noexcept {
+    return static_cast<std::uint32_t>(w >> 32);
+}
+// An expedited transfer's size from its specifier (bits 2..3: 4 - n).
+constexpr std::uint8_t size(std::uint8_t c) noexcept {
+    return static_cast<std::uint8_t>(4 - ((c >> 2) & 3));
+}
+constexpr canopen::sdo_abort abort(std::uint64_t w) noexcept {
+    return {{static_cast<std::uint16_t>(w >> 8), static_cast<std::uint8_t>(w >> 24)},
+            static_cast<canopen::sdo_abort_code>(data(w))};
+}
+}  // namespace sdo_wire
+
+// The requests decode_request does not take first: segment requests, aborts and the refusals.
+constexpr result<message> other_request(std::uint64_t w) noexcept {
+    const std::uint8_t c = sdo_wire::specifier(w);
+    switch (c >> 5) {
+        case 1: return errc::unknown_command;    // download: only expedited with size (e = s = 1)
+        case 2: return errc::reserved_not_zero;  // upload: only 40h with bytes 4..7 zero
+        case 3:                                  // upload segment
+            if ((c & 0x0F) != 0 || (w >> 8) != 0) return errc::reserved_not_zero;
+            return message{canopen::sdo_segment_request{(c & 0x10) != 0}};
+        case 4:  // abort
+            if (c != 0x80) return errc::reserved_not_zero;
+            return message{canopen::sdo_abort_request{sdo_wire::abort(w)}};
+        default: return errc::unknown_command;
+    }
 }
 
+// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
+// unknown_object (no such address); unknown_command (an access the row lacks); then value_message's
+// or read_command's. The two frames a host sends most, an expedited write and a read, first.
+constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = load_le<8>(f.bytes(), 0);
+    const std::uint8_t c = sdo_wire::specifier(w);
+    if ((c & 0xF3) == 0x23) {  // initiate download, expedited with size: 23h, 27h, 2Bh, 2Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.writable()) return errc::unknown_command;
+        if (r.kind == value_kind::commands)
+            return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
+        return value_message<sdo_write>(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
+    }
+    if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return message{sdo_read{r.id}};
+    }
+    return other_request(w);
+}
+
+// The responses decode_response does not take first: segments, segmented-upload initiations,
+// aborts and the refusals.
+constexpr result<message> other_response(const model_info& m, std::uint64_t w) noexcept {
+    const std::uint8_t c = sdo_wire::specifier(w);
+    switch (c >> 5) {
+        case 0: {  // upload segment
+            canopen::sdo_segment_response s{(c & 0x10) != 0,
+                                            canopen::segment_unused::make((c >> 1) & 7).value(),
+                                            (c & 1) != 0,
+                                            {}};
+            store_le<7>(s.bytes, 0, w >> 8);
+            return message{s};
+        }
+        case 2: {  // initiate upload
+            if ((c & 0x10) != 0) return errc::reserved_not_zero;
+            if ((c & 0x02) != 0) return errc::unknown_command;    // expedited without size
+            if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
+            const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+            if (i == 0) return errc::unknown_object;
+            const codec_row& r = codec_rows[i - 1u];
+            if (r.kind != value_kind::string) return errc::unknown_object;
+            return message{canopen::sdo_upload_initiate_response{r.address(), (c & 0x01) != 0,
+                                                                 sdo_wire::data(w)}};
+        }
+        case 3: return errc::reserved_not_zero;  // download response: only 60h, bytes 4..7 zero
+        case 4:                                  // abort
+            if (c != 0x80) return errc::reserved_not_zero;
+            return message{canopen::sdo_abort_response{sdo_wire::abort(w)}};
+        default: return errc::unknown_command;
+    }
+}
+
+// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_response_data);
+// unknown_object (no such address, or a segmented upload of an object that is not a string);
+// unknown_command (an access the row lacks); then value_message's. The two frames a keypad answers
+// most, an expedited read reply and a write acknowledgement, first.
 constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
-    return canopen::visit_sdo_response_data<result<message>>(
-        f, [&m](const auto& r) -> result<message> {
-            using T = std::remove_cvref_t<decltype(r)>;
-            if constexpr (std::is_same_v<T, canopen::sdo_segment_response>) {
-                return message{r};
-            } else if constexpr (std::is_same_v<T, canopen::sdo_abort>) {
-                return message{canopen::sdo_abort_response{r}};
-            } else {
-                const auto i = row_index(m.dictionary, r.address);
-                if (i == no_row) return errc::unknown_object;
-                const object_row* row = &row_at(m.dictionary, i);
-                if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>) {
-                    if (kind_of(row->id).kind != value_kind::string) return errc::unknown_object;
-                    return message{r};
-                } else if constexpr (std::is_same_v<T, canopen::sdo_download_response>) {
-                    if (!row->writable()) return errc::unknown_command;
-                    return message{sdo_write_reply{row->id}};
-                } else {
-                    if (!row->readable()) return errc::unknown_command;
-                    const auto v = read_value(m, *row, r.value, false);
-                    if (!v) return v.error();
-                    return message{sdo_read_reply{row->id, *v}};
-                }
-            }
-        });
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = load_le<8>(f.bytes(), 0);
+    const std::uint8_t c = sdo_wire::specifier(w);
+    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return value_message<sdo_read_reply>(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
+    }
+    if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.writable()) return errc::unknown_command;
+        return message{sdo_write_reply{r.id}};
+    }
+    return other_response(m, w);
 }
 
 // --- PDO frames ---------------------------------------------------------------------------------
@@ -414,26 +493,27 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
             } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply> ||
                                  std::is_same_v<T, sdo_write_reply>) {
-                const auto row = find_row(m.dictionary, v.object);
-                if (!row) return errc::unknown_object;
+                const std::uint8_t i = find_codec_row(m.dictionary, v.object);
+                if (i == 0) return errc::unknown_object;
+                const codec_row& row = codec_rows[i - 1u];
                 if constexpr (std::is_same_v<T, sdo_read>) {
-                    return canopen::encode(node, canopen::sdo_upload_request{row->address});
+                    return canopen::encode(node, canopen::sdo_upload_request{row.address()});
                 } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
-                    return canopen::encode(node, canopen::sdo_download_response{row->address});
+                    return canopen::encode(node, canopen::sdo_download_response{row.address()});
                 } else if constexpr (std::is_same_v<T, sdo_write>) {
-                    if (kind_of(v.object).kind == value_kind::commands)
+                    if (row.kind == value_kind::commands)
                         return errc::unknown_object;  // a command is a `command`
                     return canopen::encode(node, canopen::sdo_download_request{
-                                                     row->address, write_value(m, *row, v.value)});
+                                                     row.address(), write_value(m, row, v.value)});
                 } else {
                     return canopen::encode(node, canopen::sdo_upload_response{
-                                                     row->address, write_value(m, *row, v.value)});
+                                                     row.address(), write_value(m, row, v.value)});
                 }
             } else if constexpr (std::is_same_v<T, command>) {
-                const auto row = find_row(m.dictionary, object::command_module);
-                if (!row) return errc::unknown_object;
-                return canopen::encode(
-                    node, canopen::sdo_download_request{row->address, write_command(v)});
+                const std::uint8_t i = find_codec_row(m.dictionary, object::command_module);
+                if (i == 0) return errc::unknown_object;
+                return canopen::encode(node, canopen::sdo_download_request{
+                                                 codec_rows[i - 1u].address(), write_command(v)});
             } else {
                 return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
             }

@@ -164,6 +164,7 @@ enum class object : std::uint8_t {
 
 // What an object's value is: its C++ type and the field names it shows (messages.hpp).
 enum class value_kind : std::uint8_t {
+    // number..node first: the codec checks these seven with one range test (kind <= node).
     number,              // "value": an unsigned number (counts, identity words, times, types)
     flag,                // "enabled": 00h off, 01h on
     brightness,          // "level": 00h..3Fh
@@ -511,16 +512,10 @@ inline constexpr object_row pkp_li_rows[] = {
 // dictionary"; "2600SI n" and "MT n" are the sections of the PKP2600SI and PKP3500-MT manuals).
 // Writes the manuals show without a read (2100h, 20FFh, 1011h sub 1) are write-only here; the
 // COB-IDs read back without the CiA 301 bits 30/31; 1017h takes 000Ah..FEFFh (both manuals).
-
-// PKP-2600-SI: 2001h/2002h carry the RPDO bit string in three pieces (2600SI 17, 18).
-inline constexpr object_row si_packed_rows[] = {
+// Each fact once: the rows the three SI dictionaries share, then each one's own rows; an own row
+// replaces the shared row of the same object (si_join below).
+inline constexpr object_row si_common_rows[] = {
     {obj::keys, {0x2000, 1}, 2, ro},
-    {obj::led_on_r1_12_g1_4, {0x2001, 1}, 2, rw},
-    {obj::led_on_g5_12, {0x2001, 2}, 1, rw},
-    {obj::led_on_b1_12, {0x2001, 3}, 2, rw},
-    {obj::led_blink_r1_12_g1_4, {0x2002, 1}, 2, rw},
-    {obj::led_blink_g5_12, {0x2002, 2}, 1, rw},
-    {obj::led_blink_b1_12, {0x2002, 3}, 2, rw},
     {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
     {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
     {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
@@ -572,19 +567,28 @@ inline constexpr object_row si_packed_rows[] = {
     {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
     {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
     {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
+    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
+    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},  // E-SI-18
+};
+
+// PKP-2600-SI: 2001h/2002h carry the RPDO bit string in three pieces (2600SI 17, 18).
+inline constexpr object_row si_packed_own_rows[] = {
+    {obj::led_on_r1_12_g1_4, {0x2001, 1}, 2, rw},
+    {obj::led_on_g5_12, {0x2001, 2}, 1, rw},
+    {obj::led_on_b1_12, {0x2001, 3}, 2, rw},
+    {obj::led_blink_r1_12_g1_4, {0x2002, 1}, 2, rw},
+    {obj::led_blink_g5_12, {0x2002, 2}, 1, rw},
+    {obj::led_blink_b1_12, {0x2002, 3}, 2, rw},
     {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0110},
     {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0208},
     {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro, 0, any, none_else, 0x2001'0310},
     {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0110},
     {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0208},
     {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro, 0, any, none_else, 0x2002'0310},
-    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
-    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},  // E-SI-18
 };
 
 // PKP-3500-MT: per-colour planes of 16 bits, the encoder rings in sub 4, encoders and inputs.
-inline constexpr object_row si_mt_rows[] = {
-    {obj::keys, {0x2000, 1}, 2, ro},
+inline constexpr object_row si_mt_own_rows[] = {
     {obj::encoder1_direction_counter, {0x2000, 2}, 1, ro},
     {obj::encoder1_tick_counter, {0x2000, 3}, 2, rw, 0, 0xFFFF, none_else, 0},
     {obj::encoder2_direction_counter, {0x2000, 4}, 1, ro},
@@ -607,57 +611,6 @@ inline constexpr object_row si_mt_rows[] = {
     {obj::analog_input_2, {0x2005, 3}, 1, ro},
     {obj::analog_input_3, {0x2005, 4}, 1, ro},
     {obj::analog_input_period, {0x2006, 0}, 1, rw, 0x08, 0xC8, none_else, 0x08},
-    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
-    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
-    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
-    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
-    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
-    {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
-    {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
-    {obj::serial_number_string, {0x2200, 0}, 0, ro},
-    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
-    {obj::error_register, {0x1001, 0}, 1, ro},
-    {obj::device_name, {0x1008, 0}, 0, ro},
-    {obj::hardware_version, {0x1009, 0}, 0, ro},
-    {obj::software_version, {0x100A, 0}, 0, ro},
-    {obj::model_name, {0x100B, 0}, 0, ro},
-    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
-    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
-    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
-    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
-    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
-    {obj::serial_number, {0x1018, 4}, 4, ro},
-    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
-    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
-    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
-    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
-    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
-    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
-    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
-    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
-    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
-    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
-    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
     {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0110},
     {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0210},
     {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro, 0, any, none_else, 0x2001'0310},
@@ -691,144 +644,51 @@ inline constexpr object_row si_mt_rows[] = {
 // stride (2 bytes when 16, 1 when 8: size 0 below). Printed for the 2500-SI and 1500-LI;
 // inferred for the others (docs/si-family.md says which fact is which). The mapping entries'
 // values depend on the stride and are not given.
-inline constexpr object_row si_per_colour_rows[] = {
-    {obj::keys, {0x2000, 1}, 2, ro},
-    {obj::led_on_red, {0x2001, 1}, 0, rw},
-    {obj::led_on_green, {0x2001, 2}, 0, rw},
-    {obj::led_on_blue, {0x2001, 3}, 0, rw},
-    {obj::led_blink_red, {0x2002, 1}, 0, rw},
-    {obj::led_blink_green, {0x2002, 2}, 0, rw},
-    {obj::led_blink_blue, {0x2002, 3}, 0, rw},
-    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
-    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
-    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
-    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
-    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
-    {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
-    {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
-    {obj::serial_number_string, {0x2200, 0}, 0, ro},
-    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
-    {obj::error_register, {0x1001, 0}, 1, ro},
-    {obj::device_name, {0x1008, 0}, 0, ro},
-    {obj::hardware_version, {0x1009, 0}, 0, ro},
-    {obj::software_version, {0x100A, 0}, 0, ro},
-    {obj::model_name, {0x100B, 0}, 0, ro},
-    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
-    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
-    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
-    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
-    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
-    {obj::serial_number, {0x1018, 4}, 4, ro},
-    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
-    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
-    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
-    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
-    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
-    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
-    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
-    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
-    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
-    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
-    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
-    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro},
-    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
-    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro},
-    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
-    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro},
-    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
-    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
-    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},
+inline constexpr object_row si_per_colour_own_rows[] = {
+    {obj::led_on_red, {0x2001, 1}, 0, rw},      {obj::led_on_green, {0x2001, 2}, 0, rw},
+    {obj::led_on_blue, {0x2001, 3}, 0, rw},     {obj::led_blink_red, {0x2002, 1}, 0, rw},
+    {obj::led_blink_green, {0x2002, 2}, 0, rw}, {obj::led_blink_blue, {0x2002, 3}, 0, rw},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro}, {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro}, {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro}, {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
 };
 
-// A dictionary's rows, the hash table of their addresses, and the row of each object.
-// 2^bits slots for N rows: at most 2 probes for every dictionary (checked below).
-template <std::size_t N>
-inline constexpr unsigned slot_bits = N > 64 ? 9 : 8;
-
-// The hash table of a dictionary's addresses, and apart from it the row of each object: a decoder
-// needs only the first, so a firmware that never encodes drops the second (--gc-sections).
-template <std::size_t N>
-constexpr auto address_index_of(const object_row (&rows)[N]) noexcept {
-    std::array<std::uint32_t, N> keys{};
-    for (std::size_t i = 0; i < N; ++i)
-        keys[i] = address_key(rows[i].address.index, rows[i].address.subindex);
-    return address_table<N, slot_bits<N>>(keys);
+// Each SI dictionary: its own rows, then the shared rows that no own row replaces.
+template <std::size_t O>
+constexpr bool replaced(const object_row (&own)[O], const object_row& c) noexcept {
+    for (const auto& o : own)
+        if (o.id == c.id) return true;
+    return false;
 }
-template <std::size_t N>
-constexpr auto object_index_of(const object_row (&rows)[N]) noexcept {
-    std::array<std::uint8_t, object_count> by_object{};  // row + 1, 0: the object is not there
-    for (std::size_t i = 0; i < N; ++i)
-        by_object[static_cast<std::size_t>(rows[i].id)] = static_cast<std::uint8_t>(i + 1);
-    return by_object;
+template <std::size_t O, std::size_t C>
+constexpr std::size_t si_join_size(const object_row (&own)[O],
+                                   const object_row (&common)[C]) noexcept {
+    std::size_t n = O;
+    for (const auto& c : common)
+        if (!replaced(own, c)) ++n;
+    return n;
 }
-template <std::size_t N>
-struct dictionary_index {
-    const address_table<N, slot_bits<N>>& by_address;
-    const std::array<std::uint8_t, object_count>& by_object;
-};
-
-inline constexpr auto pk1000_by_address = address_index_of(pk1000_rows);
-inline constexpr auto pkp_li_by_address = address_index_of(pkp_li_rows);
-inline constexpr auto si_packed_by_address = address_index_of(si_packed_rows);
-inline constexpr auto si_mt_by_address = address_index_of(si_mt_rows);
-inline constexpr auto si_per_colour_by_address = address_index_of(si_per_colour_rows);
-inline constexpr auto pk1000_by_object = object_index_of(pk1000_rows);
-inline constexpr auto pkp_li_by_object = object_index_of(pkp_li_rows);
-inline constexpr auto si_packed_by_object = object_index_of(si_packed_rows);
-inline constexpr auto si_mt_by_object = object_index_of(si_mt_rows);
-inline constexpr auto si_per_colour_by_object = object_index_of(si_per_colour_rows);
-inline constexpr dictionary_index<std::size(pk1000_rows)> pk1000_index{pk1000_by_address,
-                                                                       pk1000_by_object};
-inline constexpr dictionary_index<std::size(pkp_li_rows)> pkp_li_index{pkp_li_by_address,
-                                                                       pkp_li_by_object};
-inline constexpr dictionary_index<std::size(si_packed_rows)> si_packed_index{si_packed_by_address,
-                                                                             si_packed_by_object};
-inline constexpr dictionary_index<std::size(si_mt_rows)> si_mt_index{si_mt_by_address,
-                                                                     si_mt_by_object};
-inline constexpr dictionary_index<std::size(si_per_colour_rows)> si_per_colour_index{
-    si_per_colour_by_address, si_per_colour_by_object};
-static_assert(pk1000_index.by_address.max_probes() <= 2);
-static_assert(pkp_li_index.by_address.max_probes() <= 2);
-static_assert(si_packed_index.by_address.max_probes() <= 2);
-static_assert(si_mt_index.by_address.max_probes() <= 2);
-static_assert(si_per_colour_index.by_address.max_probes() <= 2);
-
-// Every object at most once per dictionary, every address once (the hash table needs it).
-template <std::size_t N>
-constexpr bool objects_distinct(const object_row (&rows)[N]) noexcept {
-    for (std::size_t i = 0; i < N; ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (rows[i].id == rows[j].id || rows[i].address == rows[j].address) return false;
-    return true;
+template <std::size_t N, std::size_t O, std::size_t C>
+constexpr std::array<object_row, N> si_join(const object_row (&own)[O],
+                                            const object_row (&common)[C]) noexcept {
+    std::array<object_row, N> rows{};
+    std::size_t n = 0;
+    for (const auto& o : own) rows[n++] = o;
+    for (const auto& c : common)
+        if (!replaced(own, c)) rows[n++] = c;
+    return rows;
 }
-static_assert(objects_distinct(pk1000_rows));
-static_assert(objects_distinct(pkp_li_rows));
-static_assert(objects_distinct(si_packed_rows));
-static_assert(objects_distinct(si_mt_rows));
-static_assert(objects_distinct(si_per_colour_rows));
+inline constexpr auto si_packed_rows =
+    si_join<si_join_size(si_packed_own_rows, si_common_rows)>(si_packed_own_rows, si_common_rows);
+inline constexpr auto si_mt_rows =
+    si_join<si_join_size(si_mt_own_rows, si_common_rows)>(si_mt_own_rows, si_common_rows);
+inline constexpr auto si_per_colour_rows =
+    si_join<si_join_size(si_per_colour_own_rows, si_common_rows)>(si_per_colour_own_rows,
+                                                                  si_common_rows);
 }  // namespace detail
 
-// The rows of a dictionary, in manual order.
+// The rows of a dictionary: manual order for the PK1000 and the PKP; for the SI dictionaries each
+// one's own rows, then the rows they share.
 [[nodiscard]] constexpr std::span<const object_row> rows_of(dictionary d) noexcept {
     switch (d) {
         case dictionary::pkp_li: return detail::pkp_li_rows;
@@ -841,53 +701,265 @@ static_assert(objects_distinct(si_per_colour_rows));
 }
 
 namespace detail {
-inline constexpr std::uint8_t no_row = 0xFF;
-// The index of the row at an address in a dictionary's table, no_row when there is none.
-// Calls f(index) with the dictionary's index, so that every lookup is one switch.
-template <class F>
-constexpr auto with_index(dictionary d, F&& f) noexcept {
-    switch (d) {
-        case dictionary::pkp_li: return f(pkp_li_index);
-        case dictionary::si_packed: return f(si_packed_index);
-        case dictionary::si_mt: return f(si_mt_index);
-        case dictionary::si_per_colour: return f(si_per_colour_index);
-        case dictionary::pk1000: break;
+inline constexpr dictionary dictionaries[] = {dictionary::pk1000, dictionary::pkp_li,
+                                              dictionary::si_packed, dictionary::si_mt,
+                                              dictionary::si_per_colour};
+inline constexpr std::size_t dictionary_count = std::size(dictionaries);
+
+// Every object at most once per dictionary, every address once (the hash table needs it), and
+// every range min <= max (value_range::contains needs it).
+constexpr bool rows_well_formed(std::span<const object_row> rows) noexcept {
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].max < rows[i].min) return false;
+        for (std::size_t j = 0; j < i; ++j)
+            if (rows[i].id == rows[j].id || rows[i].address == rows[j].address) return false;
     }
-    return f(pk1000_index);
+    return true;
 }
-constexpr std::uint8_t row_index(dictionary d, canopen::sdo_address a) noexcept {
-    const auto key = address_key(a.index, a.subindex);
-    return with_index(d, [key](const auto& index) {
-        const auto r = index.by_address.find(key);
-        return r ? static_cast<std::uint8_t>(*r) : no_row;
+static_assert(rows_well_formed(pk1000_rows));
+static_assert(rows_well_formed(pkp_li_rows));
+static_assert(rows_well_formed(si_packed_rows));
+static_assert(rows_well_formed(si_mt_rows));
+static_assert(rows_well_formed(si_per_colour_rows));
+
+// --- the codec's rows ---------------------------------------------------------------------------
+// What the decoder needs of a row, in 8 bytes instead of object_row's 24, generated at compile
+// time from the rows above: one table of the distinct codec rows of all dictionaries (the SI
+// dictionaries share most of theirs, and most ranges repeat), one table of the distinct ranges,
+// and per dictionary a hash table of row numbers. The full rows stay for rows_of and find_row
+// (the virtual keypad, the tool): a firmware that only decodes links none of them.
+
+// An SDO address as the frame carries it in bytes 1..3: index | sub-index << 16.
+constexpr std::uint32_t wire_key(canopen::sdo_address a) noexcept {
+    return a.index | (std::uint32_t{a.subindex} << 16);
+}
+
+// The values a number kind accepts: min..min + span, or `also` (a row's min, max - min, also).
+struct value_range {
+    std::uint32_t min = 0;
+    std::uint32_t span = 0xFFFF'FFFF;
+    std::uint32_t also = 0xFFFF'FFFF;
+    [[nodiscard]] constexpr bool contains(std::uint32_t v) const noexcept {
+        return v - min <= span || v == also;
+    }
+    friend constexpr bool operator==(const value_range&, const value_range&) noexcept = default;
+};
+
+struct codec_row {
+    std::uint32_t key;  // the wire_key of the address
+    object id;
+    value_kind kind;
+    // Bits 0..2 the size (object_row::size), bit 3 readable, bit 4 writable, bits 5..7 a
+    // led_part's width in bits / 4.
+    std::uint8_t flags;
+    std::uint8_t a;  // the range (value_ranges); led_plane: the plane; led_part: its first bit
+
+    [[nodiscard]] constexpr canopen::sdo_address address() const noexcept {
+        return {static_cast<std::uint16_t>(key), static_cast<std::uint8_t>(key >> 16)};
+    }
+    [[nodiscard]] constexpr std::uint8_t size() const noexcept { return flags & 7; }
+    [[nodiscard]] constexpr bool readable() const noexcept { return (flags & 8) != 0; }
+    [[nodiscard]] constexpr bool writable() const noexcept { return (flags & 16) != 0; }
+    [[nodiscard]] constexpr unsigned part_width() const noexcept { return (flags >> 5) * 4u; }
+    [[nodiscard]] constexpr std::uint64_t packed() const noexcept {
+        return key | std::uint64_t{static_cast<std::uint8_t>(id)} << 24 |
+               std::uint64_t{static_cast<std::uint8_t>(kind)} << 32 | std::uint64_t{flags} << 40 |
+               std::uint64_t{a} << 48;
+    }
+};
+
+constexpr value_range range_of(const object_row& r) noexcept {
+    return {r.min, r.max - r.min, r.also};
+}
+
+// Calls f(row) for every row of every dictionary.
+template <class F>
+constexpr void for_each_row(F f) noexcept {
+    for (const dictionary d : dictionaries)
+        for (const auto& r : rows_of(d)) f(r);
+}
+
+template <std::size_t Cap>
+struct range_set {
+    std::array<value_range, Cap> items{};
+    std::size_t size = 0;
+    constexpr std::size_t add(const value_range& v) noexcept {
+        for (std::size_t i = 0; i < size; ++i)
+            if (items[i] == v) return i;
+        items[size] = v;
+        return size++;
+    }
+};
+constexpr auto collect_ranges() noexcept {
+    range_set<64> s;
+    for_each_row([&s](const object_row& r) { s.add(range_of(r)); });
+    return s;
+}
+inline constexpr auto all_ranges = collect_ranges();
+inline constexpr auto value_ranges = [] {
+    std::array<value_range, all_ranges.size> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = all_ranges.items[i];
+    return t;
+}();
+
+constexpr codec_row codec_row_of(const object_row& r) noexcept {
+    const object_kind k = object_kinds[static_cast<std::size_t>(r.id)];
+    codec_row c{
+        wire_key(r.address), r.id, k.kind,
+        static_cast<std::uint8_t>(r.size | (r.readable() ? 8 : 0) | (r.writable() ? 16 : 0)), 0};
+    if (k.kind == value_kind::led_plane) {
+        c.a = static_cast<std::uint8_t>(k.holds);
+    } else if (k.kind == value_kind::led_part) {
+        c.a = k.offset;
+        c.flags = static_cast<std::uint8_t>(c.flags | (k.width / 4) << 5);
+    } else {
+        for (std::size_t i = 0; i < value_ranges.size(); ++i)
+            if (value_ranges[i] == range_of(r)) c.a = static_cast<std::uint8_t>(i);
+    }
+    return c;
+}
+// A led_part's width fits the row: a multiple of 4 bits, at most 28.
+constexpr bool part_widths_fit() noexcept {
+    for (const auto& k : object_kinds)
+        if (k.kind == value_kind::led_part && (k.width % 4 != 0 || k.width / 4 > 7)) return false;
+    return true;
+}
+static_assert(part_widths_fit());
+
+// The distinct codec rows, packed (a 64-bit compare each: clang counts constexpr steps).
+struct codec_row_set {
+    std::array<std::uint64_t, 254> items{};
+    std::size_t size = 0;
+    constexpr std::size_t find(std::uint64_t v) const noexcept {
+        for (std::size_t i = 0; i < size; ++i)
+            if (items[i] == v) return i;
+        return size;
+    }
+};
+constexpr codec_row_set collect_codec_rows() noexcept {
+    codec_row_set s;
+    for_each_row([&s](const object_row& r) {
+        const auto v = codec_row_of(r).packed();
+        if (s.find(v) == s.size) s.items[s.size++] = v;  // more than 254: not a constant
     });
+    return s;
 }
-constexpr std::uint8_t row_index(dictionary d, object o) noexcept {
+inline constexpr codec_row_set all_codec_rows = collect_codec_rows();
+inline constexpr auto codec_rows = [] {
+    std::array<codec_row, all_codec_rows.size> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const auto v = all_codec_rows.items[i];
+        t[i] = {static_cast<std::uint32_t>(v) & 0xFF'FFFF, static_cast<object>(v >> 24),
+                static_cast<value_kind>(v >> 32), static_cast<std::uint8_t>(v >> 40),
+                static_cast<std::uint8_t>(v >> 48)};
+    }
+    return t;
+}();
+// The codec row number of a full row.
+constexpr std::uint8_t codec_row_number(const object_row& r) noexcept {
+    return static_cast<std::uint8_t>(all_codec_rows.find(codec_row_of(r).packed()));
+}
+
+// Per dictionary, a hash table of codec row number + 1 (0: empty) by address: open addressing
+// over 256 slots, with one multiplier for all five dictionaries, the first candidate with which
+// every address is found within two probes. All five tables in one array, dictionary d's at
+// d * 256: a fixed size costs some slots (a dictionary has 44..101 rows) and saves the lookup
+// reading a size and a place per dictionary.
+inline constexpr unsigned slot_bits = 8;
+inline constexpr std::size_t slots_per_dictionary = std::size_t{1} << slot_bits;
+static_assert(static_cast<std::size_t>(dictionary::si_per_colour) + 1 == dictionary_count);
+
+// The most probes any address of rows needs.
+constexpr std::size_t max_probes(std::span<const object_row> rows,
+                                 std::uint32_t multiplier) noexcept {
+    std::array<bool, slots_per_dictionary> used{};
+    std::size_t most = 0;
+    for (const auto& r : rows) {
+        std::size_t s = home_slot(wire_key(r.address), multiplier, 32 - slot_bits);
+        std::size_t probes = 1;
+        for (; used[s]; ++probes) s = (s + 1) % slots_per_dictionary;
+        used[s] = true;
+        most = probes > most ? probes : most;
+    }
+    return most;
+}
+constexpr std::uint32_t find_multiplier() noexcept {
+    for (std::size_t t = 0; t < 4096; ++t) {
+        bool fits = true;
+        for (const dictionary d : dictionaries)
+            fits = fits && max_probes(rows_of(d), hash_candidate(t)) <= 2;
+        if (fits) return hash_candidate(t);
+    }
+    return 0;
+}
+inline constexpr std::uint32_t hash_multiplier = find_multiplier();
+static_assert(hash_multiplier != 0, "no multiplier finds every address in two probes");
+
+inline constexpr auto address_slots = [] {
+    std::array<std::uint8_t, dictionary_count * slots_per_dictionary> t{};
+    for (std::size_t d = 0; d < dictionary_count; ++d) {
+        for (const auto& r : rows_of(dictionaries[d])) {
+            std::size_t s = home_slot(wire_key(r.address), hash_multiplier, 32 - slot_bits);
+            while (t[d * slots_per_dictionary + s] != 0) s = (s + 1) % slots_per_dictionary;
+            t[d * slots_per_dictionary + s] = static_cast<std::uint8_t>(codec_row_number(r) + 1);
+        }
+    }
+    return t;
+}();
+
+// The codec row number + 1 at wire address `key` (wire_key) in dictionary d, 0 when it has none.
+// Two probes, unrolled: every address is found within two (find_multiplier).
+constexpr std::uint8_t find_codec_row(dictionary d, std::uint32_t key) noexcept {
+    const std::size_t table = static_cast<std::size_t>(d) * slots_per_dictionary;
+    const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
+    std::uint8_t s = address_slots[table + home];
+    if (s == 0 || codec_rows[s - 1u].key == key) return s;
+    s = address_slots[table + ((home + 1) % slots_per_dictionary)];
+    if (s == 0 || codec_rows[s - 1u].key == key) return s;
+    return 0;
+}
+
+// Per dictionary and object: the codec row number + 1 (the encoder's lookup), and the full row
+// index + 1 (find_row); 0 when the dictionary lacks the object.
+template <bool Full>
+constexpr auto by_object() noexcept {
+    std::array<std::array<std::uint8_t, object_count>, dictionary_count> t{};
+    for (std::size_t d = 0; d < dictionary_count; ++d) {
+        const auto rows = rows_of(dictionaries[d]);
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            t[d][static_cast<std::size_t>(rows[i].id)] =
+                static_cast<std::uint8_t>((Full ? i : codec_row_number(rows[i])) + 1);
+    }
+    return t;
+}
+inline constexpr auto codec_rows_by_object = by_object<false>();
+inline constexpr auto full_rows_by_object = by_object<true>();
+
+// The codec row number + 1 of object o in dictionary d, 0 when it has none.
+constexpr std::uint8_t find_codec_row(dictionary d, object o) noexcept {
     const auto i = static_cast<std::size_t>(o);
-    if (i >= object_count) return no_row;
-    return with_index(d, [i](const auto& index) {
-        return static_cast<std::uint8_t>(index.by_object[i] - 1u);  // 0 (absent) wraps to no_row
-    });
+    if (i >= object_count) return 0;
+    return codec_rows_by_object[static_cast<std::size_t>(d)][i];
 }
-// Row i of a dictionary, i < its size.
-constexpr const object_row& row_at(dictionary d, std::uint8_t i) noexcept { return rows_of(d)[i]; }
 }  // namespace detail
 
-// The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
+// The row of an object in a dictionary; nullopt when the dictionary does not have it.
 // (A copy, not a pointer: a null test on the address of a static object is not a constant
 // expression under UBSan.)
-[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d,
-                                                           canopen::sdo_address a) noexcept {
-    const auto i = detail::row_index(d, a);
-    if (i == detail::no_row) return std::nullopt;
-    return detail::row_at(d, i);
+[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d, object o) noexcept {
+    const auto i = static_cast<std::size_t>(o);
+    if (i >= object_count) return std::nullopt;
+    const std::uint8_t r = detail::full_rows_by_object[static_cast<std::size_t>(d)][i];
+    if (r == 0) return std::nullopt;
+    return rows_of(d)[r - 1u];
 }
 
-// The row of an object in a dictionary; nullopt when the dictionary does not have it.
-[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d, object o) noexcept {
-    const auto i = detail::row_index(d, o);
-    if (i == detail::no_row) return std::nullopt;
-    return detail::row_at(d, i);
+// The row at an address; nullopt when the dictionary has none there (errc::unknown_object).
+[[nodiscard]] constexpr std::optional<object_row> find_row(dictionary d,
+                                                           canopen::sdo_address a) noexcept {
+    const std::uint8_t r = detail::find_codec_row(d, detail::wire_key(a));
+    if (r == 0) return std::nullopt;
+    return find_row(d, detail::codec_rows[r - 1u].id);
 }
 
 // --- names ----------------------------------------------------------------------------------
