@@ -84,6 +84,15 @@ public:
     }
     // All eight storage bytes; those at and past size() are zero.
     [[nodiscard]] constexpr const payload& bytes() const noexcept { return data_; }
+    // The eight storage bytes as one little-endian number (bytes past the dlc are zero): a PDO
+    // decoder's single read. Written out, not detail::load_le's switch on a width, so that g++
+    // makes it one load even where its inlining budget leaves load_le a call.
+    [[nodiscard]] constexpr std::uint64_t data_le() const noexcept {
+        using u64 = std::uint64_t;
+        return u64{data_[0]} | u64{data_[1]} << 8 | u64{data_[2]} << 16 | u64{data_[3]} << 24 |
+               u64{data_[4]} << 32 | u64{data_[5]} << 40 | u64{data_[6]} << 48 |
+               u64{data_[7]} << 56;
+    }
     // Byte i; i must be < size().
     constexpr std::uint8_t operator[](std::size_t i) const noexcept { return data_[i]; }
 

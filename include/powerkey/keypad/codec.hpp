@@ -307,11 +307,11 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
 // --- PDO frames ---------------------------------------------------------------------------------
 
 // The PDO of function code `code` (bits 10..7 of the identifier, which decode checked is this
-// node's): only the length and data are checked. Each answer is built in the caller's result.
+// node's) with data bytes v (f.data_le()): only the length and data are checked. Each answer is
+// built in the caller's result.
 [[gnu::always_inline]] constexpr result<message> decode_pdo(const model_info& m, std::uint32_t code,
-                                                            const can::frame& f) noexcept {
-    // Bytes past the dlc are zero, so one 64-bit load reads any PDO.
-    const std::uint64_t v = load_le<8>(f.bytes(), 0);
+                                                            const can::frame& f,
+                                                            std::uint64_t v) noexcept {
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
             if (f.size() != 5) return errc::wrong_length;
@@ -388,8 +388,9 @@ constexpr result<message> decode_extended(const model_info& m, const can::frame&
 
 // --- encoding -----------------------------------------------------------------------------------
 
-constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node, std::uint8_t dlc,
-                               std::uint64_t bits) noexcept {
+[[gnu::always_inline]] constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
+                                                      std::uint8_t dlc,
+                                                      std::uint64_t bits) noexcept {
     can::payload p{};
     store_le<8>(p, 0, bits);
     return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
@@ -494,21 +495,23 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
         if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
         return errc::wrong_id;
     }
-    // One jump table: each PDO case inlines its own body (decode_pdo of a constant code).
+    // One jump table: each PDO case inlines its own body (decode_pdo of a constant code). Bytes
+    // past the dlc are zero, so one 64-bit load reads any PDO.
+    const std::uint64_t v = f.data_le();
     switch (rest >> 7) {
         case 0x0:  // the node id as a COB-ID
         case 0x1:  // EMCY
         case 0x2:  // TIME
         case 0xD:
         case 0xF: return errc::wrong_id;
-        case 0x3: return detail::decode_pdo(mi, 0x3, f);
-        case 0x4: return detail::decode_pdo(mi, 0x4, f);
-        case 0x5: return detail::decode_pdo(mi, 0x5, f);
-        case 0x6: return detail::decode_pdo(mi, 0x6, f);
-        case 0x7: return detail::decode_pdo(mi, 0x7, f);
-        case 0x8: return detail::decode_pdo(mi, 0x8, f);
-        case 0x9: return detail::decode_pdo(mi, 0x9, f);
-        case 0xA: return detail::decode_pdo(mi, 0xA, f);
+        case 0x3: return detail::decode_pdo(mi, 0x3, f, v);
+        case 0x4: return detail::decode_pdo(mi, 0x4, f, v);
+        case 0x5: return detail::decode_pdo(mi, 0x5, f, v);
+        case 0x6: return detail::decode_pdo(mi, 0x6, f, v);
+        case 0x7: return detail::decode_pdo(mi, 0x7, f, v);
+        case 0x8: return detail::decode_pdo(mi, 0x8, f, v);
+        case 0x9: return detail::decode_pdo(mi, 0x9, f, v);
+        case 0xA: return detail::decode_pdo(mi, 0xA, f, v);
         case 0xB: return detail::decode_response(mi, f);
         case 0xC: return detail::decode_request(mi, f);
         case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
@@ -529,9 +532,8 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
 // model's dictionary does not have.
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
-    const auto mi = info(m);
-    if (!mi) return mi.error();
-    const auto f = detail::build(*mi, node, msg);
+    if (!detail::is_model(m)) return errc::value_out_of_range;
+    const auto f = detail::build(detail::row_of(m), node, msg);
     if (!f) return f.error();
     const auto back = decode(*f, node, m);
     if (!back) return back.error();
