@@ -84,9 +84,11 @@ public:
     }
     // All eight storage bytes; those at and past size() are zero.
     [[nodiscard]] constexpr const payload& bytes() const noexcept { return data_; }
-    // The eight storage bytes as one little-endian number (bytes past the dlc are zero): a PDO
-    // decoder's single read. Written out, not detail::load_le's switch on a width, so that g++
-    // makes it one load even where its inlining budget leaves load_le a call.
+    // The eight storage bytes as one little-endian number (bytes past the dlc are zero): an
+    // 8-byte PDO's single read. It reads all eight, so a decoder calls it only once it has
+    // checked that the dlc is 8 (no decoder reads past the dlc: the fuzz targets poison those
+    // bytes). Written out, not detail::load_le's switch on a width, so that g++ makes it one load
+    // even where its inlining budget leaves load_le a call.
     [[nodiscard]] constexpr std::uint64_t data_le() const noexcept {
         using u64 = std::uint64_t;
         return u64{data_[0]} | u64{data_[1]} << 8 | u64{data_[2]} << 16 | u64{data_[3]} << 24 |
