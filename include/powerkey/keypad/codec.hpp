@@ -522,10 +522,8 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
         case 0xC: return detail::decode_request(mi, f);
         case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
             if (f.size() != 1) return errc::wrong_length;
-            const auto state = f[0];
-            if (state != 0x00 && state != 0x04 && state != 0x05 && state != 0x7F)
-                return errc::value_out_of_range;
-            return detail::answer(canopen::heartbeat_message{canopen::nmt_state{state}});
+            if (!canopen::is_heartbeat_state(f[0])) return errc::value_out_of_range;
+            return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
         default: return detail::decode_extended(mi, f);  // bit 31 set
     }
