@@ -29,6 +29,14 @@ public:
     constexpr result(T&& v) noexcept(std::is_nothrow_move_constructible_v<T>)
         : value_(std::move(v)) {}
     constexpr result(errc e) noexcept : error_(e) {}
+    // The value built in place from args (for result<variant>: std::in_place_type<A>, args of A),
+    // so that a decoder writes its answer straight into the caller's result instead of building
+    // a T and moving it in (docs/performance.md).
+    template <class... A>
+    requires std::is_constructible_v<T, A...>
+    constexpr explicit result(std::in_place_t,
+                              A&&... args) noexcept(std::is_nothrow_constructible_v<T, A...>)
+        : value_(std::forward<A>(args)...) {}
 
     [[nodiscard]] constexpr bool has_value() const noexcept { return error_ == errc{}; }
     constexpr explicit operator bool() const noexcept { return has_value(); }

@@ -35,9 +35,9 @@ public:
     constexpr frame() noexcept = default;
 
     constexpr frame(standard_id id, dlc length, const payload& data) noexcept
-        : id_(id.value()), extended_(false), dlc_(length.value()), data_(masked(data, length)) {}
+        : id_(id.value()), dlc_(length.value()), data_(masked(data, length)) {}
     constexpr frame(extended_id id, dlc length, const payload& data) noexcept
-        : id_(id.value()), extended_(true), dlc_(length.value()), data_(masked(data, length)) {}
+        : id_(id.value() | extended_flag), dlc_(length.value()), data_(masked(data, length)) {}
 
     // Exactly N data bytes, N checked at compile time.
     template <std::size_t N>
@@ -60,16 +60,21 @@ public:
         return frame(id, *length, p);
     }
 
-    [[nodiscard]] constexpr bool is_extended() const noexcept { return extended_; }
+    [[nodiscard]] constexpr bool is_extended() const noexcept { return (id_ & extended_flag) != 0; }
     // The identifier as a plain number (11 or 29 bits; see is_extended()).
-    [[nodiscard]] constexpr std::uint32_t raw_id() const noexcept { return id_; }
+    [[nodiscard]] constexpr std::uint32_t raw_id() const noexcept { return id_ & ~extended_flag; }
+    // The identifier and its format in one word, as SocketCAN's can_id holds them: bit 31 set for
+    // a 29-bit identifier (CAN_EFF_FLAG). A standard frame's word is its 11-bit id, at most 7FFh,
+    // so one comparison classifies a frame (the keypad decoder's dispatch).
+    [[nodiscard]] constexpr std::uint32_t id_word() const noexcept { return id_; }
+    static constexpr std::uint32_t extended_flag = 0x8000'0000;
     [[nodiscard]] constexpr std::optional<standard_id> std_id() const noexcept {
-        if (extended_) return std::nullopt;
+        if (is_extended()) return std::nullopt;
         return standard_id::make(id_).value();
     }
     [[nodiscard]] constexpr std::optional<extended_id> ext_id() const noexcept {
-        if (!extended_) return std::nullopt;
-        return extended_id::make(id_).value();
+        if (!is_extended()) return std::nullopt;
+        return extended_id::make(raw_id()).value();
     }
 
     [[nodiscard]] constexpr std::uint8_t size() const noexcept { return dlc_; }
@@ -79,6 +84,17 @@ public:
     }
     // All eight storage bytes; those at and past size() are zero.
     [[nodiscard]] constexpr const payload& bytes() const noexcept { return data_; }
+    // The eight storage bytes as one little-endian number (bytes past the dlc are zero): an
+    // 8-byte PDO's single read. It reads all eight, so a decoder calls it only once it has
+    // checked that the dlc is 8 (no decoder reads past the dlc: the fuzz targets poison those
+    // bytes). Written out, not detail::load_le's switch on a width, so that g++ makes it one load
+    // even where its inlining budget leaves load_le a call.
+    [[nodiscard]] constexpr std::uint64_t data_le() const noexcept {
+        using u64 = std::uint64_t;
+        return u64{data_[0]} | u64{data_[1]} << 8 | u64{data_[2]} << 16 | u64{data_[3]} << 24 |
+               u64{data_[4]} << 32 | u64{data_[5]} << 40 | u64{data_[6]} << 48 |
+               u64{data_[7]} << 56;
+    }
     // Byte i; i must be < size().
     constexpr std::uint8_t operator[](std::size_t i) const noexcept { return data_[i]; }
 
@@ -101,8 +117,7 @@ private:
         return p;
     }
 
-    std::uint32_t id_ = 0;
-    bool extended_ = false;
+    std::uint32_t id_ = 0;  // the id, | extended_flag for a 29-bit one
     std::uint8_t dlc_ = 0;
     payload data_{};
 };

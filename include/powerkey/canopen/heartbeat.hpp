@@ -52,6 +52,11 @@ struct heartbeat_message {
                       std::array<std::uint8_t, 1>{static_cast<std::uint8_t>(m.state)});
 }
 
+// Whether b is a state a heartbeat carries: 00h, 04h, 05h or 7Fh.
+[[nodiscard]] constexpr bool is_heartbeat_state(std::uint8_t b) noexcept {
+    return b == 0x00 || b == 0x04 || b == 0x05 || b == 0x7F;
+}
+
 // Errors: wrong_id_format, wrong_id (not 700h + node), wrong_length (not 1 byte),
 // value_out_of_range (a state other than 00h, 04h, 05h, 7Fh; this includes the node-guarding
 // toggle bit 80h, which the keypads do not use).
@@ -60,13 +65,8 @@ struct heartbeat_message {
     if (const auto e = powerkey::detail::check_frame(f, cob_id(function::heartbeat, node), 1);
         e != errc{})
         return e;
-    switch (f[0]) {
-        case 0x00:
-        case 0x04:
-        case 0x05:
-        case 0x7F: return heartbeat_message{static_cast<nmt_state>(f[0])};
-        default: return errc::value_out_of_range;
-    }
+    if (!is_heartbeat_state(f[0])) return errc::value_out_of_range;
+    return heartbeat_message{static_cast<nmt_state>(f[0])};
 }
 
 }  // namespace powerkey::canopen

@@ -58,6 +58,12 @@ struct model_info {
     // Colour 00h in the backlight PDO returns to the default colour (2003h sub 4) rather than
     // keeping the current one: PKP2600SI manual section 15 (PK1000 15 and PKP3500-MT 18: keep).
     bool backlight_zero_is_default = false;
+    // Derived from the fields above, for the PDO decoders (docs/performance.md): the bits of the
+    // key-state PDO's bytes 0..3 that name no key, and every bit of an LED map that names an LED.
+    std::uint32_t not_keys = keys >= 32 ? 0u : ~((std::uint32_t{1} << keys) - 1);
+    std::uint64_t led_bits = std::uint64_t{led_mask} |
+                             (planes > 1 ? std::uint64_t{led_mask} << (stride % 64) : 0) |
+                             (planes > 2 ? std::uint64_t{led_mask} << (2 * stride % 64) : 0);
 
     // Colour planes an LED object of 4 bytes (PKP 6001h/6002h) carries: those that fit 32 bits.
     [[nodiscard]] constexpr unsigned object_planes() const noexcept {
@@ -105,6 +111,16 @@ constexpr bool models_in_enum_order() noexcept {
     return true;
 }
 static_assert(models_in_enum_order());
+// The LED-map rule's planes do not overlap (each fits its stride) and end within 64 bits: what
+// the codec's LED PDO decoder (two shifts by the stride, a test against led_bits) relies on.
+constexpr bool planes_apart() noexcept {
+    for (const auto& m : model_table)
+        if (m.planes < 1 || m.planes > 3 || m.stride == 0 ||
+            (std::uint64_t{m.led_mask} >> m.stride) != 0 || m.stride * m.planes > 64)
+            return false;
+    return true;
+}
+static_assert(planes_apart());
 }  // namespace detail
 
 inline constexpr std::size_t model_count = std::size(detail::model_table);
