@@ -142,12 +142,6 @@ constexpr bool is_model(model m) noexcept { return static_cast<std::size_t>(m) <
 
 // --- the LED-map and key-map rule ---------------------------------------------------------------
 
-namespace detail {
-constexpr std::uint64_t low_bits(unsigned n) noexcept {
-    return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-}
-}  // namespace detail
-
 // The first `planes` planes of l as the model's bit string. LEDs the model lacks are dropped:
 // callers that must refuse them compare with unpack_leds (the codec does).
 [[nodiscard]] constexpr std::uint64_t pack_leds(const model_info& m, const leds& l,

@@ -1,0 +1,120 @@
+// The tables of include/ that the compiler builds (the codec's 8-byte rows, the table of distinct
+// ranges, the address hash tables and their multiplier, the object -> row arrays, the SI
+// dictionaries joined from shared and own rows) and the invariants the headers prove with
+// static_assert, evaluated again by the running program and compared with what the compiler
+// built. A constexpr function must give the same at run time; and llvm-cov, which counts only
+// run time, sees these builders run (docs/quality.md).
+#include <doctest/doctest.h>
+
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/names.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace {
+using namespace powerkey;
+
+// A value the optimiser cannot see through, so that the builders below run at run time.
+template <class T>
+T opaque(T v) {
+    volatile T keep = v;
+    return keep;
+}
+
+bool same_row(const object_row& a, const object_row& b) {
+    return a.id == b.id && a.address == b.address && a.size == b.size && a.access == b.access &&
+           a.min == b.min && a.max == b.max && a.also == b.also && a.initial == b.initial;
+}
+
+template <std::size_t N, std::size_t O, std::size_t C>
+void check_join(const std::array<object_row, N>& built, const object_row (&own)[O],
+                const object_row (&common)[C]) {
+    REQUIRE(detail::si_join_size(own, common) == N);
+    const auto again = detail::si_join<N>(own, common);
+    for (std::size_t i = 0; i < N; ++i) {
+        CAPTURE(i);
+        CHECK(same_row(again[i], built[i]));
+    }
+    // Own rows first, in their order; then every shared row that no own row replaces.
+    for (std::size_t i = 0; i < O; ++i) CHECK(same_row(built[i], own[i]));
+    std::size_t replaced = 0;
+    for (const auto& c : common) replaced += detail::replaced(own, c) ? 1u : 0u;
+    CHECK(O + C - replaced == N);
+}
+}  // namespace
+
+TEST_CASE("the SI dictionaries are their own rows, then the shared rows none of them replaces") {
+    check_join(detail::si_packed_rows, detail::si_packed_own_rows, detail::si_common_rows);
+    check_join(detail::si_mt_rows, detail::si_mt_own_rows, detail::si_common_rows);
+    check_join(detail::si_per_colour_rows, detail::si_per_colour_own_rows, detail::si_common_rows);
+    // The PKP-3500-MT replaces two shared rows with its own (docs/models.md).
+    CHECK(detail::replaced(detail::si_mt_own_rows,
+                           *find_row(dictionary::si_mt, object::tpdo1_event_timer)));
+}
+
+TEST_CASE("every dictionary is well formed: one row per object and per address, min <= max") {
+    for (const auto d : enum_values<dictionary>()) {
+        CAPTURE(to_string(d));
+        CHECK(detail::rows_well_formed(rows_of(opaque(d))));
+    }
+    object_row twice[] = {rows_of(dictionary::pk1000)[0], rows_of(dictionary::pk1000)[0]};
+    CHECK(!detail::rows_well_formed(twice));
+    object_row upside_down[] = {rows_of(dictionary::pk1000)[0]};
+    upside_down[0].min = 5;
+    upside_down[0].max = 4;
+    CHECK(!detail::rows_well_formed(upside_down));
+}
+
+TEST_CASE("the codec's rows and ranges, built again at run time, are the compiler's") {
+    const auto ranges = detail::collect_ranges();
+    REQUIRE(ranges.size == detail::value_ranges.size());
+    for (std::size_t i = 0; i < ranges.size; ++i) CHECK(ranges.items[i] == detail::value_ranges[i]);
+    CHECK(detail::part_widths_fit());
+
+    const auto rows = detail::collect_codec_rows();
+    REQUIRE(rows.size == detail::codec_rows.size());
+    for (std::size_t i = 0; i < rows.size; ++i) {
+        CAPTURE(i);
+        CHECK(rows.items[i] == detail::all_codec_rows.items[i]);
+        CHECK(detail::codec_rows[i].key == (rows.items[i] & 0xFF'FFFF));
+    }
+    // Every full row of every dictionary has its codec row: same address, object, size, access.
+    for (const auto d : enum_values<dictionary>())
+        for (const auto& r : rows_of(d)) {
+            CAPTURE(to_string(r.id));
+            const auto& c = detail::codec_rows[detail::codec_row_number(r)];
+            CHECK(c.address() == r.address);
+            CHECK(c.id == r.id);
+            CHECK(c.size() == r.size);
+            CHECK(c.packed() == detail::codec_row_of(r).packed());
+        }
+}
+
+TEST_CASE("the hash multiplier and the object -> row arrays, found again at run time") {
+    CHECK(detail::find_multiplier() == detail::hash_multiplier);
+    for (const auto d : enum_values<dictionary>()) {
+        CAPTURE(to_string(d));
+        CHECK(detail::max_probes(rows_of(d), opaque(detail::hash_multiplier)) <= 2);
+    }
+    const auto codec = detail::by_object<false>();
+    const auto full = detail::by_object<true>();
+    CHECK(codec == detail::codec_rows_by_object);
+    CHECK(full == detail::full_rows_by_object);
+    CHECK(detail::kinds_in_enum_order());
+}
+
+TEST_CASE("the model table's invariants hold at run time too") {
+    CHECK(detail::models_in_enum_order());
+    CHECK(detail::planes_apart());
+}
+
+TEST_CASE("enum_values counts each named value once, aliases not") {
+    // backlight_colour: keep and red..yellow_green (ten values) and two alias names.
+    CHECK(detail::distinct_values<backlight_colour>() == 10);
+    CHECK(detail::distinct_values<backlight_colour>() <
+          std::size(enum_names<backlight_colour>::entries));
+    CHECK(detail::distinct_values<model>() == model_count);
+    CHECK(detail::distinct_values<dictionary>() == 5);
+}
