@@ -28,30 +28,32 @@ bool same_row(const object_row& a, const object_row& b) {
            a.min == b.min && a.max == b.max && a.also == b.also && a.initial == b.initial;
 }
 
-template <std::size_t N, std::size_t O, std::size_t C>
-void check_join(const std::array<object_row, N>& built, const object_row (&own)[O],
-                const object_row (&common)[C]) {
-    REQUIRE(detail::si_join_size(own, common) == N);
-    const auto again = detail::si_join<N>(own, common);
+template <std::size_t N, class Own, class Shared>
+void check_join(const std::array<object_row, N>& built, const Own& own, const Shared& shared) {
+    REQUIRE(detail::joined_size(own, shared) == N);
+    const auto again = detail::join_rows<N>(own, shared);
     for (std::size_t i = 0; i < N; ++i) {
         CAPTURE(i);
         CHECK(same_row(again[i], built[i]));
     }
     // Own rows first, in their order; then every shared row that no own row replaces.
-    for (std::size_t i = 0; i < O; ++i) CHECK(same_row(built[i], own[i]));
+    for (std::size_t i = 0; i < std::size(own); ++i) CHECK(same_row(built[i], own[i]));
     std::size_t replaced = 0;
-    for (const auto& c : common) replaced += detail::replaced(own, c) ? 1u : 0u;
-    CHECK(O + C - replaced == N);
+    for (const auto& c : shared) replaced += detail::replaced(own, c) ? 1u : 0u;
+    CHECK(std::size(own) + std::size(shared) - replaced == N);
 }
 }  // namespace
 
-TEST_CASE("the SI dictionaries are their own rows, then the shared rows none of them replaces") {
+TEST_CASE("the PK1000 and SI dictionaries are their own rows, then the shared ones not replaced") {
+    check_join(detail::pk1000_rows, detail::pk1000_own_rows, detail::pk_shared_rows);
+    check_join(detail::si_common_rows, detail::si_common_own_rows, detail::pk_shared_rows);
     check_join(detail::si_packed_rows, detail::si_packed_own_rows, detail::si_common_rows);
     check_join(detail::si_mt_rows, detail::si_mt_own_rows, detail::si_common_rows);
     check_join(detail::si_per_colour_rows, detail::si_per_colour_own_rows, detail::si_common_rows);
-    // The PKP-3500-MT replaces two shared rows with its own (docs/models.md).
+    // The PKP-3500-MT replaces shared rows with its own (docs/models.md): the TPDO1 event timer.
     CHECK(detail::replaced(detail::si_mt_own_rows,
                            *find_row(dictionary::si_mt, object::tpdo1_event_timer)));
+    CHECK(!detail::replaced(detail::si_mt_own_rows, *find_row(dictionary::si_mt, object::keys)));
 }
 
 TEST_CASE("every dictionary is well formed: one row per object and per address, min <= max") {

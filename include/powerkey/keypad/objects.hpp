@@ -392,13 +392,36 @@ constexpr auto wo = access::write_only;
 constexpr std::uint32_t any = 0xFFFF'FFFF;
 constexpr std::uint32_t none_else = 0xFFFF'FFFF;
 
-// PK1000_CANopen_UM_rev1.13: sections 16-48, defaults from section 3 and the example replies.
-inline constexpr object_row pk1000_rows[] = {
+// A dictionary written as its own rows and rows it shares with others: its own rows, then the
+// shared rows that no own row replaces (an own row replaces the shared row of the same object).
+template <class Own>
+constexpr bool replaced(const Own& own, const object_row& c) noexcept {
+    for (const auto& o : own)
+        if (o.id == c.id) return true;
+    return false;
+}
+template <class Own, class Shared>
+constexpr std::size_t joined_size(const Own& own, const Shared& shared) noexcept {
+    std::size_t n = std::size(own);
+    for (const auto& c : shared)
+        if (!replaced(own, c)) ++n;
+    return n;
+}
+template <std::size_t N, class Own, class Shared>
+constexpr std::array<object_row, N> join_rows(const Own& own, const Shared& shared) noexcept {
+    std::array<object_row, N> rows{};
+    std::size_t n = 0;
+    for (const auto& o : own) rows[n++] = o;
+    for (const auto& c : shared)
+        if (!replaced(own, c)) rows[n++] = c;
+    return rows;
+}
+
+// The rows the PK1000 manual and the SI manuals print alike (the CiA 301 objects, 2000h..2014h,
+// 2200h), each fact once: PK1000_CANopen_UM_rev1.13 sections 16-48 (defaults from section 3 and
+// the example replies) and docs/si-family.md.
+inline constexpr object_row pk_shared_rows[] = {
     {obj::keys, {0x2000, 1}, 2, ro},
-    {obj::led_on_red, {0x2001, 1}, 4, rw},
-    {obj::led_on_green, {0x2001, 2}, 4, rw},
-    {obj::led_blink_red, {0x2002, 1}, 4, rw},
-    {obj::led_blink_green, {0x2002, 2}, 4, rw},
     {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
     {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
     {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
@@ -410,13 +433,8 @@ inline constexpr object_row pk1000_rows[] = {
     {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
     {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
     {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
-    {obj::led_power, {0x2015, 0}, 1, rw, 0, 1, none_else, 1},
-    {obj::demo_mode, {0x2100, 0}, 1, rw, 0, 1, none_else, 0},
-    {obj::protocol_j1939, {0x20FF, 1}, 2, rw, 0, 1, none_else, 0},
-    {obj::protocol_rs485, {0x20FF, 2}, 2, rw, 0, 1, none_else, 0},
     {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
     {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},  // node 01h
-    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},                // E-PK-8
     {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
     {obj::error_register, {0x1001, 0}, 1, ro},
     {obj::device_name, {0x1008, 0}, 0, ro},
@@ -429,36 +447,52 @@ inline constexpr object_row pk1000_rows[] = {
     {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
     {obj::serial_number, {0x1018, 4}, 4, ro},
     {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x4000'0215},
     {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
     {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x4000'0315},
     {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},  // E-PK-9
     {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x4000'0415},
     {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
     {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x4000'0515},
     {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0120},
-    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0220},
-    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0120},
-    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0220},  // E-PK-5
     {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
     {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
     {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
     {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
     {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
     {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
-    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x4000'0195},
     {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},  // E-PK-11
     {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},
     {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
     {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-PK-12
     {obj::serial_number_string, {0x2200, 0}, 0, ro},
 };
+
+// PK1000_CANopen_UM_rev1.13: the rows that differ from the SI family's; the PK1000 dictionary is
+// these, then pk_shared_rows.
+inline constexpr object_row pk1000_own_rows[] = {
+    {obj::led_on_red, {0x2001, 1}, 4, rw},
+    {obj::led_on_green, {0x2001, 2}, 4, rw},
+    {obj::led_blink_red, {0x2002, 1}, 4, rw},
+    {obj::led_blink_green, {0x2002, 2}, 4, rw},
+    {obj::led_power, {0x2015, 0}, 1, rw, 0, 1, none_else, 1},
+    {obj::demo_mode, {0x2100, 0}, 1, rw, 0, 1, none_else, 0},
+    {obj::protocol_j1939, {0x20FF, 1}, 2, rw, 0, 1, none_else, 0},
+    {obj::protocol_rs485, {0x20FF, 2}, 2, rw, 0, 1, none_else, 0},
+    {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFFFF, none_else, 0},  // E-PK-8
+    {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x4000'0215},
+    {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x4000'0315},
+    {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x4000'0415},
+    {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x4000'0515},
+    {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro, 0, any, none_else, 0x2001'0120},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro, 0, any, none_else, 0x2001'0220},
+    {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 2},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro, 0, any, none_else, 0x2002'0120},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro, 0, any, none_else, 0x2002'0220},  // E-PK-5
+    {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x4000'0195},
+};
+inline constexpr auto pk1000_rows =
+    join_rows<joined_size(pk1000_own_rows, pk_shared_rows)>(pk1000_own_rows, pk_shared_rows);
 
 // PKP-2200-2400-LI_CANopen_UM_rev1.1: sections 13-32; the values of the example replies.
 inline constexpr object_row pkp_li_rows[] = {
@@ -512,64 +546,22 @@ inline constexpr object_row pkp_li_rows[] = {
 // dictionary"; "2600SI n" and "MT n" are the sections of the PKP2600SI and PKP3500-MT manuals).
 // Writes the manuals show without a read (2100h, 20FFh, 1011h sub 1) are write-only here; the
 // COB-IDs read back without the CiA 301 bits 30/31; 1017h takes 000Ah..FEFFh (both manuals).
-// Each fact once: the rows the three SI dictionaries share, then each one's own rows; an own row
-// replaces the shared row of the same object (si_join below).
-inline constexpr object_row si_common_rows[] = {
-    {obj::keys, {0x2000, 1}, 2, ro},
-    {obj::led_brightness, {0x2003, 1}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::backlight_level, {0x2003, 2}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::backlight_colour, {0x2003, 3}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_backlight_colour, {0x2003, 4}, 1, rw, 1, 9, none_else, 0x08},
-    {obj::default_led_brightness, {0x2003, 5}, 1, rw, 0, 0x3F, none_else, 0x3F},
-    {obj::default_backlight_level, {0x2003, 6}, 1, rw, 0, 0x3F, none_else, 0x00},
-    {obj::baud_rate, {0x2010, 0}, 1, rw, 0, 7, none_else, 0x04},
-    {obj::boot_up, {0x2011, 0}, 1, rw, 0, 1, none_else, 1},
-    {obj::active_on_startup, {0x2012, 0}, 1, rw, 0, 1, none_else, 0},
-    {obj::node_id, {0x2013, 0}, 1, rw, 1, 0x7F, none_else, 0x15},
-    {obj::startup_show, {0x2014, 0}, 1, rw, 0, 2, none_else, 1},
+// Each fact once: the rows the three SI dictionaries share (those of pk_shared_rows and these),
+// then each one's own rows; an own row replaces the shared row of the same object.
+inline constexpr object_row si_common_own_rows[] = {
     {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
     {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
-    {obj::serial_number_string, {0x2200, 0}, 0, ro},
-    {obj::device_type, {0x1000, 0}, 4, ro, 0, any, none_else, 0x000B'0191},
-    {obj::error_register, {0x1001, 0}, 1, ro},
-    {obj::device_name, {0x1008, 0}, 0, ro},
-    {obj::hardware_version, {0x1009, 0}, 0, ro},
-    {obj::software_version, {0x100A, 0}, 0, ro},
-    {obj::model_name, {0x100B, 0}, 0, ro},
-    {obj::restore_count, {0x1011, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::restore_defaults, {0x1011, 1}, 4, rw},  // E-SI-6: read back as in E-PK-4
-    {obj::consumer_heartbeat_count, {0x1016, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::consumer_heartbeat, {0x1016, 1}, 4, rw, 10, 0xFFFF, none_else, 0x0001'0000},
     {obj::heartbeat_time, {0x1017, 0}, 2, rw, 10, 0xFEFF, none_else, 0},
-    {obj::identity_count, {0x1018, 0}, 1, ro, 0, any, none_else, 4},
-    {obj::vendor_id, {0x1018, 1}, 4, ro, 0, any, none_else, 0x3E2},
-    {obj::serial_number, {0x1018, 4}, 4, ro},
-    {obj::rpdo1_count, {0x1400, 0}, 1, ro, 0, any, none_else, 2},
     {obj::rpdo1_cob_id, {0x1400, 1}, 4, ro, 0, any, none_else, 0x215},
-    {obj::rpdo1_transmission_type, {0x1400, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo2_count, {0x1401, 0}, 1, ro, 0, any, none_else, 2},
     {obj::rpdo2_cob_id, {0x1401, 1}, 4, ro, 0, any, none_else, 0x315},
-    {obj::rpdo2_transmission_type, {0x1401, 2}, 1, rw, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo3_count, {0x1402, 0}, 1, ro, 0, any, none_else, 2},
     {obj::rpdo3_cob_id, {0x1402, 1}, 4, ro, 0, any, none_else, 0x415},
-    {obj::rpdo3_transmission_type, {0x1402, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::rpdo4_count, {0x1403, 0}, 1, ro, 0, any, none_else, 2},
     {obj::rpdo4_cob_id, {0x1403, 1}, 4, ro, 0, any, none_else, 0x515},
-    {obj::rpdo4_transmission_type, {0x1403, 2}, 1, ro, 0, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_count, {0x1800, 0}, 1, ro, 0, any, none_else, 5},
     {obj::tpdo1_cob_id, {0x1800, 1}, 4, ro, 0, any, none_else, 0x195},
-    {obj::tpdo1_transmission_type, {0x1800, 2}, 1, rw, 1, 0xF0, 0xFE, 0xFE},
-    {obj::tpdo1_mapping_count, {0x1A00, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::tpdo1_mapping_1, {0x1A00, 1}, 4, ro, 0, any, none_else, 0x2000'0110},  // E-SI-19
-    {obj::rpdo3_mapping_count, {0x1602, 0}, 1, ro, 0, any, none_else, 1},
-    {obj::rpdo4_mapping_count, {0x1603, 0}, 1, ro, 0, any, none_else, 2},
-    {obj::rpdo4_mapping_1, {0x1603, 1}, 4, ro, 0, any, none_else, 0x2003'0208},
-    {obj::rpdo4_mapping_2, {0x1603, 2}, 4, ro, 0, any, none_else, 0x2003'0308},
     {obj::rpdo1_mapping_count, {0x1600, 0}, 1, ro, 0, any, none_else, 3},
     {obj::rpdo2_mapping_count, {0x1601, 0}, 1, ro, 0, any, none_else, 3},
-    {obj::rpdo3_mapping_1, {0x1602, 1}, 4, ro, 0, any, none_else, 0x2003'0108},
-    {obj::tpdo1_event_timer, {0x1800, 5}, 2, rw, 10, 0xFEFF, none_else, 0},  // E-SI-18
 };
+inline constexpr auto si_common_rows =
+    join_rows<joined_size(si_common_own_rows, pk_shared_rows)>(si_common_own_rows, pk_shared_rows);
 
 // PKP-2600-SI: 2001h/2002h carry the RPDO bit string in three pieces (2600SI 17, 18).
 inline constexpr object_row si_packed_own_rows[] = {
@@ -653,42 +645,17 @@ inline constexpr object_row si_per_colour_own_rows[] = {
     {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro}, {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
 };
 
-// Each SI dictionary: its own rows, then the shared rows that no own row replaces.
-template <std::size_t O>
-constexpr bool replaced(const object_row (&own)[O], const object_row& c) noexcept {
-    for (const auto& o : own)
-        if (o.id == c.id) return true;
-    return false;
-}
-template <std::size_t O, std::size_t C>
-constexpr std::size_t si_join_size(const object_row (&own)[O],
-                                   const object_row (&common)[C]) noexcept {
-    std::size_t n = O;
-    for (const auto& c : common)
-        if (!replaced(own, c)) ++n;
-    return n;
-}
-template <std::size_t N, std::size_t O, std::size_t C>
-constexpr std::array<object_row, N> si_join(const object_row (&own)[O],
-                                            const object_row (&common)[C]) noexcept {
-    std::array<object_row, N> rows{};
-    std::size_t n = 0;
-    for (const auto& o : own) rows[n++] = o;
-    for (const auto& c : common)
-        if (!replaced(own, c)) rows[n++] = c;
-    return rows;
-}
 inline constexpr auto si_packed_rows =
-    si_join<si_join_size(si_packed_own_rows, si_common_rows)>(si_packed_own_rows, si_common_rows);
+    join_rows<joined_size(si_packed_own_rows, si_common_rows)>(si_packed_own_rows, si_common_rows);
 inline constexpr auto si_mt_rows =
-    si_join<si_join_size(si_mt_own_rows, si_common_rows)>(si_mt_own_rows, si_common_rows);
+    join_rows<joined_size(si_mt_own_rows, si_common_rows)>(si_mt_own_rows, si_common_rows);
 inline constexpr auto si_per_colour_rows =
-    si_join<si_join_size(si_per_colour_own_rows, si_common_rows)>(si_per_colour_own_rows,
-                                                                  si_common_rows);
+    join_rows<joined_size(si_per_colour_own_rows, si_common_rows)>(si_per_colour_own_rows,
+                                                                   si_common_rows);
 }  // namespace detail
 
-// The rows of a dictionary: manual order for the PK1000 and the PKP; for the SI dictionaries each
-// one's own rows, then the rows they share.
+// The rows of a dictionary: manual order for the PKP; for the PK1000 and the SI dictionaries each
+// one's own rows, then the rows it shares (join_rows).
 [[nodiscard]] constexpr std::span<const object_row> rows_of(dictionary d) noexcept {
     switch (d) {
         case dictionary::pkp_li: return detail::pkp_li_rows;
