@@ -85,12 +85,25 @@ static_assert(classify(can::candump("00000615#00")) == cob_info{function::j1939,
 static_assert(classify(can::candump("615#00")) == cob_info{function::sdo_rx, 0x15});
 
 // Which frames concern a keypad: NMT, SYNC and J1939 every node, the per-node ids only their own.
-static_assert(concerns({function::nmt, 0}, keypad));
-static_assert(concerns({function::sync, 0}, keypad));
-static_assert(concerns({function::j1939, 0}, keypad));
-static_assert(concerns({function::sdo_rx, 0x15}, keypad));
-static_assert(!concerns({function::sdo_rx, 0x16}, keypad));
-static_assert(!concerns({function::other, 0}, keypad));
+struct concerns_row {
+    std::string_view section;
+    std::string_view frame;
+    bool expected;
+};
+constexpr concerns_row concerns_rows[] = {
+    {"NMT", "000#0115", true},
+    {"SYNC", "080#", true},
+    {"J1939", "18EF2100#041B8000FFFFFFFF", true},
+    {"SDO request, this node", "615#4000100000000000", true},
+    {"SDO request, node 16h", "616#4000100000000000", false},
+    {"heartbeat, this node", "715#05", true},
+    {"no predefined function", "7E5#00", false},
+};
+constexpr bool concerns_right(const concerns_row& r) {
+    return concerns(classify(powerkey_tests::frame_of(r.frame)), keypad) == r.expected;
+}
+static_assert(first_failing(concerns_rows, concerns_right) == std::size(concerns_rows));
+TEST_CASE("which frames concern a keypad") { check_rows(concerns_rows, concerns_right); }
 
 // --- NMT ---------------------------------------------------------------------------------------
 struct nmt_row {
@@ -311,6 +324,29 @@ void check_refused(const bad_row (&rows)[N], Decode decode) {
 }  // namespace
 
 TEST_CASE("COB-IDs both ways") { check_rows(cob_rows, classifies); }
+
+// The value of an expedited transfer: its counted bytes, least significant first (CiA 301); the
+// bytes past the size do not count. PK1000 29: 2B 17 10 00 | F4 01 00 00 is 500 ms.
+struct expedited_row {
+    std::string_view section;
+    std::string_view frame;
+    std::uint32_t expected;
+};
+constexpr expedited_row expedited_rows[] = {
+    {"PK1000 29: heartbeat 500 ms (2 bytes)", "615#2B171000F4010000", 500},
+    {"PK1000 36: 'load' (4 bytes)", "615#231110016C6F6164", 0x64616F6C},
+    {"PKP 30: brightness 10h (1 byte)", "615#2F01620110000000", 0x10},
+    {"CiA 301: 3 bytes, the fourth not counted", "615#27002001010203FF", 0x030201},
+};
+constexpr bool expedited_value_right(const expedited_row& r) {
+    const auto m = decode_sdo_request(powerkey_tests::frame_of(r.frame), keypad);
+    const auto* d = m ? std::get_if<sdo_download_request>(&*m) : nullptr;
+    return d != nullptr && d->value.value() == r.expected;
+}
+static_assert(first_failing(expedited_rows, expedited_value_right) == std::size(expedited_rows));
+TEST_CASE("expedited_data::value counts the sized bytes, least significant first") {
+    check_rows(expedited_rows, expedited_value_right);
+}
 
 TEST_CASE("NMT rows both ways") {
     check_rows(nmt_rows, nmt_both_ways);
