@@ -153,39 +153,48 @@ void emit(std::string& line) {
     ++lines;
 }
 
+// Calls f(row, model) for every row and every model the row applies to.
+template <class Rows, class F>
+void each_row_and_model(const Rows& rows, F f) {
+    for (const auto& r : rows)
+        for (std::size_t i = 0; i < model_count; ++i)
+            if (applies(r.models, static_cast<model>(i))) f(r, static_cast<model>(i));
+}
+
+// The encoded frame's data as hex, or the encode error.
+void put_encoded(tool::json::object_writer& w, std::string& out, const result<can::frame>& e) {
+    if (e) {
+        w.key("encoded");
+        out += '"';
+        tool::append_hex_bytes(out, e->data().data(), e->data().size());
+        out += '"';
+    } else {
+        w.field("encode_error", to_string(e.error()));
+    }
+}
+
 template <class Rows>
 void frame_rows(std::string_view table, const Rows& rows) {
-    for (const auto& r : rows)
-        for (std::size_t i = 0; i < model_count; ++i) {
-            const auto m = static_cast<model>(i);
-            if (!applies(r.models, m)) continue;
-            std::string out;
-            tool::json::object_writer w(out);
-            const auto node = canopen::node_id::make(r.node).value();
-            if (!put_head(w, out, table, r.section, m, r.node, r.frame)) {
-                std::fprintf(stderr, "%.*s: unreadable frame\n", static_cast<int>(r.section.size()),
-                             r.section.data());
-                std::exit(1);
-            }
-            const auto d = decode(*can::parse_candump(r.frame), node, m);
-            if (d) {
-                put_fields(w, out, *d);
-                put_accessors(w, out, *d, m);
-                const auto e = encode(node, m, *d);
-                if (e) {
-                    w.key("encoded");
-                    out += '"';
-                    tool::append_hex_bytes(out, e->data().data(), e->data().size());
-                    out += '"';
-                } else {
-                    w.field("encode_error", to_string(e.error()));
-                }
-            } else {
-                w.field("error", to_string(d.error()));
-            }
-            w.close();
-            emit(out);
+    each_row_and_model(rows, [table](const auto& r, model m) {
+        std::string out;
+        tool::json::object_writer w(out);
+        const auto node = canopen::node_id::make(r.node).value();
+        if (!put_head(w, out, table, r.section, m, r.node, r.frame)) {
+            std::fprintf(stderr, "%.*s: unreadable frame\n", static_cast<int>(r.section.size()),
+                         r.section.data());
+            std::exit(1);
         }
+        const auto d = decode(*can::parse_candump(r.frame), node, m);
+        if (d) {
+            put_fields(w, out, *d);
+            put_accessors(w, out, *d, m);
+            put_encoded(w, out, encode(node, m, *d));
+        } else {
+            w.field("error", to_string(d.error()));
+        }
+        w.close();
+        emit(out);
+    });
 }
 
 // The message `kind` with the fields of a JSON object, read by the tool's reader (the way
@@ -211,31 +220,20 @@ message from_fields(std::string_view kind, const nlohmann::json& fields) {
 // describe, which is what powerkey.encode(kind, **fields) must give.
 template <class Rows>
 void encode_error_rows(std::string_view table, const Rows& rows) {
-    for (const auto& r : rows)
-        for (std::size_t i = 0; i < model_count; ++i) {
-            const auto m = static_cast<model>(i);
-            if (!applies(r.models, m)) continue;
-            std::string out;
-            tool::json::object_writer w(out);
-            (void)put_head(w, out, table, r.section, m, r.node, "");
-            const auto start = out.size();
-            put_fields(w, out, r.msg);
-            const auto fields_at = out.find("\"fields\":", start) + 9;
-            const auto fields = nlohmann::json::parse(out.substr(fields_at));
-            const auto rebuilt = from_fields(kind_of(r.msg), fields);
-            w.field_bool("same_message", rebuilt == r.msg);
-            const auto e = encode(canopen::node_id::make(r.node).value(), m, rebuilt);
-            if (e) {
-                w.key("encoded");
-                out += '"';
-                tool::append_hex_bytes(out, e->data().data(), e->data().size());
-                out += '"';
-            } else {
-                w.field("encode_error", to_string(e.error()));
-            }
-            w.close();
-            emit(out);
-        }
+    each_row_and_model(rows, [table](const auto& r, model m) {
+        std::string out;
+        tool::json::object_writer w(out);
+        (void)put_head(w, out, table, r.section, m, r.node, "");
+        const auto start = out.size();
+        put_fields(w, out, r.msg);
+        const auto fields_at = out.find("\"fields\":", start) + 9;
+        const auto fields = nlohmann::json::parse(out.substr(fields_at));
+        const auto rebuilt = from_fields(kind_of(r.msg), fields);
+        w.field_bool("same_message", rebuilt == r.msg);
+        put_encoded(w, out, encode(canopen::node_id::make(r.node).value(), m, rebuilt));
+        w.close();
+        emit(out);
+    });
 }
 
 }  // namespace
