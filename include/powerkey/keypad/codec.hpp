@@ -147,7 +147,10 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m,
                                                             std::uint8_t size, std::uint32_t data,
                                                             bool write) noexcept {
     if (size != row_size(m, r, size)) return errc::size_mismatch;
-    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
+    // The largest value of each size (a table: no 64-bit shift by a variable on a 32-bit core).
+    constexpr std::uint32_t largest[8] = {0,           0xFF,        0xFFFF,      0xFF'FFFF,
+                                          0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF};
+    if (data > largest[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
     switch (r.kind) {
         case value_kind::number:
         case value_kind::flag:
@@ -382,6 +385,14 @@ constexpr canopen::sdo_abort abort(std::uint64_t w) noexcept {
 }
 }  // namespace sdo_wire
 
+// The command module is writable wherever it is: decode_request tests its kind before the access.
+constexpr bool commands_writable() noexcept {
+    for (const codec_row& r : codec_rows)
+        if (r.kind == value_kind::commands && !r.writable()) return false;
+    return true;
+}
+static_assert(commands_writable());
+
 // The requests decode_request does not take first: segment requests, aborts and the refusals.
 POWERKEY_DETAIL_COLD constexpr result<message> other_request(std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
@@ -409,9 +420,9 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
         const codec_row& r = codec_rows[i - 1u];
-        if (!r.writable()) return errc::unknown_command;
-        if (r.kind == value_kind::commands)
+        if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
             return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
+        if (!r.writable()) return errc::unknown_command;
         return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
     }
     if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
