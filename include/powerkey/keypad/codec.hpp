@@ -90,6 +90,11 @@ inline constexpr auto object_led_bits = [] {
     return t;
 }();
 
+// The largest value of each expedited size (a table: no 64-bit shift by a variable on a 32-bit
+// core).
+inline constexpr std::uint32_t largest_of_size[8] = {
+    0, 0xFF, 0xFFFF, 0xFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF};
+
 // The sdo_write (`write`) or sdo_read_reply of row r with value v. One function for both (not a
 // template): under -Os the value decoder is one copy; inlined, `write` is a constant.
 POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
@@ -137,20 +142,17 @@ POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_info& m, c
     return errc::unknown_object;
 }
 
-// The sdo_read_reply or sdo_write (T) of row r's value in the `size` (1..4) little-endian bytes
-// of `data`; `write` for a download (a restore must carry "load"). Errors: size_mismatch (not the
-// row's size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved
-// bits of a COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's
-// range), unknown_object (an object without a value). One switch on the row's kind, each case
-// returning its message: nothing is staged and copied.
+// The sdo_write (`write`: a download; a restore must carry "load") or sdo_read_reply of row r's
+// value in the `size` (1..4) little-endian bytes of `data`. Errors: size_mismatch (not the row's
+// size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved bits of a
+// COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
+// unknown_object (an object without a value). One switch on the row's kind (the rare kinds in
+// rare_value), each case returning its message: nothing is staged and copied.
 POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m, const codec_row& r,
                                                             std::uint8_t size, std::uint32_t data,
                                                             bool write) noexcept {
     if (size != row_size(m, r, size)) return errc::size_mismatch;
-    // The largest value of each size (a table: no 64-bit shift by a variable on a 32-bit core).
-    constexpr std::uint32_t largest[8] = {0,           0xFF,        0xFFFF,      0xFF'FFFF,
-                                          0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF};
-    if (data > largest[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
+    if (data > largest_of_size[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
     switch (r.kind) {
         case value_kind::number:
         case value_kind::flag:
@@ -476,19 +478,19 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = load_le<8>(f.bytes(), 0);
     const std::uint8_t c = sdo_wire::specifier(w);
-    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
-        if (!r.readable()) return errc::unknown_command;
-        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
-    }
     if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
         const codec_row& r = codec_rows[i - 1u];
         if (!r.writable()) return errc::unknown_command;
         return answer(sdo_write_reply{r.id});
+    }
+    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
     }
     return other_response(m, w);
 }
