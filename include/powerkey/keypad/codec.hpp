@@ -32,6 +32,17 @@
 #include <cstdint>
 #include <variant>
 
+// When optimising for speed, the decoders' cold paths out of line and their common ones inlined:
+// the common paths then need no registers saved (docs/performance.md). Under -Os (the firmware)
+// one copy of each, shared, is smaller.
+#if defined(__OPTIMIZE_SIZE__)
+#define POWERKEY_DETAIL_COLD
+#define POWERKEY_DETAIL_HOT
+#else
+#define POWERKEY_DETAIL_COLD [[gnu::noinline]]
+#define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
+#endif
+
 namespace powerkey {
 
 namespace detail {
@@ -68,52 +79,42 @@ constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
 
-// The sdo_read_reply or sdo_write (T) of row r's value in the `size` (1..4) little-endian bytes
-// of `data`; `write` for a download (a restore must carry "load"). Errors: size_mismatch (not the
-// row's size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved
-// bits of a COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's
-// range), unknown_object (an object without a value). One switch on the row's kind, each case
-// returning its message: nothing is staged and copied.
-template <class T>
-constexpr result<message> value_message(const model_info& m, const codec_row& r, std::uint8_t size,
-                                        std::uint32_t data, bool write) noexcept {
-    if (size != row_size(m, r, size)) return errc::size_mismatch;
-    if ((std::uint64_t{data} >> (8 * size)) != 0) return errc::reserved_not_zero;
-    const auto number = [&r, data]() -> result<message> { return message{T{r.id, {data, {}, 0}}}; };
-    const auto map = [&r](const leds& l) -> result<message> { return message{T{r.id, {0, l, 0}}}; };
+// The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name an LED, per model: those of
+// the planes object_planes() keeps (no division on the decoder's path).
+inline constexpr auto object_led_bits = [] {
+    std::array<std::uint32_t, std::size(model_table)> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const model_info& m = model_table[i];
+        t[i] = static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride));
+    }
+    return t;
+}();
+
+// The largest value of each expedited size (a table: no 64-bit shift by a variable on a 32-bit
+// core).
+inline constexpr std::uint32_t largest_of_size[8] = {
+    0, 0xFF, 0xFFFF, 0xFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF};
+
+// The sdo_write (`write`) or sdo_read_reply of row r with value v. One function for both (not a
+// template): under -Os the value decoder is one copy; inlined, `write` is a constant.
+POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
+                                                           const object_value& v,
+                                                           bool write) noexcept {
+    if (write) return answer(sdo_write{r.id, v});
+    return answer(sdo_read_reply{r.id, v});
+}
+
+// value_message's kinds that decoders meet rarely: out of line, so that the common ones need no
+// frame (no registers to save) in decode_request and decode_response.
+POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_info& m, const codec_row& r,
+                                                          std::uint8_t size, std::uint32_t data,
+                                                          bool write) noexcept {
+    const auto number = [&r, data, write] { return value_answer(r, {data, {}, 0}, write); };
     switch (r.kind) {
-        case value_kind::number:
-        case value_kind::flag:
-        case value_kind::brightness:
-        case value_kind::colour:
-        case value_kind::baud:
-        case value_kind::show:
-        case value_kind::node:
-            if (!value_ranges[r.a].contains(data)) return errc::value_out_of_range;
-            return number();
-        case value_kind::period:
-            if (data != 0 && !value_ranges[r.a].contains(data)) return errc::value_out_of_range;
-            return number();
-        case value_kind::keys: {
-            const auto keys = unpack_keys(m, data);
-            if (!keys) return keys.error();
-            return number();
-        }
-        case value_kind::led_plane: {
-            if ((data & ~m.led_mask) != 0) return errc::reserved_not_zero;
-            leds l{};
-            l.of(static_cast<plane>(r.a)) = led_set::from_mask(data);
-            return map(l);
-        }
         case value_kind::led_part: {
             const auto l = unpack_part(m, data, r);
             if (!l) return l.error();
-            return map(*l);
-        }
-        case value_kind::led_map: {
-            const auto l = unpack_leds(m, data, m.object_planes());
-            if (!l) return l.error();
-            return map(*l);
+            return value_answer(r, {0, *l, 0}, write);
         }
         case value_kind::ring:
         case value_kind::direction_counter:
@@ -132,14 +133,62 @@ constexpr result<message> value_message(const model_info& m, const codec_row& r,
         case value_kind::device_type:
             if ((data >> 20) != 0) return errc::reserved_not_zero;
             return number();
-        case value_kind::string: return message{T{r.id, {data, {}, size}}};
+        case value_kind::string: return value_answer(r, {data, {}, size}, write);
         case value_kind::restore:
             if (write && data != load_signature) return errc::value_out_of_range;
             return number();
-        case value_kind::none:
-        case value_kind::commands: break;
+        default: break;  // none, commands: no value
     }
     return errc::unknown_object;
+}
+
+// The sdo_write (`write`: a download; a restore must carry "load") or sdo_read_reply of row r's
+// value in the `size` (1..4) little-endian bytes of `data`. Errors: size_mismatch (not the row's
+// size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved bits of a
+// COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
+// unknown_object (an object without a value). One switch on the row's kind (the rare kinds in
+// rare_value), each case returning its message: nothing is staged and copied.
+POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m, const codec_row& r,
+                                                            std::uint8_t size, std::uint32_t data,
+                                                            bool write) noexcept {
+    if (size != row_size(m, r, size)) return errc::size_mismatch;
+    if (data > largest_of_size[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
+    switch (r.kind) {
+        case value_kind::number:
+        case value_kind::flag:
+        case value_kind::brightness:
+        case value_kind::colour:
+        case value_kind::baud:
+        case value_kind::show:
+        case value_kind::node:
+            if (!value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return value_answer(r, {data, {}, 0}, write);
+        case value_kind::period:
+            if (data != 0 && !value_ranges[r.a].contains(data)) return errc::value_out_of_range;
+            return value_answer(r, {data, {}, 0}, write);
+        case value_kind::keys: {
+            const auto keys = unpack_keys(m, data);
+            if (!keys) return keys.error();
+            return value_answer(r, {data, {}, 0}, write);
+        }
+        case value_kind::led_plane: {  // the one plane r.a (no leds::of: its address is taken)
+            if ((data & ~m.led_mask) != 0) return errc::reserved_not_zero;
+            const auto in = [data, &r](plane p) {
+                return led_set::from_mask(static_cast<plane>(r.a) == p ? data : 0);
+            };
+            return value_answer(r, {0, {in(plane::red), in(plane::green), in(plane::blue)}, 0},
+                                write);
+        }
+        case value_kind::led_map: {  // unpack_leds(m, data, m.object_planes()), as decode_pdo
+            if ((data & ~object_led_bits[static_cast<std::size_t>(m.id)]) != 0)
+                return errc::reserved_not_zero;
+            const std::uint64_t up = std::uint64_t{data} >> m.stride;
+            const leds l{led_set::from_mask(data & m.led_mask), led_set::from_mask(up & m.led_mask),
+                         led_set::from_mask((up >> m.stride) & m.led_mask)};
+            return value_answer(r, {0, l, 0}, write);
+        }
+        default: return rare_value(m, r, size, data, write);
+    }
 }
 
 // The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
@@ -224,32 +273,86 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
     return 0;
 }
 
-// The command of `row` with parameter bytes b1 and b2, built where it is returned (NRVO).
-constexpr result<message> command_message(const model_info& m, const command_row& row,
-                                          std::uint8_t b1, std::uint8_t b2) noexcept {
-    result<message> out{message{command{}}};
-    command& c = *std::get_if<command>(&*out);
-    c.code = row.code;
-    errc e = read_param(m, row.p1, b1, c);
-    if (e == errc{} && row.p2 != command_param::none) e = read_param(m, row.p2, b2, c);
-    if (e != errc{}) out = e;
-    return out;
+// The pairs of parameters (p1, p2) the rows of command_table have, each once, and the pair of
+// each row: the decoder has one body per pair, not per command.
+struct command_shape {
+    command_param p1;
+    command_param p2;
+    friend constexpr bool operator==(const command_shape&, const command_shape&) = default;
+};
+inline constexpr std::size_t command_shape_count = [] {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < std::size(command_table); ++i) {
+        bool seen = false;
+        for (std::size_t j = 0; j < i; ++j)
+            seen = seen || (command_table[j].p1 == command_table[i].p1 &&
+                            command_table[j].p2 == command_table[i].p2);
+        n += seen ? 0 : 1;
+    }
+    return n;
+}();
+inline constexpr auto command_shapes = [] {
+    std::array<command_shape, command_shape_count> t{};
+    std::size_t n = 0;
+    for (const command_row& r : command_table) {
+        const command_shape s{r.p1, r.p2};
+        bool seen = false;
+        for (std::size_t j = 0; j < n; ++j) seen = seen || t[j] == s;
+        if (!seen) t[n++] = s;
+    }
+    return t;
+}();
+// The pair + 1 of each command byte, 0 for none (as command_index, one load less and no bound).
+inline constexpr auto command_shape_index = [] {
+    std::array<std::uint8_t, 0x100> t{};
+    for (const command_row& r : command_table)
+        for (std::size_t j = 0; j < command_shapes.size(); ++j)
+            if (command_shapes[j] == command_shape{r.p1, r.p2})
+                t[static_cast<std::size_t>(r.code)] = static_cast<std::uint8_t>(j + 1);
+    return t;
+}();
+
+// The command `code` of parameter pair S in data bytes 4..7 (code, p1, p2, 00h). The pair is a
+// constant, so each read_param folds to its own check and store, and the command is built in
+// registers and written once into the caller's result. Errors after unknown_command, in this
+// order: reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h),
+// value_out_of_range (a parameter outside its range).
+template <std::size_t S>
+constexpr result<message> command_of(const model_info& m, command_code code,
+                                     std::uint32_t data) noexcept {
+    constexpr command_shape shape = command_shapes[S];
+    const auto b1 = static_cast<std::uint8_t>(data >> 8);
+    const auto b2 = static_cast<std::uint8_t>(data >> 16);
+    if ((data >> 24) != 0 || (shape.p2 == command_param::none && b2 != 0))
+        return errc::reserved_not_zero;
+    command c{};
+    c.code = code;
+    if (const errc e = read_param(m, shape.p1, b1, c); e != errc{}) return e;
+    if (const errc e = read_param(m, shape.p2, b2, c); e != errc{}) return e;
+    return answer(c);
 }
 
 // The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
-// reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h), value_out_of_range
-// (a parameter outside its range).
-constexpr result<message> read_command(const model_info& m, std::uint8_t size,
-                                       std::uint32_t data) noexcept {
+// then command_of's. One jump on the command's parameter pair.
+[[gnu::always_inline]] constexpr result<message> read_command(const model_info& m,
+                                                              std::uint8_t size,
+                                                              std::uint32_t data) noexcept {
+    static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
     if (size != 4) return errc::size_mismatch;
-    const auto byte = [data](unsigned i) { return static_cast<std::uint8_t>(data >> (8 * i)); };
-    const std::uint8_t i = byte(0) < command_index.size() ? command_index[byte(0)] : 0;
-    if (i == 0) return errc::unknown_command;
-    const command_row& row = command_table[i - 1u];
-    if (byte(3) != 0 || (row.p2 == command_param::none && byte(2) != 0))
-        return errc::reserved_not_zero;
-    return command_message(m, row, byte(1), byte(2));
+    const auto byte = static_cast<std::uint8_t>(data);
+    const auto code = static_cast<command_code>(byte);  // a command's byte is its code
+    switch (command_shape_index[byte]) {
+        case 1: return command_of<0>(m, code, data);
+        case 2: return command_of<1>(m, code, data);
+        case 3: return command_of<2>(m, code, data);
+        case 4: return command_of<3>(m, code, data);
+        case 5: return command_of<4>(m, code, data);
+        case 6: return command_of<5>(m, code, data);
+        case 7: return command_of<6>(m, code, data);
+        case 8: return command_of<7>(m, code, data);
+        default: return errc::unknown_command;
+    }
 }
 
 constexpr canopen::expedited_data write_command(const command& c) noexcept {
@@ -284,8 +387,16 @@ constexpr canopen::sdo_abort abort(std::uint64_t w) noexcept {
 }
 }  // namespace sdo_wire
 
+// The command module is writable wherever it is: decode_request tests its kind before the access.
+constexpr bool commands_writable() noexcept {
+    for (const codec_row& r : codec_rows)
+        if (r.kind == value_kind::commands && !r.writable()) return false;
+    return true;
+}
+static_assert(commands_writable());
+
 // The requests decode_request does not take first: segment requests, aborts and the refusals.
-constexpr result<message> other_request(std::uint64_t w) noexcept {
+POWERKEY_DETAIL_COLD constexpr result<message> other_request(std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
     switch (c >> 5) {
         case 1: return errc::unknown_command;    // download: only expedited with size (e = s = 1)
@@ -311,24 +422,25 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
         const codec_row& r = codec_rows[i - 1u];
-        if (!r.writable()) return errc::unknown_command;
-        if (r.kind == value_kind::commands)
+        if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
             return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
-        return value_message<sdo_write>(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
+        if (!r.writable()) return errc::unknown_command;
+        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
     }
     if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
         const codec_row& r = codec_rows[i - 1u];
         if (!r.readable()) return errc::unknown_command;
-        return message{sdo_read{r.id}};
+        return answer(sdo_read{r.id});
     }
     return other_request(w);
 }
 
 // The responses decode_response does not take first: segments, segmented-upload initiations,
 // aborts and the refusals.
-constexpr result<message> other_response(const model_info& m, std::uint64_t w) noexcept {
+POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_info& m,
+                                                              std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
     switch (c >> 5) {
         case 0: {  // upload segment
@@ -366,19 +478,19 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = load_le<8>(f.bytes(), 0);
     const std::uint8_t c = sdo_wire::specifier(w);
-    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
-        if (!r.readable()) return errc::unknown_command;
-        return value_message<sdo_read_reply>(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
-    }
     if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
         const codec_row& r = codec_rows[i - 1u];
         if (!r.writable()) return errc::unknown_command;
-        return message{sdo_write_reply{r.id}};
+        return answer(sdo_write_reply{r.id});
+    }
+    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
+        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+        if (i == 0) return errc::unknown_object;
+        const codec_row& r = codec_rows[i - 1u];
+        if (!r.readable()) return errc::unknown_command;
+        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
     }
     return other_response(m, w);
 }
