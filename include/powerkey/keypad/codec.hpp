@@ -81,6 +81,9 @@ constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
 
 // The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name an LED, per model: those of
 // the planes object_planes() keeps (no division on the decoder's path).
+constexpr std::uint64_t low_bits(unsigned n) noexcept {
+    return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+}
 inline constexpr auto object_led_bits = [] {
     std::array<std::uint32_t, std::size(model_table)> t{};
     for (std::size_t i = 0; i < t.size(); ++i) {
