@@ -237,6 +237,7 @@ inline constexpr error_row core_error_rows[] = {
     {"NMT command 03h", all, 0x15, "000#0315", errc::unknown_command},
     {"NMT node 80h", all, 0x15, "000#0180", errc::value_out_of_range},
     {"SYNC with data", all, 0x15, "080#00", errc::wrong_length},
+    {"the node id itself as a COB-ID (function code 0)", all, 0x15, "015#00", errc::wrong_id},
     {"heartbeat state 01h", all, 0x15, "715#01", errc::value_out_of_range},
     {"heartbeat of 2 bytes", all, 0x15, "715#0000", errc::wrong_length},
     {"SDO of 4 bytes", all, 0x15, "615#40081000", errc::wrong_length},
