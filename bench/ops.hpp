@@ -39,6 +39,12 @@ struct op {
     std::string_view per_call = "frame";
 };
 
+// Marks an operation's lambda: its library call is inlined into the loop of `cycle`, as the floor
+// reads its frame inline, whichever other operations share the lambda's type (the decode_all<N>
+// of two operations with N inputs each share one closure, which g++ otherwise calls out of line:
+// +13..16 instructions per call on those rows only, docs/performance.md).
+#define BENCH_INLINE __attribute__((always_inline))
+
 // Runs fn on inputs[0], inputs[1], ... (wrapping) `calls` times, keeping every result.
 template <class In, std::size_t N, class Fn>
 [[gnu::always_inline]] inline void cycle(const std::array<In, N>& inputs, std::size_t calls,

@@ -200,15 +200,17 @@ template <std::size_t N>
                                               std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(pk1000);
-    cycle(frames, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+    cycle(frames, calls,
+          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
 }
 template <std::size_t N>
 [[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
                                               std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(pk1000);
-    cycle(messages, calls,
-          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+    cycle(messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
+        return powerkey::encode(n, m, msg);
+    });
 }
 }  // namespace pk_detail
 

@@ -189,15 +189,17 @@ template <std::size_t N>
                                               std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(pkp_model);
-    cycle(frames, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+    cycle(frames, calls,
+          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
 }
 template <std::size_t N>
 [[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
                                               std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(pkp_model);
-    cycle(messages, calls,
-          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+    cycle(messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
+        return powerkey::encode(n, m, msg);
+    });
 }
 }  // namespace pkp_detail
 
@@ -236,13 +238,15 @@ inline void pkp_sdo_encode(std::size_t calls) { pkp_detail::encode_all(pkp_sdo_m
 inline void any_decode_mixed_log(std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(powerkey::model::pkp2400);
-    cycle(mixed_log, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+    cycle(mixed_log, calls,
+          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
 }
 inline void any_encode_mixed_log(std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(powerkey::model::pkp2400);
-    cycle(mixed_log_messages, calls,
-          [n, m](const powerkey::message& msg) { return powerkey::encode(n, m, msg); });
+    cycle(mixed_log_messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
+        return powerkey::encode(n, m, msg);
+    });
 }
 
 inline constexpr op pkp_ops[] = {

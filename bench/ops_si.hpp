@@ -97,7 +97,8 @@ static_assert(mt_mixed_log_keypad_frames == mt_mixed_log.size() - 7);
 inline void any_decode_mt_mixed_log(std::size_t calls) {
     const auto n = opaque(node);
     const auto m = opaque(mt_model);
-    cycle(mt_mixed_log, calls, [n, m](const pc::frame& f) { return powerkey::decode(f, n, m); });
+    cycle(mt_mixed_log, calls,
+          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
 }
 
 inline constexpr op si_ops[] = {

@@ -76,11 +76,12 @@ TEST_CASE("the codec's rows and ranges, built again at run time, are the compile
     CHECK(detail::part_widths_fit());
 
     const auto rows = detail::collect_codec_rows();
-    REQUIRE(rows.size == detail::codec_rows.size());
+    REQUIRE(rows.size + 1 == detail::codec_rows.size());
+    CHECK(detail::codec_rows[0].key == detail::no_codec_row.key);
     for (std::size_t i = 0; i < rows.size; ++i) {
         CAPTURE(i);
         CHECK(rows.items[i] == detail::all_codec_rows.items[i]);
-        CHECK(detail::codec_rows[i].key == (rows.items[i] & 0xFF'FFFF));
+        CHECK(detail::codec_rows[i + 1].key == (rows.items[i] & 0xFF'FFFF));
     }
     // Every full row of every dictionary has its codec row: same address, object, size, access.
     for (const auto d : enum_values<dictionary>())
@@ -120,4 +121,23 @@ TEST_CASE("enum_values counts each named value once, aliases not") {
           std::size(enum_names<backlight_colour>::entries));
     CHECK(detail::distinct_values<model>() == model_count);
     CHECK(detail::distinct_values<dictionary>() == 5);
+}
+
+TEST_CASE("the address lookup: slot 0 is the sentinel no key matches; a key is its low 24 bits") {
+    CHECK(detail::codec_rows[0].key == 0xFFFF'FFFFu);
+    CHECK(detail::codec_rows[0].flags == 0);
+    for (const auto d : enum_values<dictionary>()) {
+        CAPTURE(to_string(d));
+        // FFFFh sub FFh is no object of any manual: its key is the sentinel's low 24 bits.
+        CHECK(detail::find_codec_row(d, opaque(0x00FF'FFFFu)) == 0);
+        CHECK(detail::find_codec_row(d, opaque(0xFFFF'FFFFu)) == 0);
+        for (const auto& r : rows_of(d)) {
+            CAPTURE(to_string(r.id));
+            const auto key = detail::wire_key(r.address);
+            const auto i = detail::find_codec_row(d, opaque(key));
+            REQUIRE(i != 0);
+            CHECK(detail::codec_rows[i].id == r.id);
+            CHECK(detail::find_codec_row(d, opaque(key | 0xAB00'0000u)) == i);
+        }
+    }
 }

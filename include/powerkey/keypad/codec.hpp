@@ -79,16 +79,17 @@ constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
 
-// The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name an LED, per model: those of
-// the planes object_planes() keeps (no division on the decoder's path).
+// The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name no LED, per model: all but
+// those of the planes object_planes() keeps (no division on the decoder's path; the complement, so
+// that the test is one AND).
 constexpr std::uint64_t low_bits(unsigned n) noexcept {
     return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
 }
-inline constexpr auto object_led_bits = [] {
+inline constexpr auto object_not_leds = [] {
     std::array<std::uint32_t, std::size(model_table)> t{};
     for (std::size_t i = 0; i < t.size(); ++i) {
         const model_info& m = model_table[i];
-        t[i] = static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride));
+        t[i] = ~static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride));
     }
     return t;
 }();
@@ -183,7 +184,7 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m,
                                 write);
         }
         case value_kind::led_map: {  // unpack_leds(m, data, m.object_planes()), as decode_pdo
-            if ((data & ~object_led_bits[static_cast<std::size_t>(m.id)]) != 0)
+            if ((data & object_not_leds[static_cast<std::size_t>(m.id)]) != 0)
                 return errc::reserved_not_zero;
             const std::uint64_t up = std::uint64_t{data} >> m.stride;
             const leds l{led_set::from_mask(data & m.led_mask), led_set::from_mask(up & m.led_mask),
@@ -424,7 +425,7 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
     if ((c & 0xF3) == 0x23) {  // initiate download, expedited with size: 23h, 27h, 2Bh, 2Fh
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
+        const codec_row& r = codec_rows[i];
         if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
             return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
         if (!r.writable()) return errc::unknown_command;
@@ -433,7 +434,7 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
     if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
+        const codec_row& r = codec_rows[i];
         if (!r.readable()) return errc::unknown_command;
         return answer(sdo_read{r.id});
     }
@@ -460,7 +461,7 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_info& 
             if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
             const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
             if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i - 1u];
+            const codec_row& r = codec_rows[i];
             if (r.kind != value_kind::string) return errc::unknown_object;
             return message{canopen::sdo_upload_initiate_response{r.address(), (c & 0x01) != 0,
                                                                  sdo_wire::data(w)}};
@@ -484,14 +485,14 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
     if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
+        const codec_row& r = codec_rows[i];
         if (!r.writable()) return errc::unknown_command;
         return answer(sdo_write_reply{r.id});
     }
     if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
         const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
         if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i - 1u];
+        const codec_row& r = codec_rows[i];
         if (!r.readable()) return errc::unknown_command;
         return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
     }
@@ -637,7 +638,7 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
                                  std::is_same_v<T, sdo_write_reply>) {
                 const std::uint8_t i = find_codec_row(m.dictionary, v.object);
                 if (i == 0) return errc::unknown_object;
-                const codec_row& row = codec_rows[i - 1u];
+                const codec_row& row = codec_rows[i];
                 if constexpr (std::is_same_v<T, sdo_read>) {
                     return canopen::encode(node, canopen::sdo_upload_request{row.address()});
                 } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
@@ -654,8 +655,8 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
             } else if constexpr (std::is_same_v<T, command>) {
                 const std::uint8_t i = find_codec_row(m.dictionary, object::command_module);
                 if (i == 0) return errc::unknown_object;
-                return canopen::encode(node, canopen::sdo_download_request{
-                                                 codec_rows[i - 1u].address(), write_command(v)});
+                return canopen::encode(
+                    node, canopen::sdo_download_request{codec_rows[i].address(), write_command(v)});
             } else {
                 return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
             }
