@@ -6,12 +6,15 @@
 // run time, sees these builders run (docs/quality.md).
 #include <doctest/doctest.h>
 
+#include <powerkey/behaviour/virtual_keypad.hpp>
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/names.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 namespace {
 using namespace powerkey;
@@ -101,9 +104,10 @@ TEST_CASE("the hash multiplier and the object -> row arrays, found again at run 
         CAPTURE(to_string(d));
         CHECK(detail::max_probes(rows_of(d), opaque(detail::hash_multiplier)) <= 2);
     }
-    // Not const: a const local with a constant initializer is evaluated by the compiler.
-    auto codec = detail::by_object<false>();
-    auto full = detail::by_object<true>();
+    // Called through opaque pointers: clang evaluates `auto x = f();` itself when f() is a
+    // constant, even for a local that is not const.
+    auto codec = opaque(&detail::by_object<false>)();
+    auto full = opaque(&detail::by_object<true>)();
     CHECK(codec == detail::codec_rows_by_object);
     CHECK(full == detail::full_rows_by_object);
     CHECK(detail::kinds_in_enum_order());
@@ -140,4 +144,26 @@ TEST_CASE("the address lookup: slot 0 is the sentinel no key matches; a key is i
             CHECK(detail::find_codec_row(d, opaque(key | 0xAB00'0000u)) == i);
         }
     }
+}
+
+TEST_CASE("the codec's compile-time checks and the LED-map bits, again at run time") {
+    CHECK(opaque(&detail::commands_writable)());
+    // The bits an LED-map object may carry: each model's LED bits of the planes the object keeps.
+    const auto low_bits = opaque(&detail::low_bits);
+    CHECK(low_bits(0) == 0);
+    CHECK(low_bits(24) == 0xFF'FFFFu);
+    CHECK(low_bits(64) == ~std::uint64_t{0});
+    for (const auto& m : detail::model_table) {
+        CAPTURE(m.id);
+        const auto leds = m.led_bits & low_bits(m.object_planes() * m.stride);
+        CHECK(detail::object_not_leds[static_cast<std::size_t>(m.id)] ==
+              static_cast<std::uint32_t>(~leds));
+    }
+}
+
+TEST_CASE("a keypad string's bytes: every byte of the literal but its terminator, NULs kept") {
+    const auto bytes_of = opaque(&behaviour::detail::bytes_of<8>);
+    const std::string_view s = bytes_of("PK1000\0");
+    CHECK(s.size() == 7);
+    CHECK(s == std::string_view("PK1000\0", 7));
 }
