@@ -626,7 +626,8 @@ private:
             flush_reply();  // not dropping: the earlier reply goes now, then this one
         }
         const std::uint8_t b0 = f[0];
-        const canopen::sdo_address a{static_cast<std::uint16_t>(f[1] | (f[2] << 8)), f[3]};
+        const canopen::sdo_address a{
+            static_cast<std::uint16_t>(powerkey::detail::load_le<2>(f.bytes(), 1)), f[3]};
         switch (b0 >> 5) {
             case 2: return upload(a, t);
             case 1: return download(f, a, t);
@@ -652,8 +653,7 @@ private:
             return abort(a, canopen::sdo_abort_code::object_does_not_exist, t);
         if (!row->readable()) return abort(a, canopen::sdo_abort_code::write_only, t);
         can::payload p{};
-        p[1] = static_cast<std::uint8_t>(a.index & 0xFF);
-        p[2] = static_cast<std::uint8_t>(a.index >> 8);
+        powerkey::detail::store_le<2>(p, 1, a.index);
         p[3] = a.subindex;
         const unsigned size = size_of(*row);
         if (size == 0) {
@@ -894,8 +894,7 @@ private:
     constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
         can::payload p{};
         p[0] = 0x80;
-        p[1] = static_cast<std::uint8_t>(a.index & 0xFF);
-        p[2] = static_cast<std::uint8_t>(a.index >> 8);
+        powerkey::detail::store_le<2>(p, 1, a.index);
         p[3] = a.subindex;
         powerkey::detail::store_le<4>(p, 4, static_cast<std::uint32_t>(c));
         reply(p, t);

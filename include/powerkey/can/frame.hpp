@@ -87,13 +87,9 @@ public:
     // The eight storage bytes as one little-endian number (bytes past the dlc are zero): an
     // 8-byte PDO's single read. It reads all eight, so a decoder calls it only once it has
     // checked that the dlc is 8 (no decoder reads past the dlc: the fuzz targets poison those
-    // bytes). Written out, not detail::load_le's switch on a width, so that g++ makes it one load
-    // even where its inlining budget leaves load_le a call.
+    // bytes). detail::load_le, the library's one little-endian load.
     [[nodiscard]] constexpr std::uint64_t data_le() const noexcept {
-        using u64 = std::uint64_t;
-        return u64{data_[0]} | u64{data_[1]} << 8 | u64{data_[2]} << 16 | u64{data_[3]} << 24 |
-               u64{data_[4]} << 32 | u64{data_[5]} << 40 | u64{data_[6]} << 48 |
-               u64{data_[7]} << 56;
+        return powerkey::detail::load_le<8>(data_, 0);
     }
     // Byte i; i must be < size().
     constexpr std::uint8_t operator[](std::size_t i) const noexcept { return data_[i]; }

@@ -510,8 +510,7 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
             if (f.size() != 5) return errc::wrong_length;
-            const std::uint32_t w = std::uint32_t{f[0]} | std::uint32_t{f[1]} << 8 |
-                                    std::uint32_t{f[2]} << 16 | std::uint32_t{f[3]} << 24;
+            const auto w = static_cast<std::uint32_t>(load_le<4>(f.bytes(), 0));
             if ((w & m.not_keys) != 0) return errc::reserved_not_zero;
             return answer(key_state{key_set::from_mask(w), f[4]});
         }
