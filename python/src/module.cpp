@@ -459,6 +459,32 @@ py::dict controller_event_to_py(const pb::controller_event& e) {
     return d;
 }
 
+// The enums powerkey.names() lists: a name and the list of its values' names, from the enum's one
+// name table (enum_values, to_string).
+template <class E>
+py::list names_of() {
+    py::list l;
+    for (const E v : enum_values<E>()) l.append(std::string(to_string(v)));
+    return l;
+}
+struct enum_list {
+    std::string_view name;
+    py::list (*names)();
+};
+constexpr enum_list enum_lists[] = {
+    {"model", names_of<model>},
+    {"object", names_of<object>},
+    {"errc", names_of<errc>},
+    {"colour", names_of<colour>},
+    {"backlight_colour", names_of<backlight_colour>},
+    {"led_state", names_of<led_state>},
+    {"baud_rate", names_of<baud_rate>},
+    {"nmt_command", names_of<canopen::nmt_command>},
+    {"nmt_state", names_of<canopen::nmt_state>},
+    {"command_code", names_of<command_code>},
+    {"event_kind", names_of<pb::event_kind>},
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_powerkey, mod) {
@@ -508,35 +534,11 @@ PYBIND11_MODULE(_powerkey, mod) {
         return l;
     });
     mod.def("names", [](const std::string& what) -> py::list {
-        py::list l;
-        auto all = [&l]<class E>(std::type_identity<E>) {
-            for (const E v : enum_values<E>()) l.append(std::string(to_string(v)));
-        };
-        if (what == "model")
-            all(std::type_identity<model>{});
-        else if (what == "object")
-            all(std::type_identity<object>{});
-        else if (what == "errc")
-            all(std::type_identity<errc>{});
-        else if (what == "colour")
-            all(std::type_identity<colour>{});
-        else if (what == "backlight_colour")
-            all(std::type_identity<backlight_colour>{});
-        else if (what == "led_state")
-            all(std::type_identity<led_state>{});
-        else if (what == "baud_rate")
-            all(std::type_identity<baud_rate>{});
-        else if (what == "nmt_command")
-            all(std::type_identity<canopen::nmt_command>{});
-        else if (what == "nmt_state")
-            all(std::type_identity<canopen::nmt_state>{});
-        else if (what == "command_code")
-            all(std::type_identity<command_code>{});
-        else if (what == "event_kind")
-            all(std::type_identity<pb::event_kind>{});
-        else
-            argument_error("names: unknown enum '" + what + "'");
-        return l;
+        for (const auto& e : enum_lists)
+            if (what == e.name) return e.names();
+        std::string known;
+        for (const auto& e : enum_lists) known += (known.empty() ? "" : ", ") + std::string(e.name);
+        argument_error("names: unknown enum '" + what + "' (one of: " + known + ")");
     });
 
     py::class_<py_message>(mod, "Message", "A decoded (or built) keypad message")

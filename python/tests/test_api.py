@@ -29,6 +29,21 @@ def test_model_by_name_enum_and_manual_name():
     assert powerkey.model_info("pkp2400")["model"] == "pkp2400"
 
 
+def test_names_of_every_listed_enum():
+    # Values the manuals name, one per enum: the table behind names() lists each enum whole.
+    expect = {"model": "pkp3500mt", "object": "led_brightness", "errc": "unknown_object",
+              "colour": "green", "backlight_colour": "white", "led_state": "red_on",
+              "baud_rate": "kbit_125", "nmt_command": "start", "nmt_state": "operational",
+              "command_code": "set_led_state", "event_kind": "key_pressed"}
+    for enum, name in expect.items():
+        names = powerkey.names(enum)
+        assert name in names, enum
+        assert len(names) == len(set(names)), enum
+    with pytest.raises(powerkey.ArgumentError) as e:
+        powerkey.names("colours")
+    assert "'colours'" in str(e.value) and "backlight_colour" in str(e.value)
+
+
 def test_unknown_model_is_an_argument_error():
     with pytest.raises(powerkey.ArgumentError) as e:
         powerkey.decode(*KEY3, model="pkp9999")
