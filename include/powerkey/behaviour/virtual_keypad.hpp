@@ -306,7 +306,7 @@ public:
     // All keys at once (keys the model lacks are left out).
     constexpr void set_keys(key_set s, millis t) noexcept {
         advance(t);
-        s = key_set::from_mask(s.mask() & ((std::uint64_t{1} << info_.keys) - 1));
+        s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(info_.keys));
         if (s == keys_) return;
         keys_ = s;
         if (state_ == run_state::operational && event_driven()) send_keys(t);
@@ -387,9 +387,6 @@ private:
     }
     constexpr leds& map_of(object o) noexcept { return is_blink(o) ? blink_ : on_; }
     constexpr const leds& map_of(object o) const noexcept { return is_blink(o) ? blink_ : on_; }
-    static constexpr std::uint64_t low_bits(unsigned n) noexcept {
-        return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-    }
 
     // The value a read of row r gives now.
     constexpr std::uint32_t current(const object_row& r) const noexcept {
@@ -401,7 +398,8 @@ private:
                 return static_cast<std::uint32_t>(map_of(r.id).of(k.holds).mask());
             case value_kind::led_part:  // SI: bits [offset, offset + width) of the LED string
                 return static_cast<std::uint32_t>(
-                    (pack_leds(info_, map_of(r.id), info_.planes) >> k.offset) & low_bits(k.width));
+                    (pack_leds(info_, map_of(r.id), info_.planes) >> k.offset) &
+                    powerkey::detail::low_bits(k.width));
             case value_kind::cob_id:
                 // PK1000 38-41, 46: 4000 0000h + the identifier in use (the rows hold node 15h);
                 // the PKP prints the function base without the node (E-PKP-5), as its rows do.
@@ -749,9 +747,9 @@ private:
             }
             case value_kind::led_part: {  // SI: bits [offset, offset + width) of the string
                 const object_kind k = kind_of(r.id);
-                if ((v & ~low_bits(k.width)) != 0) return code::invalid_value;
+                if ((v & ~powerkey::detail::low_bits(k.width)) != 0) return code::invalid_value;
                 leds& l = map_of(r.id);
-                const std::uint64_t keep = ~(low_bits(k.width) << k.offset);
+                const std::uint64_t keep = ~(powerkey::detail::low_bits(k.width) << k.offset);
                 const auto m = unpack_leds(
                     info_,
                     (pack_leds(info_, l, info_.planes) & keep) | (std::uint64_t{v} << k.offset),

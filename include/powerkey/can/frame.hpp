@@ -100,8 +100,7 @@ private:
     // The data with the bytes past the dlc cleared, as one 64-bit mask (a byte loop here cost
     // every encoder a dozen instructions).
     static constexpr payload masked(const payload& data, dlc length) noexcept {
-        const unsigned n = length.value();
-        const std::uint64_t keep = n >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * n)) - 1;
+        const std::uint64_t keep = powerkey::detail::low_bits(8u * length.value());
         payload p{};
         powerkey::detail::store_le<8>(p, 0, powerkey::detail::load_le<8>(data, 0) & keep);
         return p;

@@ -3,6 +3,7 @@
 //   load_le<N>(bytes, at)        N bytes from `at`, N known at compile time (1..8)
 //   load_le(bytes, at, width)    the same with a run-time width (0..8): bit maps of any model
 //   store_le<N>(bytes, at, v)    the inverse
+//   low_bits(n)                  the mask of the n low bits of a 64-bit word (n >= 64: all)
 // Written as one expression per width rather than a loop: g++ -O2 merges it into a single load
 // (a byte loop cost ~55 instructions, docs/performance.md).
 #ifndef POWERKEY_DETAIL_BYTES_HPP
@@ -64,6 +65,11 @@ requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at,
 template <class Bytes>
 constexpr void store_le(Bytes& b, std::size_t at, std::size_t width, std::uint64_t v) noexcept {
     for (std::size_t i = 0; i < width; ++i) b[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+
+// The mask of the n low bits (n >= 64: every bit; a shift by 64 would be undefined).
+constexpr std::uint64_t low_bits(unsigned n) noexcept {
+    return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
 }
 
 // True when bytes [from, to) are all zero (to <= 8): one load of bytes [0, to) and a shift, not

@@ -19,6 +19,7 @@
 #define POWERKEY_KEYPAD_ACCESSORS_HPP
 
 #include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/detail/bytes.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/messages.hpp>
 
@@ -76,8 +77,7 @@ constexpr std::optional<led_map_update> map_of_object(const model_info& mi, obje
         c.of(kind_of(id).holds) = led_set::from_mask(mi.led_mask);
     } else if (id == o.part1 || id == o.part2 || id == o.part3) {
         const auto k = kind_of(id);
-        c = unpack_leds(mi, ((std::uint64_t{1} << k.width) - 1) << k.offset, mi.planes)
-                .value_or(leds{});
+        c = unpack_leds(mi, detail::low_bits(k.width) << k.offset, mi.planes).value_or(leds{});
     } else {
         return std::nullopt;
     }

@@ -74,17 +74,13 @@ constexpr std::uint8_t row_size(const model_info& m, const codec_row& r,
 // a bit that names no LED.
 constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
                                    const codec_row& r) noexcept {
-    const std::uint64_t mask = (std::uint64_t{1} << r.part_width()) - 1;
-    if ((raw & ~mask) != 0) return errc::reserved_not_zero;
+    if ((raw & ~low_bits(r.part_width())) != 0) return errc::reserved_not_zero;
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
 
 // The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name no LED, per model: all but
 // those of the planes object_planes() keeps (no division on the decoder's path; the complement, so
 // that the test is one AND).
-constexpr std::uint64_t low_bits(unsigned n) noexcept {
-    return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-}
 inline constexpr auto object_not_leds = [] {
     std::array<std::uint32_t, std::size(model_table)> t{};
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -202,7 +198,7 @@ constexpr canopen::expedited_data write_value(const model_info& m, const codec_r
     if (r.kind == value_kind::led_plane) raw = v.map.of(static_cast<plane>(r.a)).mask();
     if (r.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
     if (r.kind == value_kind::led_part)
-        raw = (pack_leds(m, v.map, m.planes) >> r.a) & ((std::uint64_t{1} << r.part_width()) - 1);
+        raw = (pack_leds(m, v.map, m.planes) >> r.a) & low_bits(r.part_width());
     const std::uint8_t size = row_size(m, r, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
     canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
     store_le<4>(d.bytes, 0, raw);
