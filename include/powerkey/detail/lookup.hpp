@@ -1,9 +1,12 @@
-// powerkey detail: the hash of the object dictionaries' address tables (keypad/objects.hpp builds
-// them at compile time), so that finding an object is a multiply, a shift and at most two probes
-// instead of a search (issue 7: the binary search was ~60 instructions of every SDO decode).
+// powerkey detail: what the compile-time tables are built with. The hash of the object
+// dictionaries' address tables (keypad/objects.hpp), so that finding an object is a multiply, a
+// shift and at most two probes instead of a search (issue 7: the binary search was ~60
+// instructions of every SDO decode); and distinct_set, which keeps each value once (the codec's
+// ranges and rows, the command module's parameter pairs).
 #ifndef POWERKEY_DETAIL_LOOKUP_HPP
 #define POWERKEY_DETAIL_LOOKUP_HPP
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,6 +25,24 @@ constexpr std::uint32_t hash_candidate(std::size_t t) noexcept {
     for (std::size_t i = 0; i < t; ++i) x = x * 1'664'525u + 1'013'904'223u;
     return x | 1u;
 }
+
+// The distinct values added, in the order first seen; find() and add() give a value's index.
+// More than Cap values is not a constant expression (a table builder fails to compile).
+template <class T, std::size_t Cap>
+struct distinct_set {
+    std::array<T, Cap> items{};
+    std::size_t size = 0;
+    constexpr std::size_t find(const T& v) const noexcept {
+        for (std::size_t i = 0; i < size; ++i)
+            if (items[i] == v) return i;
+        return size;
+    }
+    constexpr std::size_t add(const T& v) noexcept {
+        const std::size_t i = find(v);
+        if (i == size) items[size++] = v;
+        return i;
+    }
+};
 
 }  // namespace powerkey::detail
 

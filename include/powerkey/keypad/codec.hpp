@@ -21,6 +21,7 @@
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/detail/bytes.hpp>
 #include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/lookup.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/messages.hpp>
@@ -280,35 +281,22 @@ struct command_shape {
     command_param p2;
     friend constexpr bool operator==(const command_shape&, const command_shape&) = default;
 };
-inline constexpr std::size_t command_shape_count = [] {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < std::size(command_table); ++i) {
-        bool seen = false;
-        for (std::size_t j = 0; j < i; ++j)
-            seen = seen || (command_table[j].p1 == command_table[i].p1 &&
-                            command_table[j].p2 == command_table[i].p2);
-        n += seen ? 0 : 1;
-    }
-    return n;
+inline constexpr auto all_command_shapes = [] {
+    distinct_set<command_shape, std::size(command_table)> s;
+    for (const command_row& r : command_table) s.add({r.p1, r.p2});
+    return s;
 }();
 inline constexpr auto command_shapes = [] {
-    std::array<command_shape, command_shape_count> t{};
-    std::size_t n = 0;
-    for (const command_row& r : command_table) {
-        const command_shape s{r.p1, r.p2};
-        bool seen = false;
-        for (std::size_t j = 0; j < n; ++j) seen = seen || t[j] == s;
-        if (!seen) t[n++] = s;
-    }
+    std::array<command_shape, all_command_shapes.size> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = all_command_shapes.items[i];
     return t;
 }();
 // The pair + 1 of each command byte, 0 for none (as command_index, one load less and no bound).
 inline constexpr auto command_shape_index = [] {
     std::array<std::uint8_t, 0x100> t{};
     for (const command_row& r : command_table)
-        for (std::size_t j = 0; j < command_shapes.size(); ++j)
-            if (command_shapes[j] == command_shape{r.p1, r.p2})
-                t[static_cast<std::size_t>(r.code)] = static_cast<std::uint8_t>(j + 1);
+        t[static_cast<std::size_t>(r.code)] =
+            static_cast<std::uint8_t>(all_command_shapes.find({r.p1, r.p2}) + 1);
     return t;
 }();
 

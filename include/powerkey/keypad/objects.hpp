@@ -746,19 +746,8 @@ constexpr void for_each_row(F f) noexcept {
         for (const auto& r : rows_of(d)) f(r);
 }
 
-template <std::size_t Cap>
-struct range_set {
-    std::array<value_range, Cap> items{};
-    std::size_t size = 0;
-    constexpr std::size_t add(const value_range& v) noexcept {
-        for (std::size_t i = 0; i < size; ++i)
-            if (items[i] == v) return i;
-        items[size] = v;
-        return size++;
-    }
-};
 constexpr auto collect_ranges() noexcept {
-    range_set<64> s;
+    distinct_set<value_range, 64> s;
     for_each_row([&s](const object_row& r) { s.add(range_of(r)); });
     return s;
 }
@@ -793,22 +782,12 @@ constexpr bool part_widths_fit() noexcept {
 }
 static_assert(part_widths_fit());
 
-// The distinct codec rows, packed (a 64-bit compare each: clang counts constexpr steps).
-struct codec_row_set {
-    std::array<std::uint64_t, 254> items{};
-    std::size_t size = 0;
-    constexpr std::size_t find(std::uint64_t v) const noexcept {
-        for (std::size_t i = 0; i < size; ++i)
-            if (items[i] == v) return i;
-        return size;
-    }
-};
+// The distinct codec rows, packed (a 64-bit compare each: clang counts constexpr steps); at most
+// 254, so that a row number (1..) and the sentinel fit a byte.
+using codec_row_set = distinct_set<std::uint64_t, 254>;
 constexpr codec_row_set collect_codec_rows() noexcept {
     codec_row_set s;
-    for_each_row([&s](const object_row& r) {
-        const auto v = codec_row_of(r).packed();
-        if (s.find(v) == s.size) s.items[s.size++] = v;  // more than 254: not a constant
-    });
+    for_each_row([&s](const object_row& r) { s.add(codec_row_of(r).packed()); });
     return s;
 }
 inline constexpr codec_row_set all_codec_rows = collect_codec_rows();
