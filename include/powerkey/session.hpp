@@ -24,7 +24,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/models.hpp>

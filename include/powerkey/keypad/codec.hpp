@@ -20,7 +20,7 @@
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/detail/bytes.hpp>
-#include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
@@ -32,17 +32,6 @@
 #include <array>
 #include <cstdint>
 #include <variant>
-
-// When optimising for speed, the decoders' cold paths out of line and their common ones inlined:
-// the common paths then need no registers saved (docs/performance.md). Under -Os (the firmware)
-// one copy of each, shared, is smaller.
-#if defined(__OPTIMIZE_SIZE__)
-#define POWERKEY_DETAIL_COLD
-#define POWERKEY_DETAIL_HOT
-#else
-#define POWERKEY_DETAIL_COLD [[gnu::noinline]]
-#define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
-#endif
 
 namespace powerkey {
 
@@ -323,7 +312,7 @@ constexpr result<message> command_of(const model_info& m, command_code code,
 // The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
 // then command_of's. One jump on the command's parameter pair.
-[[gnu::always_inline]] constexpr result<message> read_command(const model_info& m,
+POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_info& m,
                                                               std::uint8_t size,
                                                               std::uint32_t data) noexcept {
     static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
@@ -489,7 +478,7 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
 // node's): only the length and data are checked. Each answer is built in the caller's result.
 // No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
 // (data_le) after its length check, the key state's 5 bytes as a word and a byte.
-[[gnu::always_inline]] constexpr result<message> decode_pdo(const model_info& m, std::uint32_t code,
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_info& m, std::uint32_t code,
                                                             const can::frame& f) noexcept {
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
@@ -574,7 +563,7 @@ constexpr result<message> decode_extended(const model_info& m, const can::frame&
 
 // --- encoding -----------------------------------------------------------------------------------
 
-[[gnu::always_inline]] constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
+POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
                                                       std::uint8_t dlc,
                                                       std::uint64_t bits) noexcept {
     can::payload p{};
@@ -664,9 +653,9 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
 //                       size, reserved bits of COB-IDs and of the PDOs
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
-[[nodiscard, gnu::always_inline]] constexpr result<message> decode(const can::frame& f,
-                                                                   canopen::node_id node,
-                                                                   model m) noexcept {
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(const can::frame& f,
+                                                                      canopen::node_id node,
+                                                                      model m) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const model_info& mi = detail::row_of(m);
     // The same classification as canopen::classify, written into the dispatch (every frame

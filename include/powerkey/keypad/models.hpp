@@ -11,7 +11,7 @@
 #ifndef POWERKEY_KEYPAD_MODELS_HPP
 #define POWERKEY_KEYPAD_MODELS_HPP
 
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>

@@ -11,8 +11,9 @@
 #define POWERKEY_KEYPAD_OBJECTS_HPP
 
 #include <powerkey/canopen/sdo.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/detail/lookup.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>
@@ -862,9 +863,7 @@ inline constexpr auto address_slots = [] {
 // drops the callers' `== 0` tests from the path of a known address (-3 instructions per SDO frame,
 // docs/performance.md).
 constexpr std::uint8_t matched_row(std::uint8_t s) noexcept {
-#if defined(__GNUC__)
-    if (s == 0) __builtin_unreachable();
-#endif
+    POWERKEY_DETAIL_ASSUME_NOT(s == 0);
     return s;
 }
 
