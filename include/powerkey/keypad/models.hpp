@@ -36,6 +36,8 @@ enum class model : std::uint8_t {
     pkp2200si,
     pkp2300si,
     pkp2400si,
+    // PKP-1600-SI: its J1939 side only so far (j1939/models.hpp); no row in this table yet.
+    pkp1600si,
 };
 
 struct model_info {
