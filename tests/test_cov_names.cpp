@@ -251,9 +251,10 @@ constexpr name_row errc_rows[] = {
     {"errors.md", 9, "size_mismatch"},     {"errors.md", 10, "buffer_too_small"},
     {"errors.md", 11, "sdo_aborted"},      {"errors.md", 12, "unexpected_frame"},
     {"errors.md", 13, "syntax_error"},     {"errors.md", 14, "unknown_object"},
+    {"errors.md", 15, "reserved_not_ff"},  {"errors.md", 16, "undocumented"},
 };
 static_assert(table_is<errc>(errc_rows, 0));
-static_assert(!is_named(static_cast<errc>(15)));
+static_assert(!is_named(static_cast<errc>(17)));
 
 constexpr name_row bus_protocol_rows[] = {{"PK1000 49", 0, "canopen"}, {"PK1000 49", 1, "j1939"}};
 static_assert(table_is<bus_protocol>(bus_protocol_rows, 2));
