@@ -236,8 +236,8 @@ using colour_frame = bounded<colour_frame_tag, std::uint8_t, 1, 2>;
 // 02h: a 4-bit code per LED, LED 2k-1 in the low nibble and LED 2k in the high nibble of byte
 // k-1; nibbles past the model's LEDs Fh ("Not used"). Codes: 0h none, 1h..9h the colours of
 // led_colour, Fh blink; Ah..Eh not used. The keypad combines the two frames by the manual's
-// TABLE 3 (combine() in codec.hpp). Stored as the nibbles; the fields are one LED set per code,
-// named as the colours ("red" ... "yellow_green") and "blink".
+// TABLE 3 (combine() in codec.hpp). Stored as the nibbles; the fields are one LED set per code
+// (led_set, LEDs 1..16), named as the colours ("red" ... "yellow_green") and "blink".
 struct multiple_leds {
     static constexpr std::string_view kind = "j1939_multiple_leds";
     template <class Self, class F>
@@ -246,9 +246,9 @@ struct multiple_leds {
         f("frame", self.frame);
         for (std::size_t i = 0; i < std::size(code_names); ++i) {
             const auto code = static_cast<std::uint8_t>(i == 9 ? 0xF : i + 1);
-            powerkey::detail::proxy_field<index_set<16>>(
+            powerkey::detail::proxy_field<led_set>(
                 self, f, code_names[i], [code](const auto& s) { return s.leds_of(code); },
-                [code](auto& s, const index_set<16>& leds) { s.set_leds(code, leds); });
+                [code](auto& s, const led_set& leds) { s.set_leds(code, leds); });
         }
     }
     j1939::priority priority = 6;
@@ -274,14 +274,15 @@ struct multiple_leds {
         return *this;
     }
     // The LEDs whose code is c.
-    [[nodiscard]] constexpr index_set<16> leds_of(std::uint8_t c) const noexcept {
-        index_set<16> s;
+    [[nodiscard]] constexpr led_set leds_of(std::uint8_t c) const noexcept {
+        led_set s;
         for (unsigned k = 1; k <= 16; ++k)
             if (code_of(k) == c) s.insert(k);
         return s;
     }
-    // The LEDs of `leds` get code c; the others that had c get none.
-    constexpr void set_leds(std::uint8_t c, const index_set<16>& leds) noexcept {
+    // The LEDs of `leds` get code c; the others that had c get none. A frame carries LEDs 1..16:
+    // numbers above are ignored (no keypad has more than 15 LEDs).
+    constexpr void set_leds(std::uint8_t c, const led_set& leds) noexcept {
         for (unsigned k = 1; k <= 16; ++k) {
             if (leds.contains(k))
                 set(k, c);
