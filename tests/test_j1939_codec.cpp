@@ -213,7 +213,8 @@ TEST_CASE("j1939: direction of 01h and 2Ah, and narrowing to one keypad") {
     // Any priority decodes and is kept.
     const auto p3 = decode(frame_of("0CEF2100#041B0220FFFFFFFF"), model::pkp1600si);
     REQUIRE(p3.has_value());
-    CHECK(std::get<command>(*p3).priority == priority{3});
+    constexpr priority three = 3;
+    CHECK(std::get<command>(*p3).priority == three);
     CHECK(encode(model::pkp1600si, *p3) ==
           powerkey::result<can::frame>{frame_of("0CEF2100#041B0220FFFFFFFF")});
 }
