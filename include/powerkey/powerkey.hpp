@@ -30,7 +30,11 @@
 #include <powerkey/canopen/sdo_upload.hpp>
 #include <powerkey/canopen/sync.hpp>
 
+#include <powerkey/j1939/codec.hpp>
 #include <powerkey/j1939/id.hpp>
+#include <powerkey/j1939/messages.hpp>
+#include <powerkey/j1939/models.hpp>
+#include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 
 #include <powerkey/keypad/accessors.hpp>
