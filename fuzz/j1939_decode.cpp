@@ -7,7 +7,7 @@
 // decode_switch_to_canopen.
 #include "properties.hpp"
 
-#include <powerkey/j1939/codec.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 
 #include <optional>
 #include <variant>

@@ -5,7 +5,7 @@
 // encodes to a frame that decodes back to exactly the same message.
 #include "properties.hpp"
 
-#include <powerkey/j1939/codec.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace powerkey;

@@ -18,9 +18,9 @@
 #define POWERKEY_TESTS_J1939_ROWS_HPP
 
 #include <powerkey/can/candump.hpp>
-#include <powerkey/j1939/codec.hpp>
-#include <powerkey/j1939/messages.hpp>
-#include <powerkey/j1939/models.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 #include <powerkey/keypad/models.hpp>
 
 #include <cstddef>

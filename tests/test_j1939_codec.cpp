@@ -1,12 +1,12 @@
-// The J1939 codec (j1939/codec.hpp) against the two complete J1939 manuals and the other models'
-// frames (tests/j1939_rows.hpp): every row both ways, with any keypad and narrowed to one; the
-// decoder's and the encoder's refusals; the errata; TABLE 3; the encoder over raw field values.
+// The J1939 codec (keypad/j1939_codec.hpp) against the two complete J1939 manuals and the other
+// models' frames (tests/j1939_rows.hpp): every row both ways, with any keypad and narrowed to one;
+// the decoder's and the encoder's refusals; the errata; TABLE 3; the encoder over raw field values.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/describe.hpp>
-#include <powerkey/j1939/codec.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/names.hpp>
 
 #include "j1939_rows.hpp"

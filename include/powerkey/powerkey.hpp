@@ -30,12 +30,12 @@
 #include <powerkey/canopen/sdo_upload.hpp>
 #include <powerkey/canopen/sync.hpp>
 
-#include <powerkey/j1939/codec.hpp>
 #include <powerkey/j1939/id.hpp>
-#include <powerkey/j1939/messages.hpp>
-#include <powerkey/j1939/models.hpp>
 #include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>

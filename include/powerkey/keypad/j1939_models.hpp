@@ -4,8 +4,8 @@
 // documented (a manual of the model prints it), inferred (decoded and encoded with the layout of
 // the two complete manuals), absent (its manual does not have it: errc::unknown_command) or
 // unknown (no source shows it: errc::undocumented). docs/j1939.md gives each row's sources.
-#ifndef POWERKEY_J1939_MODELS_HPP
-#define POWERKEY_J1939_MODELS_HPP
+#ifndef POWERKEY_KEYPAD_J1939_MODELS_HPP
+#define POWERKEY_KEYPAD_J1939_MODELS_HPP
 
 #include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -317,4 +317,4 @@ struct enum_names<j1939::led_form> {
 
 }  // namespace powerkey
 
-#endif  // POWERKEY_J1939_MODELS_HPP
+#endif  // POWERKEY_KEYPAD_J1939_MODELS_HPP

@@ -11,16 +11,16 @@
 // state from the keypad and an LED command to it; 2Ah a request and its answer): the direction
 // comes from the data and the identifier, as docs/j1939.md says. encode builds the frame, decodes
 // it back with the same arguments and returns it only when the meaning comes back unchanged.
-#ifndef POWERKEY_J1939_CODEC_HPP
-#define POWERKEY_J1939_CODEC_HPP
+#ifndef POWERKEY_KEYPAD_J1939_CODEC_HPP
+#define POWERKEY_KEYPAD_J1939_CODEC_HPP
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/detail/bytes.hpp>
 #include <powerkey/j1939/id.hpp>
-#include <powerkey/j1939/messages.hpp>
-#include <powerkey/j1939/models.hpp>
 #include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>
@@ -542,4 +542,4 @@ template <message_alternative T>
 
 }  // namespace powerkey::j1939
 
-#endif  // POWERKEY_J1939_CODEC_HPP
+#endif  // POWERKEY_KEYPAD_J1939_CODEC_HPP

@@ -11,17 +11,17 @@
 // and the destination of what it is sent; any address decodes). Field names are CANopen's where
 // the meaning is the same: "keys", "key", "level", "colour", "enabled", "startup_show",
 // "baud_rate", "period_10ms", "identifier" (the keypad identifier of 70h).
-#ifndef POWERKEY_J1939_MESSAGES_HPP
-#define POWERKEY_J1939_MESSAGES_HPP
+#ifndef POWERKEY_KEYPAD_J1939_MESSAGES_HPP
+#define POWERKEY_KEYPAD_J1939_MESSAGES_HPP
 
 #include <powerkey/bounded.hpp>
 #include <powerkey/detail/proxy.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/index_set.hpp>
 #include <powerkey/j1939/id.hpp>
-#include <powerkey/j1939/models.hpp>
 #include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>
@@ -335,7 +335,7 @@ enum class command_param : std::uint8_t {
 
 struct command_row {
     command_code code;
-    feature what;      // its line of the model table (j1939/models.hpp)
+    feature what;      // its line of the model table (keypad/j1939_models.hpp)
     command_param p1;  // byte 3
     command_param p2;  // byte 4
 };
@@ -481,4 +481,4 @@ struct enum_names<j1939::command_code> {
 
 }  // namespace powerkey
 
-#endif  // POWERKEY_J1939_MESSAGES_HPP
+#endif  // POWERKEY_KEYPAD_J1939_MESSAGES_HPP
