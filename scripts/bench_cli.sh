@@ -16,11 +16,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/bench-cli}
 frames=${2:-1000000}
-if [ ! -x "$build/examples/powerkey" ]; then
+if [ ! -x "$build/tools/powerkey/powerkey" ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF >/dev/null
   cmake --build "$build" -j "${JOBS:-1}" --target powerkey_tool >/dev/null
 fi
-pk=$build/examples/powerkey
+pk=$build/tools/powerkey/powerkey
 log=$build/million.log
 if [ ! -s "$log" ] || [ "$(wc -l < "$log")" -ne "$frames" ]; then
   grep -hv '^#' examples/logs/pk1000.log |

@@ -33,4 +33,4 @@ fi
 cmake -S . -B build/run -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF >/dev/null
 cmake --build build/run -j 2 --target powerkey_tool >/dev/null
 echo "\$ powerkey decode --model $model examples/logs/$model.log"
-./build/run/examples/powerkey decode --model "$model" "examples/logs/$model.log"
+./build/run/tools/powerkey/powerkey decode --model "$model" "examples/logs/$model.log"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tests of `powerkey check` (examples/tool/cmd_check.cpp), registered by examples/CMakeLists.txt:
+# Tests of `powerkey check` (tools/powerkey/cmd_check.cpp), registered by tools/powerkey/CMakeLists.txt:
 #   test_check.sh CHECK_BINARY SOURCE_DIR [SIMULATE_BINARY]
 # The shipped clean session passes; the same session with planted problems gives exactly the
 # lines below, each right after its `# planted: KIND` comment; --json, several files, bad lines

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tests of the powerkey tool (registered by examples/CMakeLists.txt):
+# Tests of the powerkey tool (registered by tools/powerkey/CMakeLists.txt):
 #   test_cli.sh POWERKEY_BINARY SOURCE_DIR [SAMPLE_LOGS_BINARY]
 # Every sample log (every manual frame, per model) decodes without an error and comes back byte
 # for byte through `decode --json | encode --json`; bad input gets a one-line error naming the

@@ -1,11 +1,11 @@
-// The pieces of the powerkey tool (examples/tool/): the log readers, the field values both ways,
+// The pieces of the powerkey tool (tools/powerkey/): the log readers, the field values both ways,
 // numbers, model names and escaping. The tool itself is tested end to end by tests/test_cli.sh,
 // tests/test_log_formats.sh (files of the real writers) and tests/test_cli_live.sh.
 #include <doctest/doctest.h>
 
-#include "../examples/tool/common.hpp"
-#include "../examples/tool/field_value.hpp"
-#include "../examples/tool/log_formats.hpp"
+#include "../tools/powerkey/common.hpp"
+#include "../tools/powerkey/field_value.hpp"
+#include "../tools/powerkey/log_formats.hpp"
 
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/names.hpp>

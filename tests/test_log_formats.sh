@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every log form decodes frame for frame like its candump equivalent (registered by
-# examples/CMakeLists.txt as cli_log_formats):
+# tools/powerkey/CMakeLists.txt as cli_log_formats):
 #   test_log_formats.sh POWERKEY_BINARY SOURCE_DIR
 # The files are written at test time by the real writers: Debian's python3-can (ASC, BLF, TRC 1.0
 # and 2.1, CSV, candump log; /usr/bin/python3, not a python on PATH that may lack the package)

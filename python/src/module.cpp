@@ -2,7 +2,7 @@
 // this module only speaks in plain Python values (ints, strs, lists, bytes) and the few types of
 // powerkey/_types.py, so that the vocabulary is the library's and the tool's JSON:
 //   - a message's fields come from the kind/fields convention (fields.hpp), written with the
-//     same rules as the tool's `decode --json` (examples/tool/field_value.hpp, write_json_value):
+//     same rules as the tool's `decode --json` (tools/powerkey/field_value.hpp, write_json_value):
 //     bool, enum name (a number when unnamed), [keys], "HEX" bytes, numbers;
 //   - a message is built from a kind and fields as `powerkey encode` builds one, field by field
 //     through the same visitor;
@@ -138,7 +138,7 @@ py::list index_list(const index_set<N>& s) {
     return l;
 }
 
-// The value as the tool's JSON writes it (examples/tool/field_value.hpp, write_json_value).
+// The value as the tool's JSON writes it (tools/powerkey/field_value.hpp, write_json_value).
 template <class T>
 py::object to_py(const T& v) {
     if constexpr (std::is_same_v<T, bool>) {

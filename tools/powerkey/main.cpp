@@ -8,7 +8,7 @@
 // The options are read by CLI11; each subcommand is one file of tool/ (cmd_decode.cpp,
 // cmd_encode.cpp, cmd_list.cpp, and cmd_simulate.cpp, cmd_check.cpp, which read their own
 // options). docs/cli.md describes the options, the output and the exit status.
-#include "tool/common.hpp"
+#include "common.hpp"
 
 #include <CLI/CLI.hpp>
 #include <powerkey/version.hpp>

@@ -15,7 +15,7 @@
 // Exit status: 0 no problem, 1 a problem found (or a line that is not a frame, reported on
 // standard error), 2 usage.
 //
-// Self-contained (the tool's other commands are in examples/powerkey.cpp): the integrator calls
+// Self-contained (the tool's other commands are in tools/powerkey/main.cpp): the integrator calls
 // run_check(argc, argv) with the arguments after "check".
 #include <powerkey/behaviour/checker.hpp>
 #include <powerkey/can/candump.hpp>
