@@ -1,290 +1,162 @@
-// powerkey check: the bus-log checker (include/powerkey/behaviour/checker.hpp) on candump logs.
+// powerkey check: the bus-log checker (include/powerkey/behaviour/checker.hpp) on any log.
 //
 //   powerkey check --model M [--node N] [--json] [--sdo-timeout MS] [--heartbeat MS]
 //                  [--key-period MS] [FILE...]
 //
-// Checks each log on its own (`-` or no file: standard input), one frame per line in
-// the candump log form `(1700000000.000000) can0 195#0900000012` or the bare `195#0900000012`
-// (then the time stands still); blank lines and lines starting with `#` or `//` are skipped. It
-// prints one line per problem, in line order, starting with the input line number:
+// Checks each log on its own (`-` or no file: standard input), read like every input
+// (input.hpp); a frame without a time keeps the time of the frame before it. It prints one line
+// per problem, in line order, starting with the input line number:
 //
 //   12: sdo_overlap: SDO request sent while the request of line 11 (2003h/1) is unanswered: ...
 //
 // (with several files, `FILE:LINE: ...`), or with --json one object per line:
 //   {"line":12,"kind":"sdo_overlap","detail":[11,8195,1],"text":"SDO request sent ..."}
-// Exit status: 0 no problem, 1 a problem found (or a line that is not a frame, reported on
-// standard error), 2 usage.
-//
-// Self-contained (the tool's other commands are in tools/powerkey/main.cpp): the integrator calls
-// run_check(argc, argv) with the arguments after "check".
+// Exit status: 0 no problem, 1 a problem found or an input that could not be read, 2 usage.
+#include "cli.hpp"
+#include "commands.hpp"
+#include "input.hpp"
+#include "json_writer.hpp"
+
 #include <powerkey/behaviour/checker.hpp>
-#include <powerkey/can/candump.hpp>
-#include <powerkey/keypad/models.hpp>
-#include <powerkey/names.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <iostream>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+namespace tool {
 namespace {
 
 namespace pb = powerkey::behaviour;
 
-struct options {
-    powerkey::model model = powerkey::model::pk1000;
-    bool model_given = false;
-    powerkey::canopen::node_id node = powerkey::canopen::default_node_id;
+struct check_options {
     bool json = false;
-    pb::checker_config config;
+    std::string sdo_timeout, heartbeat, key_period;  // ms
     std::vector<std::string> files;
 };
 
-void usage(std::ostream& out) {
-    out << "usage: powerkey check --model M [--node N] [--json] [--sdo-timeout MS]\n"
-           "                      [--heartbeat MS] [--key-period MS] [FILE...]\n";
-}
+// Each input on its own: its own time, its own keypad state; the problems printed at its end,
+// in line order.
+class check_handler final : public frame_handler {
+public:
+    check_handler(const pb::checker_config& config, bool json, bool several, output& out)
+        : config_(config), json_(json), several_(several), out_(out) {}
 
-std::optional<std::uint32_t> parse_number(std::string_view s) {
-    int base = 10;
-    if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
-        base = 16;
-        s.remove_prefix(2);
-    } else if (!s.empty() && (s.back() == 'h' || s.back() == 'H')) {
-        base = 16;
-        s.remove_suffix(1);
+    void begin(std::size_t, const std::string& label) override {
+        label_ = label;
+        checker_.emplace(config_);
+        now_ = 0;
+        problems_.clear();
     }
-    if (s.empty()) return std::nullopt;
-    std::uint64_t v = 0;
-    for (char c : s) {
-        int d = -1;
-        if (c >= '0' && c <= '9') d = c - '0';
-        if (base == 16 && c >= 'a' && c <= 'f') d = c - 'a' + 10;
-        if (base == 16 && c >= 'A' && c <= 'F') d = c - 'A' + 10;
-        if (d < 0) return std::nullopt;
-        v = v * static_cast<unsigned>(base) + static_cast<unsigned>(d);
-        if (v > 0xFFFF'FFFFu) return std::nullopt;
+    void frame(const logs::record& r) override {
+        // The time in ms, wrapping like a firmware counter (the checker's millis).
+        if (!r.time.empty())
+            if (const auto us = parse_seconds(r.time))
+                now_ = static_cast<std::uint32_t>(static_cast<std::uint64_t>(*us) / 1000);
+        for (const auto& p :
+             checker_->step(r.frame, pb::millis{now_}, static_cast<std::uint32_t>(r.line)))
+            problems_.push_back(p);
     }
-    return static_cast<std::uint32_t>(v);
-}
+    void end(std::size_t) override {
+        // The end of the log: what is still unanswered there.
+        for (const auto& p : checker_->finish(pb::millis{now_})) problems_.push_back(p);
+        std::stable_sort(
+            problems_.begin(), problems_.end(),
+            [](const pb::problem& a, const pb::problem& b) { return a.line < b.line; });
+        for (const auto& p : problems_) print(p);
+        found_ += problems_.size();
+        out_.flush();
+    }
+    [[nodiscard]] std::size_t found() const noexcept { return found_; }
 
-// The options; nullopt after printing why they are wrong.
-std::optional<options> parse_options(int argc, char** argv) {
-    options o;
-    for (int i = 0; i < argc; ++i) {
-        const std::string_view a = argv[i];
-        auto value = [&](std::string_view name) -> std::optional<std::string_view> {
-            if (i + 1 >= argc) {
-                std::cerr << "powerkey check: " << name << " needs a value\n";
-                return std::nullopt;
+private:
+    void print(const pb::problem& p) {
+        std::array<char, 200> buf{};
+        const auto t = pb::explain(p, buf);
+        const std::string_view text = t ? *t : std::string_view(buf.data(), buf.size());
+        const auto kind = powerkey::to_string(p.kind);
+        auto& b = out_.buffer();
+        if (json_) {
+            json::object_writer w(b);
+            if (several_) w.field("file", label_);
+            w.field("line", p.line);
+            w.field("kind", kind);
+            w.key("detail");
+            b += '[';
+            for (std::size_t i = 0; i < p.detail.size(); ++i) {
+                if (i > 0) b += ',';
+                append_decimal(b, p.detail[i]);
             }
-            return std::string_view(argv[++i]);
-        };
-        auto ms = [&](std::string_view name, powerkey::behaviour::duration_ms& out) {
-            const auto v = value(name);
-            if (!v) return false;
-            const auto n = parse_number(*v);
-            if (!n) {
-                std::cerr << "powerkey check: " << name << ": not a number of ms: " << *v << "\n";
-                return false;
-            }
-            out = powerkey::behaviour::duration_ms{*n};
-            return true;
-        };
-        if (a == "--model") {
-            const auto v = value(a);
-            if (!v) return std::nullopt;
-            const auto m = powerkey::parse_model(*v);
-            if (!m) {
-                std::cerr << "powerkey check: unknown model: " << *v << "\n";
-                return std::nullopt;
-            }
-            o.model = *m;
-            o.model_given = true;
-        } else if (a == "--node") {
-            const auto v = value(a);
-            if (!v) return std::nullopt;
-            const auto n = parse_number(*v);
-            const auto id = n ? powerkey::canopen::node_id::make(*n)
-                              : powerkey::result<powerkey::canopen::node_id>(
-                                    powerkey::errc::value_out_of_range);
-            if (!id) {
-                std::cerr << "powerkey check: a node id is 1..127: " << *v << "\n";
-                return std::nullopt;
-            }
-            o.node = *id;
-        } else if (a == "--json") {
-            o.json = true;
-        } else if (a == "--sdo-timeout") {
-            if (!ms(a, o.config.sdo_timeout)) return std::nullopt;
-        } else if (a == "--heartbeat") {
-            if (!ms(a, o.config.heartbeat_period)) return std::nullopt;
-        } else if (a == "--key-period") {
-            if (!ms(a, o.config.key_state_period)) return std::nullopt;
-        } else if (a == "-h" || a == "--help") {
-            usage(std::cout);
-            std::exit(0);
-        } else if (a.size() > 1 && a[0] == '-') {
-            std::cerr << "powerkey check: unknown option: " << a << "\n";
-            return std::nullopt;
+            b += ']';
+            w.field("text", text);
+            w.close();
         } else {
-            o.files.emplace_back(a);
+            if (several_) b += label_ + ":";
+            append_decimal(b, p.line);
+            b += ": ";
+            b += kind;
+            b += ": ";
+            b += text;
         }
+        b += '\n';
     }
-    if (!o.model_given) {
-        std::cerr << "powerkey check: --model is required\n";
-        return std::nullopt;
-    }
-    o.config.keypad_model = o.model;
-    o.config.node = o.node;
-    return o;
-}
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-        s.remove_suffix(1);
-    return s;
-}
-
-struct line_frame {
-    powerkey::can::frame frame;
-    std::optional<std::uint32_t> ms;  // the timestamp in ms (wrapping like a firmware counter)
+    pb::checker_config config_;
+    bool json_;
+    bool several_;
+    output& out_;
+    std::string label_;
+    std::optional<pb::checker<>> checker_;
+    std::uint32_t now_ = 0;
+    std::vector<pb::problem> problems_;
+    std::size_t found_ = 0;
 };
 
-enum class line_result { frame, skip, bad };
-
-// "(SECONDS.FRACTION) IFACE ID#DATA" or "ID#DATA".
-line_result parse_line(std::string_view line, line_frame& out) {
-    line = trim(line);
-    if (line.empty() || line[0] == '#' || line.substr(0, 2) == "//") return line_result::skip;
-    out.ms.reset();
-    if (line[0] == '(') {
-        const auto close = line.find(')');
-        if (close == std::string_view::npos) return line_result::bad;
-        const auto stamp = line.substr(1, close - 1);
-        const auto dot = stamp.find('.');
-        const auto sec = parse_number(stamp.substr(0, dot));
-        if (!sec) return line_result::bad;
-        std::uint64_t ms = std::uint64_t{*sec} * 1000;
-        if (dot != std::string_view::npos) {
-            auto frac = stamp.substr(dot + 1);
-            std::uint32_t f = 0;
-            for (std::size_t i = 0; i < 3; ++i) {
-                const char c = i < frac.size() ? frac[i] : '0';
-                if (c < '0' || c > '9') return line_result::bad;
-                f = f * 10 + static_cast<std::uint32_t>(c - '0');
-            }
-            ms += f;
-        }
-        out.ms = static_cast<std::uint32_t>(ms);
-        line = trim(line.substr(close + 1));
-        const auto space = line.find_first_of(" \t");  // the interface
-        if (space == std::string_view::npos) return line_result::bad;
-        line = trim(line.substr(space));
+int run_check(const options& c, const check_options& o) {
+    pb::checker_config config;
+    config.keypad_model = c.keypad;
+    config.node = c.node;
+    for (const auto& [name, text, into] :
+         {std::tuple{"--sdo-timeout", &o.sdo_timeout, &config.sdo_timeout},
+          std::tuple{"--heartbeat", &o.heartbeat, &config.heartbeat_period},
+          std::tuple{"--key-period", &o.key_period, &config.key_state_period}}) {
+        if (text->empty()) continue;
+        std::uint64_t n = 0;
+        if (!parse_number(*text, n) || n > 0xFFFF'FFFFu)
+            return usage_error(std::string(name) + ": expected milliseconds (200), got '" +
+                               escape(*text, 32) + "'");
+        *into = pb::duration_ms{static_cast<std::uint32_t>(n)};
     }
-    const auto f = powerkey::can::parse_candump(line);
-    if (!f) return line_result::bad;
-    out.frame = *f;
-    return line_result::frame;
-}
-
-struct found {
-    std::size_t file;
-    pb::problem problem;
-};
-
-void put_json_string(std::string& out, std::string_view s) {
-    out += '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    out += '"';
+    output out;
+    input_counts counts;
+    check_handler handler(config, o.json, o.files.size() > 1, out);
+    read_inputs(o.files, handler, out, counts);
+    out.flush();
+    return handler.found() > 0 ? status_input : status();
 }
 
 }  // namespace
 
-int run_check(int argc, char** argv) {
-    const auto opt = parse_options(argc, argv);
-    if (!opt) {
-        usage(std::cerr);
-        return 2;
-    }
-    std::vector<std::string> files = opt->files;
-    if (files.empty()) files.emplace_back("-");
-    std::vector<found> problems;
-    bool bad_input = false;
-    for (std::size_t fi = 0; fi < files.size(); ++fi) {
-        // Each file is a log of its own: its own time, its own keypad state.
-        pb::checker<> checker(opt->config);
-        std::uint32_t now = 0;
-        std::ifstream file;
-        std::istream* in = &std::cin;
-        if (files[fi] != "-") {
-            file.open(files[fi]);
-            if (!file) {
-                std::cerr << "powerkey: " << files[fi] << ": cannot open\n";
-                bad_input = true;
-                continue;
-            }
-            in = &file;
-        }
-        std::string text;
-        std::uint32_t line = 0;
-        while (std::getline(*in, text)) {
-            ++line;
-            line_frame lf;
-            const auto r = parse_line(text, lf);
-            if (r == line_result::skip) continue;
-            if (r == line_result::bad) {
-                std::cerr << "powerkey: " << files[fi] << ":" << line
-                          << ": malformed line (expected (TIME) IFACE ID#DATA)\n";
-                bad_input = true;
-                continue;
-            }
-            if (lf.ms) now = *lf.ms;
-            for (const auto& p : checker.step(lf.frame, pb::millis{now}, line))
-                problems.push_back({fi, p});
-        }
-        // The end of the file: what is still unanswered there.
-        for (const auto& p : checker.finish(pb::millis{now})) problems.push_back({fi, p});
-    }
-    std::stable_sort(problems.begin(), problems.end(), [](const found& a, const found& b) {
-        return a.file != b.file ? a.file < b.file : a.problem.line < b.problem.line;
-    });
-    const bool several = files.size() > 1;
-    for (const auto& f : problems) {
-        std::array<char, 200> buf{};
-        const auto t = pb::explain(f.problem, buf);
-        const std::string_view text = t ? *t : std::string_view(buf.data(), buf.size());
-        const auto kind = powerkey::to_string(f.problem.kind);
-        if (opt->json) {
-            std::string out = "{";
-            if (several) {
-                out += "\"file\":";
-                put_json_string(out, files[f.file]);
-                out += ',';
-            }
-            out += "\"line\":" + std::to_string(f.problem.line) + ",\"kind\":";
-            put_json_string(out, kind);
-            out += ",\"detail\":[" + std::to_string(f.problem.detail[0]) + "," +
-                   std::to_string(f.problem.detail[1]) + "," + std::to_string(f.problem.detail[2]) +
-                   "],\"text\":";
-            put_json_string(out, text);
-            out += "}";
-            std::cout << out << "\n";
-        } else {
-            if (several) std::cout << files[f.file] << ":";
-            std::cout << f.problem.line << ": " << kind << ": " << text << "\n";
-        }
-    }
-    return problems.empty() && !bad_input ? 0 : 1;
+void add_check(registry& r) {
+    static check_options o;
+    auto& sub =
+        r.add({"check",
+               "--model M [--node N] [--json] [--sdo-timeout MS] [--heartbeat MS]\n"
+               "  [--key-period MS] [FILE...]",
+               "a bus log checked against the keypad's rules (docs/controller.md)",
+               "  --json       one JSON object per problem\n"
+               "  --sdo-timeout MS  a request unanswered this long is sdo_no_reply (default 200)\n"
+               "  --heartbeat MS, --key-period MS  the periods set before the log starts\n",
+               model_use::required},
+              [&r] { return run_check(r.common(), o); });
+    sub.add_flag("--json", o.json);
+    sub.add_option("--sdo-timeout", o.sdo_timeout);
+    sub.add_option("--heartbeat", o.heartbeat);
+    sub.add_option("--key-period", o.key_period);
+    sub.add_option("FILE", o.files);
 }
+
+}  // namespace tool

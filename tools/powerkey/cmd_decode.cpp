@@ -1,7 +1,9 @@
 // powerkey decode: every frame of a log, in text or JSON lines, with a summary on standard error.
-#include "common.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+#include "field_value.hpp"
+#include "input.hpp"
 #include "json_writer.hpp"
-#include "log_formats.hpp"
 #include "show.hpp"
 
 #include <nlohmann/json.hpp>
@@ -9,13 +11,9 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
-#include <cerrno>
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +22,16 @@ namespace tool {
 namespace {
 using namespace powerkey;
 using namespace std::string_view_literals;
+
+struct decode_options {
+    bool json = false;
+    bool show = false;
+    // For the benchmark (scripts/bench_cli.sh): read and parse only, or decode without output.
+    bool parse_only = false;
+    bool quiet = false;
+    bool nlohmann_writer = false;  // decode --json through nlohmann::json (for the benchmark)
+    std::vector<std::string> files;
+};
 
 // --- the frame's own part of a line
 // ---------------------------------------------------------------
@@ -89,8 +97,7 @@ struct counts {
     std::size_t foreign = 0;  // other nodes' frames, and frames no keypad sends or receives
     std::map<std::string_view, std::size_t> refused;  // keypad frames the decoder refused
     std::array<std::size_t, 128> per_node{};          // frames of per-node COB-IDs, by node
-    std::size_t bad_lines = 0;
-    std::array<std::size_t, logs::skip_kinds> skipped{};
+    input_counts read;                                // lines and frames the readers passed over
     [[nodiscard]] std::size_t refused_total() const {
         std::size_t n = 0;
         for (const auto& [k, v] : refused) n += v;
@@ -100,12 +107,12 @@ struct counts {
 
 // --- one decoding pass --------------------------------------------------------------------------
 
-class decoder {
+class decoder final : public frame_handler {
 public:
-    decoder(const options& o, model m)
-        : o_(o), session_(m, o.node), picture_(m), tty_(isatty(1) != 0) {}
+    decoder(const options& c, const decode_options& o, model m)
+        : o_(o), session_(m, c.node), picture_(m), tty_(isatty(1) != 0) {}
 
-    void frame(const logs::record& r) {
+    void frame(const logs::record& r) override {
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
@@ -345,7 +352,7 @@ private:
         out += j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
     }
 
-    const options& o_;
+    const decode_options& o_;
     session<256> session_;
     keypad_picture picture_;
     bool tty_;
@@ -353,141 +360,6 @@ private:
     counts counts_;
     output out_;
 };
-
-// --- reading the inputs
-// ---------------------------------------------------------------------------
-
-// Turns a reader's findings into at most a few lines per kind of problem, and one clear message
-// for a file that is not a log at all.
-template <class OnFrame>
-class file_sink final : public logs::sink {
-public:
-    file_sink(std::string label, OnFrame on_frame, output& out)
-        : label_(std::move(label)), on_frame_(on_frame), out_(out) {}
-
-    void frame(const logs::record& r) override {
-        if (!any_frame_) {
-            any_frame_ = true;
-            for (const auto& h : held_) emit(h);
-            held_.clear();
-        }
-        on_frame_(r);
-    }
-    void problem(std::size_t line, std::string_view why, std::string_view text) override {
-        ++problems_;
-        if (++by_why_[why] > shown_per_kind) return;
-        std::string m = label_ + ":" + std::to_string(line) + ": " + std::string(why);
-        if (!text.empty()) m += ": '" + escape(text, 60) + "'";
-        if (any_frame_)
-            emit(m);
-        else
-            held_.push_back(std::move(m));
-    }
-
-    // At the end of the file: the counts of what was not shown, or the one message.
-    void finish(const logs::reader& r, counts& c) {
-        c.bad_lines += problems_;
-        for (std::size_t k = 0; k < logs::skip_kinds; ++k) {
-            const auto s = static_cast<logs::skip>(k);
-            const auto n = r.skipped(s);
-            c.skipped[k] += n;
-            if (n == 0) continue;
-            out_.flush();
-            report(label_,
-                   std::to_string(n) + " " + std::string(to_string(s)) + (n == 1 ? "" : "s") +
-                       " not decoded (not supported by powerkey), the first at line " +
-                       std::to_string(r.first_skipped(s)),
-                   false);
-        }
-        if (r.detected() == logs::format::not_a_log) {
-            out_.flush();
-            report(label_, "looks like " + r.looks_like() + ", not a CAN log powerkey reads; " +
-                               advice(r.looks_like()));
-            return;
-        }
-        if (!any_frame_ && problems_ > 0) {
-            out_.flush();
-            std::string first = held_.empty() ? std::string() : held_.front();
-            if (first.starts_with(label_ + ":")) first.erase(0, label_.size() + 1);
-            report(label_, "no line is a CAN frame powerkey reads (line " + first +
-                               "); it reads candump and cansend lines, Vector ASC, PEAK TRC, "
-                               "python-can CSV and Vector BLF (powerkey help lists the forms)");
-            return;
-        }
-        for (const auto& [why, n] : by_why_)
-            if (n > shown_per_kind) {
-                out_.flush();
-                report(label_, std::to_string(n - shown_per_kind) + " more lines like that (" +
-                                   std::string(why) + ")");
-            }
-    }
-
-private:
-    static constexpr std::size_t shown_per_kind = 3;
-    static std::string advice(std::string_view looks) {
-        if (looks.find("pcap") != std::string_view::npos)
-            return "record the bus with candump -l, or export the capture's CAN frames as a "
-                   "candump log";
-        if (looks.find("MDF") != std::string_view::npos)
-            return "export it as Vector ASC or BLF (CANoe, asammdf)";
-        if (looks.find("gzip") != std::string_view::npos)
-            return "unpack it: zcat FILE | powerkey decode";
-        if (looks.find("zip") != std::string_view::npos) return "unpack it first";
-        if (looks.find("JSON") != std::string_view::npos)
-            return "powerkey encode --json reads JSON lines";
-        return "it reads candump and cansend lines, Vector ASC, PEAK TRC, python-can CSV and "
-               "Vector BLF";
-    }
-    void emit(const std::string& m) {
-        out_.flush();
-        report("", m);
-    }
-
-    std::string label_;
-    OnFrame on_frame_;
-    output& out_;
-    bool any_frame_ = false;
-    std::size_t problems_ = 0;
-    std::map<std::string_view, std::size_t> by_why_;
-    std::vector<std::string> held_;
-};
-
-// Reads every input, calling on_frame for each frame. Live inputs (pipes, terminals) are read as
-// the bytes come, and the output is flushed after each read.
-template <class OnFrame>
-void read_inputs(const options& o, output& out, counts& c, OnFrame on_frame) {
-    std::vector<std::string> files = o.args;
-    if (files.empty()) files.push_back("-");
-    std::vector<char> buf(1u << 16);
-    for (const auto& path : files) {
-        const auto label = file_label(path);
-        const int fd = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY);
-        if (fd < 0) {
-            out.flush();
-            report(label, std::strerror(errno));
-            continue;
-        }
-        struct stat st {};
-        const bool live = ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || isatty(1) != 0;
-        file_sink sink(label, on_frame, out);
-        logs::reader reader(sink);
-        for (;;) {
-            const auto n = ::read(fd, buf.data(), buf.size());
-            if (n < 0 && errno == EINTR) continue;
-            if (n < 0) {
-                out.flush();
-                report(label, std::strerror(errno));
-                break;
-            }
-            if (n == 0) break;
-            reader.feed({buf.data(), static_cast<std::size_t>(n)});
-            if (live) out.flush();
-        }
-        reader.finish();
-        sink.finish(reader, c);
-        if (fd != 0) ::close(fd);
-    }
-}
 
 // --- --model auto
 // -----------------------------------------------------------------------------------
@@ -586,7 +458,7 @@ model choose_model(const options& o, const std::vector<stored>& log) {
 
 // --- the summary ------------------------------------------------------------------------------
 
-void summary(const options& o, const counts& c, model m) {
+void summary(const options& c0, const decode_options& o, const counts& c, model m) {
     std::string s = std::to_string(c.frames) + (c.frames == 1 ? " frame" : " frames");
     if (!o.parse_only) {
         s += ": " + std::to_string(c.decoded) + " decoded, " + std::to_string(c.foreign) +
@@ -601,13 +473,13 @@ void summary(const options& o, const counts& c, model m) {
             s += ")";
         }
     }
-    if (c.bad_lines > 0)
-        s += "; " + std::to_string(c.bad_lines) + (c.bad_lines == 1 ? " bad line" : " bad lines");
+    const auto bad = c.read.bad_lines;
+    if (bad > 0) s += "; " + std::to_string(bad) + (bad == 1 ? " bad line" : " bad lines");
     for (std::size_t k = 0; k < logs::skip_kinds; ++k)
-        if (c.skipped[k] > 0)
-            s += "; " + std::to_string(c.skipped[k]) + " " +
+        if (const auto n = c.read.skipped[k]; n > 0)
+            s += "; " + std::to_string(n) + " " +
                  std::string(to_string(static_cast<logs::skip>(k))) +
-                 (c.skipped[k] == 1 ? " skipped" : "s skipped");
+                 (n == 1 ? " skipped" : "s skipped");
     report("summary", s, false);
     if (o.parse_only) return;
     // A log that decodes badly under the model: say what to try.
@@ -616,50 +488,85 @@ void summary(const options& o, const counts& c, model m) {
     if (refused >= 3 && refused * 5 >= keypad) {
         std::string h = std::to_string(refused) + " of " + std::to_string(keypad) +
                         " keypad frames refused as " + std::string(to_string(m)) + " frames; ";
-        h += o.model_auto ? "no model reads this log well: check --node"
-                          : "if the keypad is another model, try --model auto (or --model " +
-                                model_names() + ")";
+        h += c0.model_auto ? "no model reads this log well: check --node"
+                           : "if the keypad is another model, try --model auto (or --model " +
+                                 model_names() + ")";
         report("hint", h, false);
     }
     std::size_t top = 0;
     for (std::size_t n = 1; n < 128; ++n)
         if (c.per_node[n] > c.per_node[top]) top = n;
-    if (top != 0 && top != o.node.value() && keypad * 4 < c.frames &&
+    if (top != 0 && top != c0.node.value() && keypad * 4 < c.frames &&
         c.per_node[top] * 2 > c.frames) {
         std::string h = "most frames are of node ";
         append_hex_h(h, top, 2);
         h += ", not of keypad ";
-        append_hex_h(h, o.node.value(), 2);
+        append_hex_h(h, c0.node.value(), 2);
         h += ": try --node ";
         append_hex_h(h, top, 2);
         report("hint", h, false);
     }
 }
 
-}  // namespace
-
-int run_decode(const options& o) {
-    model m = o.keypad;
-    counts read_counts;
-    std::vector<stored> log;
-    if (o.model_auto) {
-        output none;
-        read_inputs(o, none, read_counts, [&](const logs::record& r) {
-            log.push_back({r.frame, std::string(r.time), std::string(r.interface), r.line});
-        });
-        m = choose_model(o, log);
+// Reads everything first (--model auto).
+class collector final : public frame_handler {
+public:
+    explicit collector(std::vector<stored>& log) : log_(log) {}
+    void frame(const logs::record& r) override {
+        log_.push_back({r.frame, std::string(r.time), std::string(r.interface), r.line});
     }
-    decoder d(o, m);
-    if (o.model_auto) {
+
+private:
+    std::vector<stored>& log_;
+};
+
+int run_decode(const options& c, const decode_options& o) {
+    model m = c.keypad;
+    input_counts read_counts;
+    std::vector<stored> log;
+    if (c.model_auto) {
+        output none;
+        collector all(log);
+        read_inputs(o.files, all, none, read_counts);
+        m = choose_model(c, log);
+    }
+    decoder d(c, o, m);
+    if (c.model_auto) {
         for (const auto& r : log) d.frame({r.frame, r.time, r.interface, r.line});
-        d.stats().bad_lines = read_counts.bad_lines;
-        d.stats().skipped = read_counts.skipped;
+        d.stats().read = read_counts;
     } else {
-        read_inputs(o, d.out(), d.stats(), [&d](const logs::record& r) { d.frame(r); });
+        read_inputs(o.files, d, d.out(), d.stats().read);
     }
     d.out().flush();
-    summary(o, d.stats(), m);
-    return failures == 0 ? 0 : 1;
+    summary(c, o, d.stats(), m);
+    return status();
+}
+
+}  // namespace
+
+void add_decode(registry& r) {
+    static decode_options o;
+    auto& sub = r.add(
+        {"decode", "[--model M|auto] [--node N] [--json | --show] [FILE...]",
+         "every frame of a bus log, in text or JSON lines",
+         "  --json       JSON lines, one per frame (docs/cli.md has the schema)\n"
+         "  --show       draw the keypad after each frame that changes it (not with --json)\n",
+         model_use::or_auto},
+        [&r] {
+            if (o.json && o.show)
+                return usage_error(
+                    "--show draws pictures for people and --json writes lines for programs: use "
+                    "one");
+            if (o.nlohmann_writer && !o.json)
+                return usage_error("--nlohmann-writer is an option of decode --json");
+            return run_decode(r.common(), o);
+        });
+    sub.add_flag("--json", o.json);
+    sub.add_flag("--show", o.show);
+    sub.add_flag("--parse-only", o.parse_only);
+    sub.add_flag("--quiet", o.quiet);
+    sub.add_flag("--nlohmann-writer", o.nlohmann_writer);
+    sub.add_option("FILE", o.files);
 }
 
 }  // namespace tool
