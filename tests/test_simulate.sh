@@ -48,6 +48,16 @@ printf '(1.000000) can0 721#00\n(1.001000) can0 5A1#4B17100000000000\n' > "$tmp/
 diff "$tmp/want" "$tmp/out" || fail "dropped: output differs"
 [ "$(cat "$tmp/err")" = "powerkey: <stdin>:2: the keypad drops this SDO request: the request of <stdin>:1 (1017h sub 0) is not answered yet" ] ||
   fail "dropped request not said: $(cat "$tmp/err")"
+# Many dropped requests: three said, the others counted, as problems are.
+for i in $(seq 1 50); do echo "(1.0000) can0 621#4017100000000000"; done |
+  sim --model pkp2400 --node 0x21 > /dev/null 2> "$tmp/err" || fail "many dropped: exit status $?"
+[ "$(wc -l < "$tmp/err")" -eq 4 ] && tail -1 "$tmp/err" | grep -qx "powerkey: <stdin>: 46 more lines like that (the keypad drops an SDO request)" ||
+  fail "many dropped requests: $(cat "$tmp/err")"
+# Many dropped requests: three said, the others counted, as problems are.
+for i in $(seq 1 50); do echo "(1.0000) can0 621#4017100000000000"; done |
+  sim --model pkp2400 --node 0x21 > /dev/null 2> "$tmp/err" || fail "many dropped: exit status $?"
+[ "$(wc -l < "$tmp/err")" -eq 4 ] && tail -1 "$tmp/err" | grep -qx "powerkey: <stdin>: 46 more lines like that (the keypad drops an SDO request)" ||
+  fail "many dropped requests: $(cat "$tmp/err")"
 
 # A node change on the PKP: the reply from the old id, then the boot-up from the new one.
 echo '(5.000000) can0 615#2300650170180000' | sim --model PKP-2200-LI > "$tmp/out"

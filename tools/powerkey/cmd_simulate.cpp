@@ -21,6 +21,7 @@
 #include <cinttypes>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -140,6 +141,8 @@ int run_simulate(const options& c, const simulate_options& o) {
         const auto& f = frames[index - 1];
         return in.labels[f.input] + ":" + std::to_string(f.line);
     };
+    // Dropped requests are notes, not failures, capped per input as problems are.
+    std::map<std::size_t, problem_cap> drops;
     const auto check = [&](const can::frame& f, std::uint32_t t, std::uint32_t index) {
         for (const auto& p : conversation.step(f, behaviour::millis{t}, index)) {
             if (p.kind != behaviour::problem_kind::sdo_overlap || index == 0) continue;
@@ -148,7 +151,9 @@ int run_simulate(const options& c, const simulate_options& o) {
             append_hex_h(why, p.detail[1], 4);
             why += " sub " + std::to_string(p.detail[2]) + ") is not answered yet";
             out.flush();
-            report(where(index), why, false);
+            const auto& from = frames[index - 1];
+            auto cap = drops.try_emplace(from.input, in.labels[from.input], false).first;
+            cap->second.add(from.line, why, {}, false, "the keypad drops an SDO request");
         }
     };
     const auto print = [&](std::uint32_t t) {
@@ -189,6 +194,7 @@ int run_simulate(const options& c, const simulate_options& o) {
         print(t);
     }
     out.flush();
+    for (auto& [input, cap] : drops) cap.finish();
     return status();
 }
 

@@ -24,7 +24,7 @@ void problem_cap::add(std::size_t line, std::string_view why, std::string_view t
     auto it = by_why_.find(kind);
     if (it == by_why_.end()) it = by_why_.emplace(std::string(kind), 0).first;
     if (++it->second > shown_per_kind) {
-        ++failures;  // counted, said at the end
+        if (failures_) ++failures;  // counted, said at the end
         return;
     }
     std::string m = label_;
@@ -34,9 +34,9 @@ void problem_cap::add(std::size_t line, std::string_view why, std::string_view t
     if (!text.empty()) m += ": '" + escape(text, 60) + "'";
     if (hold) {
         held_.push_back(std::move(m));
-        ++failures;
+        if (failures_) ++failures;
     } else {
-        report("", m);
+        report("", m, failures_);
     }
 }
 

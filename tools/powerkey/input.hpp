@@ -31,7 +31,10 @@ class problem_cap {
 public:
     static constexpr std::size_t shown_per_kind = 3;
 
-    explicit problem_cap(std::string label) : label_(std::move(label)) {}
+    // `count_failures`: whether the problems make the exit status 1 (false for notes on what is
+    // not wrong in the input, such as the requests a simulated keypad drops).
+    explicit problem_cap(std::string label, bool count_failures = true)
+        : label_(std::move(label)), failures_(count_failures) {}
 
     // A problem at `line` (0: none): `why`, then `text` (untrusted, escaped here) when not empty.
     // Problems are capped per `kind` (default: why).
@@ -50,6 +53,7 @@ public:
 
 private:
     std::string label_;
+    bool failures_;
     std::size_t count_ = 0;
     std::map<std::string, std::size_t, std::less<>> by_why_;
     std::vector<std::string> held_;
