@@ -14,7 +14,10 @@
 #include <unistd.h>
 
 #include <array>
+#include <charconv>
+#include <cstring>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -48,7 +51,8 @@ std::uint8_t node_of(const session_event& e) {
     return e.cls.node != 0 ? e.cls.node : e.node.value();
 }
 
-void write_generic_fields(json::object_writer& w, const can::frame& f, const session_event& e) {
+template <class Writer>
+void write_generic_fields(Writer& w, const can::frame& f, const session_event& e) {
     switch (e.cls.fn) {
         case canopen::function::nmt:
             if (const auto m = canopen::decode_nmt(f)) {
@@ -132,13 +136,14 @@ public:
         const bool picture = o_.show && e.decoded && picture_.update(*e.decoded);
         if (o_.show && tty_ && shown_)
             out += "\x1b[1A\r\x1b[2K"sv;  // the picture stays at the bottom
-        if (o_.json && o_.nlohmann_writer)
+        if (o_.json && o_.nlohmann_writer) {
             nlohmann_line(out, r, e, pkp_j1939);
-        else if (o_.json)
-            json_line(out, r, e, pkp_j1939);
-        else
-            text_line(out, r, e, foreign, pkp_j1939);
-        out += '\n';
+            out += '\n';
+        } else if (o_.json) {
+            json_line(out, r, e, pkp_j1939);  // with its line end
+        } else {
+            text_line(out, r, e, foreign, pkp_j1939);  // with its line end
+        }
         if (o_.show && (picture || (tty_ && shown_))) {
             out += picture_.draw();
             shown_ = true;
@@ -154,26 +159,9 @@ private:
     void text_line(std::string& out, const logs::record& r, const session_event& e, bool foreign,
                    bool pkp_j1939) {
         const auto n = node_of(e);
-        // The common head, "(time) can0 215#0000010000000008       node 15h  ", in one append
-        // (the appends are what the text output costs); escaped text takes the slow path.
-        char head[128];
-        std::size_t k = 0;
-        auto put = [&](std::string_view t) {
-            for (char c : t) head[k++] = c;
-        };
         const bool fast =
             r.time.size() <= 32 && r.interface.size() <= 16 && plain(r.time) && plain(r.interface);
-        if (fast) {
-            if (!r.time.empty()) {
-                head[k++] = '(';
-                put(r.time);
-                put(") ");
-            }
-            if (!r.interface.empty()) {
-                put(r.interface);
-                head[k++] = ' ';
-            }
-        } else {
+        if (!fast) {  // escaped text, before the line buffer takes the rest
             if (!r.time.empty()) {
                 out += '(';
                 append_untrusted(out, r.time, 32);
@@ -184,101 +172,150 @@ private:
                 out += ' ';
             }
         }
-        const auto frame_start = k;
-        const int id_digits = r.frame.is_extended() ? 8 : 3;
-        for (int i = id_digits - 1; i >= 0; --i)
-            head[k++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
-        head[k++] = '#';
-        for (auto b : r.frame.data()) {
-            head[k++] = upper_hex[b >> 4];
-            head[k++] = upper_hex[b & 15];
-        }
-        while (k - frame_start < 25) head[k++] = ' ';
-        put("  ");
+        // The line in a stack buffer, appended once (the appends are what the output costs):
+        // "(time) can0 215#0000010000000008       node 15h  ..."
+        line_out line(out);
+        line.put_with(128, [&](char* head) {
+            std::size_t k = 0;
+            auto put = [&](std::string_view t) {
+                std::memcpy(head + k, t.data(), t.size());
+                k += t.size();
+            };
+            if (fast && !r.time.empty()) {
+                head[k++] = '(';
+                put(r.time);
+                put(") ");
+            }
+            if (fast && !r.interface.empty()) {
+                put(r.interface);
+                head[k++] = ' ';
+            }
+            const auto frame_start = k;
+            const int id_digits = r.frame.is_extended() ? 8 : 3;
+            for (int i = id_digits - 1; i >= 0; --i)
+                head[k++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
+            head[k++] = '#';
+            for (auto b : r.frame.data()) {
+                head[k++] = upper_hex[b >> 4];
+                head[k++] = upper_hex[b & 15];
+            }
+            if (k - frame_start < 25) {
+                std::memset(head + k, ' ', 25 - (k - frame_start));
+                k = frame_start + 25;
+            }
+            put("  ");
+            return k;
+        });
+        const auto hex_h = [&line](std::uint64_t v, int digits) {
+            line.put_with(18, [&](char* p) {
+                for (int i = 0; i < digits; ++i)
+                    p[i] = upper_hex[(v >> (4 * (digits - 1 - i))) & 15];
+                p[digits] = 'h';
+                return static_cast<std::size_t>(digits) + 1;
+            });
+        };
         if (e.decoded) {
-            out.append(head, k);
-            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part
-            append_message_text(out, *e.decoded, canopen::node_id::make(n).value_or(e.node));
-        } else {
-            out.append(head, k);
-        }
-        if (e.decoded) {
-            // the message is written above
+            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part; 160
+            // characters hold every message
+            line.put_with(256, [&](char* p) -> std::size_t {
+                const auto text = describe(*e.decoded, canopen::node_id::make(n).value_or(e.node),
+                                           std::span<char>(p, 256));
+                return text ? text->size() : 256;
+            });
         } else if (pkp_j1939) {
-            out += "j1939  not a frame of a "sv;
-            out += to_string(session_.model());
-            out += " (it has no J1939)"sv;
+            line.put("j1939  not a frame of a "sv);
+            line.put(to_string(session_.model()));
+            line.put(" (it has no J1939)"sv);
         } else if (foreign && e.cls.fn == canopen::function::other) {
-            out += "unknown frame: no keypad uses COB-ID "sv;
-            append_hex_h(out, r.frame.raw_id(), 3);
+            line.put("unknown frame: no keypad uses COB-ID "sv);
+            hex_h(r.frame.raw_id(), 3);
         } else if (foreign) {
-            out += "node "sv;
-            append_hex_h(out, n, 2);
-            out += "  "sv;
-            out += to_string(e.cls.fn);
-            out += "  another node's frame (keypad is "sv;
-            append_hex_h(out, e.node.value(), 2);
-            out += ')';
+            line.put("node "sv);
+            hex_h(n, 2);
+            line.put("  "sv);
+            line.put(to_string(e.cls.fn));
+            line.put("  another node's frame (keypad is "sv);
+            hex_h(e.node.value(), 2);
+            line.put(')');
         } else {
-            out += "node "sv;
-            append_hex_h(out, n, 2);
-            out += "  "sv;
-            out += to_string(e.cls.fn);
-            out += "  error: "sv;
-            out += to_string(e.decoded.error());
+            line.put("node "sv);
+            hex_h(n, 2);
+            line.put("  "sv);
+            line.put(to_string(e.cls.fn));
+            line.put("  error: "sv);
+            line.put(to_string(e.decoded.error()));
         }
         if (e.sdo == sdo_pairing::reply) {
-            out += "  [reply to "sv;
-            append_hex_h(out, e.request.index, 4);
-            out += " sub "sv;
-            append_decimal(out, e.request.subindex);
-            out += ']';
+            line.put("  [reply to "sv);
+            hex_h(e.request.index, 4);
+            line.put(" sub "sv);
+            line.put_with(3, [&](char* p) {
+                return static_cast<std::size_t>(std::to_chars(p, p + 3, e.request.subindex).ptr -
+                                                p);
+            });
+            line.put(']');
         } else if (e.sdo == sdo_pairing::unanswered) {
-            out += "  [reply to no request]"sv;
+            line.put("  [reply to no request]"sv);
         }
         if (e.upload_done) {
-            out += "  [text: \""sv;
-            append_escaped(out, session_.text(), 64);
-            out += "\"]"sv;
+            line.put("  [text: \""sv);
+            line.put(escape(session_.text(), 64));
+            line.put("\"]"sv);
         }
         if (e.upload_error != errc{}) {
-            out += "  [upload failed: "sv;
-            out += to_string(e.upload_error);
-            out += ']';
+            line.put("  [upload failed: "sv);
+            line.put(to_string(e.upload_error));
+            line.put(']');
         }
         if (e.new_node) {
-            out += "  [node id now "sv;
-            append_hex_h(out, e.new_node->value(), 2);
-            out += ']';
+            line.put("  [node id now "sv);
+            hex_h(e.new_node->value(), 2);
+            line.put(']');
         }
         if (e.new_protocol && e.decoded) {
-            out += "  [protocol now "sv;
-            out += to_string(*e.new_protocol);
-            out += ']';
+            line.put("  [protocol now "sv);
+            line.put(to_string(*e.new_protocol));
+            line.put(']');
         }
+        line.put('\n');
     }
 
     void json_line(std::string& out, const logs::record& r, const session_event& e,
                    bool pkp_j1939) {
-        json::object_writer w(out);
+        json::line_out line(out);  // the line in a stack buffer: one append to `out`
+        json::basic_object_writer w(line);
         if (!r.time.empty()) w.field("time", r.time);
         if (!r.interface.empty()) w.field("interface", r.interface);
         w.key("id");
-        out += '"';
-        append_hex(out, r.frame.raw_id(), r.frame.is_extended() ? 8 : 3);
-        out += '"';
+        const int id_digits = r.frame.is_extended() ? 8 : 3;
+        const auto data = r.frame.data();
+        line.put_with(2 + 8 + 8 + 2 + 16 + 1, [&](char* p) {
+            std::size_t n = 0;
+            p[n++] = '"';
+            for (int i = id_digits - 1; i >= 0; --i)
+                p[n++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
+            p[n++] = '"';
+            return n;
+        });
         w.field_bool("ext", r.frame.is_extended());
         w.key("data");
-        out += '"';
-        append_hex_bytes(out, r.frame.data().data(), r.frame.data().size());
-        out += '"';
+        line.put_with(2 + 16, [&](char* p) {
+            std::size_t n = 0;
+            p[n++] = '"';
+            for (const auto b : data) {
+                p[n++] = upper_hex[b >> 4];
+                p[n++] = upper_hex[b & 15];
+            }
+            p[n++] = '"';
+            return n;
+        });
         w.field("function", to_string(e.cls.fn));
         w.field("node", node_of(e));
         w.field("model", to_string(session_.model()));
         if (e.decoded) {
             w.field("kind", kind_of(*e.decoded));
             w.key("fields");
-            json::object_writer fw(out);
+            json::basic_object_writer fw(line);
             for_each_field(*e.decoded, [&fw](std::string_view name, const auto& v) {
                 fw.key(name);
                 write_json_value(fw, v);
@@ -294,6 +331,7 @@ private:
             w.field("protocol", to_string(*e.new_protocol));
         if (!e.decoded) w.field("error", to_string(e.decoded.error()));
         w.close();
+        line.put('\n');
     }
 
     // The same line through nlohmann::ordered_json, for the writer comparison of

@@ -14,17 +14,20 @@
 #include <nlohmann/json.hpp>
 #include <powerkey/fields.hpp>
 
+#include <array>
+#include <bit>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 
 namespace tool {
 
 // --- JSON writing -------------------------------------------------------------------------------
 
-template <class T>
-void write_json_value(json::object_writer& w, const T& v) {
+template <class Writer, class T>
+void write_json_value(Writer& w, const T& v) {
     if constexpr (std::is_same_v<T, bool>) {
         w.boolean(v);
     } else if constexpr (std::is_enum_v<T>) {
@@ -33,19 +36,22 @@ void write_json_value(json::object_writer& w, const T& v) {
         else
             w.number(static_cast<std::uint64_t>(v));
     } else if constexpr (powerkey::is_index_set<T>::value) {
-        w.raw("[");
+        w.raw('[');
         bool first = true;
-        for (unsigned i = 1; i <= T::max; ++i) {
-            if (!v.contains(i)) continue;
-            if (!first) w.raw(",");
+        for (auto bits = v.mask(); bits != 0; bits &= bits - 1) {  // bit 0 is number 1
+            if (!first) w.raw(',');
             first = false;
-            w.number(i);
+            w.number(static_cast<unsigned>(std::countr_zero(bits)) + 1);
         }
-        w.raw("]");
+        w.raw(']');
     } else if constexpr (powerkey::is_byte_array<T>::value) {
-        std::string hex;
-        for (auto b : v) append_hex(hex, b, 2);
-        w.string(hex);
+        char hex[2 * std::tuple_size_v<T>];
+        std::size_t n = 0;
+        for (const auto b : v) {
+            hex[n++] = upper_hex[b >> 4];
+            hex[n++] = upper_hex[b & 15];
+        }
+        w.string(std::string_view(hex, n));
     } else if constexpr (powerkey::is_bounded<T>::value) {
         w.number(v.value());
     } else {

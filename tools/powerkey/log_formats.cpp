@@ -26,14 +26,26 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-std::string_view next_token(std::string_view& s) {
+// The next word of s (words are split by spaces and tabs), taken off s; `hash` is where its
+// first '#' is (npos: none), found in the same pass. Called a few times for every line: always
+// inlined.
+[[gnu::always_inline]] inline std::string_view next_token(std::string_view& s, std::size_t& hash) {
     std::size_t i = 0;
     while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
     std::size_t n = i;
-    while (n < s.size() && s[n] != ' ' && s[n] != '\t') ++n;
+    hash = std::string_view::npos;
+    for (; n < s.size(); ++n) {
+        const char c = s[n];
+        if (c == ' ' || c == '\t') break;
+        if (c == '#' && hash == std::string_view::npos) hash = n - i;
+    }
     const auto t = s.substr(i, n - i);
     s.remove_prefix(n);
     return t;
+}
+[[gnu::always_inline]] inline std::string_view next_token(std::string_view& s) {
+    std::size_t hash = 0;
+    return next_token(s, hash);
 }
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
@@ -293,7 +305,55 @@ void reader::detect(std::string_view s) {
 // --- candump, cansend and candump's screen form
 // ---------------------------------------------------
 
+// The form of nearly every line of a large log, candump -l's "(SECONDS) IFACE ID#DATA" (a 3- or
+// 8-digit id, hex pairs, nothing after), read in one pass. Anything else, or anything odd, is
+// left to candump_line's general way (false), which reads these lines the same.
+bool reader::candump_fast(std::string_view s) {
+    const std::size_t n = s.size();
+    std::size_t i = 1;  // s[0] is '('
+    std::size_t whole = 0, fraction = 0;
+    bool point = false;
+    for (; i < n; ++i) {
+        const char c = s[i];
+        if (c >= '0' && c <= '9')
+            ++(point ? fraction : whole);
+        else if (c == '.' && !point)
+            point = true;
+        else
+            break;
+    }
+    if (i + 1 >= n || s[i] != ')' || s[i + 1] != ' ' || whole + fraction == 0 || whole > 12)
+        return false;
+    const auto time = s.substr(1, i - 1);
+    i += 2;
+    const std::size_t interface_at = i;
+    while (i < n && s[i] != ' ' && s[i] != '\t' && s[i] != '#') ++i;
+    if (i >= n || s[i] != ' ' || i == interface_at) return false;
+    const auto interface = s.substr(interface_at, i - interface_at);
+    const std::size_t id_at = ++i;
+    std::uint32_t id = 0;
+    for (int d = 0; i < n && (d = hex_digit(s[i])) >= 0; ++i)
+        id = (id << 4) | static_cast<std::uint32_t>(d);
+    const std::size_t digits = i - id_at;
+    if (i >= n || s[i] != '#' || (digits != 3 && digits != 8)) return false;
+    const bool extended = digits == 8;
+    if (extended ? id > 0x1FFF'FFFFu : id > 0x7FFu) return false;  // error frames, bad ids
+    ++i;
+    std::array<std::uint8_t, 8> data{};
+    std::size_t k = 0;
+    for (; i + 1 < n && k < data.size(); i += 2) {
+        const int hi = hex_digit(s[i]);
+        const int lo = hex_digit(s[i + 1]);
+        if (hi < 0 || lo < 0) break;
+        data[k++] = static_cast<std::uint8_t>((hi << 4) | lo);
+    }
+    if (i != n) return false;  // a direction, dots, an odd digit, a ninth byte, R, #...
+    emit_raw(id, extended, {data.data(), k}, time, interface);
+    return true;
+}
+
 void reader::candump_line(std::string_view s) {
+    if (s.front() == '(' && candump_fast(s)) return;
     if (s.front() == '#' || starts_with(s, "//")) return;
     const auto whole = s;
     std::string_view time;
@@ -301,20 +361,21 @@ void reader::candump_line(std::string_view s) {
         const auto close = s.find(')');
         if (close == std::string_view::npos) return bad("unclosed timestamp", whole);
         time = trim(s.substr(1, close - 1));
-        if (!parse_seconds(time))
+        if (!is_seconds(time))
             return bad("malformed timestamp (expected seconds like 1700000000.000000)", whole);
         s.remove_prefix(close + 1);
     }
     std::string_view rest = s;
-    const std::string_view first = next_token(rest);
+    std::size_t hash = 0;  // where the '#' of the frame's word is
+    const std::string_view first = next_token(rest, hash);
     std::string_view interface;
     std::string_view frame_text;
-    if (first.find('#') != std::string_view::npos) {
+    if (hash != std::string_view::npos) {
         frame_text = first;  // cansend form, maybe after a timestamp
     } else {
         interface = first;
-        std::string_view second = next_token(rest);
-        if (second.find('#') != std::string_view::npos) {
+        std::string_view second = next_token(rest, hash);
+        if (hash != std::string_view::npos) {
             frame_text = second;  // candump -l / -L form
         } else {
             // The screen form: [RX|TX flag flag] ID [len] bytes... ['ascii'] or "remote request"
@@ -362,7 +423,6 @@ void reader::candump_line(std::string_view s) {
     const auto after = next_token(rest);
     if (!after.empty() && !((after == "R" || after == "T") && trim(rest).empty()))
         return bad("unexpected text after the frame", whole);
-    const auto hash = frame_text.find('#');
     const auto id_text = frame_text.substr(0, hash);
     std::string_view data_text = frame_text.substr(hash + 1);
     std::uint32_t id = 0;
@@ -422,7 +482,7 @@ void reader::asc_line(std::string_view s) {
     std::string_view rest = s;
     const auto time = next_token(rest);
     if (time.empty() || time.front() < '0' || time.front() > '9') return;  // header, comments
-    if (!parse_seconds(time)) return bad("malformed ASC line (time)", s);
+    if (!is_seconds(time)) return bad("malformed ASC line (time)", s);
     auto channel = next_token(rest);
     const int base = asc_decimal_ ? 10 : 16;
     auto interface_of = [this](std::string_view ch) -> std::string_view {

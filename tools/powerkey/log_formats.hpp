@@ -108,6 +108,7 @@ private:
     bool detect_binary(std::string_view first_bytes);
     void detect(std::string_view first);
     void candump_line(std::string_view s);
+    bool candump_fast(std::string_view s);
     void asc_line(std::string_view s);
     void trc_line(std::string_view s);
     void csv_line(std::string_view s);

@@ -4,6 +4,7 @@
 #ifndef POWERKEY_TOOL_NUMBERS_HPP
 #define POWERKEY_TOOL_NUMBERS_HPP
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -12,12 +13,25 @@
 
 namespace tool {
 
+namespace detail {
+// The value of every byte as a hex digit, -1 for a byte that is none: one load per digit (a log
+// of a million lines reads thirty million digits).
+inline constexpr auto hex_values = [] {
+    std::array<signed char, 256> t{};
+    for (auto& v : t) v = -1;
+    for (int c = '0'; c <= '9'; ++c)
+        t[static_cast<std::size_t>(c)] = static_cast<signed char>(c - '0');
+    for (int c = 'A'; c <= 'F'; ++c) {
+        t[static_cast<std::size_t>(c)] = static_cast<signed char>(c - 'A' + 10);
+        t[static_cast<std::size_t>(c - 'A' + 'a')] = static_cast<signed char>(c - 'A' + 10);
+    }
+    return t;
+}();
+}  // namespace detail
+
 // 0..15 for a hex digit of either case, -1 for anything else.
 constexpr int hex_digit(char c) noexcept {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
+    return detail::hex_values[static_cast<unsigned char>(c)];
 }
 
 // Digits of one base only, as logs write them (no prefix, no sign): at most 8 hex or 10 decimal
@@ -55,6 +69,22 @@ constexpr bool parse_number(std::string_view s, std::uint64_t& out) noexcept {
     }
     out = v;
     return true;
+}
+
+// Whether parse_seconds reads s (digits, at most one point, a digit at least, at most 12 digits
+// of whole seconds), without computing the value: what a log reader checks on every line.
+constexpr bool is_seconds(std::string_view s) noexcept {
+    std::size_t whole = 0, fraction = 0;
+    bool point = false;
+    for (const char c : s) {
+        if (c >= '0' && c <= '9')
+            ++(point ? fraction : whole);
+        else if (c == '.' && !point)
+            point = true;
+        else
+            return false;
+    }
+    return whole + fraction > 0 && whole <= 12;
 }
 
 // Seconds as decimal digits with an optional fraction ("1700000000.000000", "0.42", "3"), in
