@@ -619,8 +619,12 @@ void reader::trc_line(std::string_view s) {
             return bad("malformed TRC line (data)", s);
         data[i] = static_cast<std::uint8_t>(b);
     }
+    // The offset is in milliseconds: read by the seconds reader, it is in thousandths of us.
+    const auto thousandths = parse_seconds(time);
+    if (!thousandths) return bad("malformed TRC line (time)", s);
+    const long long us = *thousandths / 1000;
     char t[40];
-    std::snprintf(t, sizeof t, "%.6f", std::strtod(std::string(time).c_str(), nullptr) / 1000.0);
+    std::snprintf(t, sizeof t, "%lld.%06lld", us / 1'000'000, us % 1'000'000);
     time_buf_ = t;
     std::string_view interface;
     if (std::uint32_t n = 0; parse_digits(bus, n, 10) && n > 0) {
