@@ -38,28 +38,34 @@
 
 namespace powerkey {
 
-enum class bus_protocol : std::uint8_t { canopen, j1939 };
+// clang-format off
+#define POWERKEY_BUS_PROTOCOL_LIST(X) \
+    X(canopen) \
+    X(j1939)
+// clang-format on
+enum class bus_protocol : std::uint8_t { POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // Where an SDO frame stands in its exchange.
-enum class sdo_pairing : std::uint8_t {
-    none,        // not an SDO frame of the keypad, or not decodable as one
-    request,     // a request (download, upload, segment); the session now waits for its reply
-    reply,       // the reply to the pending request: `request` says which object
-    unanswered,  // a reply when no request was pending, or for another object
-};
+// clang-format off
+#define POWERKEY_SDO_PAIRING_LIST(X) \
+    X(none)  /* not an SDO frame of the keypad, or not decodable as one */ \
+    X(request)  /* a request (download, upload, segment); the session now waits for its reply */ \
+    X(reply)  /* the reply to the pending request: `request` says which object */ \
+    X(unanswered)  /* a reply when no request was pending, or for another object */
+// clang-format on
+enum class sdo_pairing : std::uint8_t { POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 template <>
 struct enum_names<bus_protocol> {
-    static constexpr enum_name_entry<bus_protocol> entries[] = {{bus_protocol::canopen, "canopen"},
-                                                                {bus_protocol::j1939, "j1939"}};
+    using value_type = bus_protocol;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 template <>
 struct enum_names<sdo_pairing> {
-    using p = sdo_pairing;
-    static constexpr enum_name_entry<p> entries[] = {{p::none, "none"},
-                                                     {p::request, "request"},
-                                                     {p::reply, "reply"},
-                                                     {p::unanswered, "unanswered"}};
+    using value_type = sdo_pairing;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 // What one frame meant, and what it changed.
@@ -191,8 +197,8 @@ private:
     }
 
     // The writes that move the keypad to another node id or protocol.
-    constexpr void on_write(const message& m, session_event& e) noexcept {
-        if (const auto n = node_id_change(m); n && *n != node_) {
+    constexpr void on_write(const message& msg, session_event& e) noexcept {
+        if (const auto n = node_id_change(msg); n && *n != node_) {
             if (info_->replies_from_new_id) {  // PK1000 section 23: the reply comes from the new id
                 previous_node_ = node_;
                 node_ = *n;
@@ -201,7 +207,7 @@ private:
                 change_ = *n;
             }
         }
-        if (const auto* w = std::get_if<sdo_write>(&m);
+        if (const auto* w = std::get_if<sdo_write>(&msg);
             w && w->object == object::protocol_j1939 && w->value.raw == 1) {
             protocol_ = bus_protocol::j1939;  // PK1000 section 49
             e.new_protocol = protocol_;
@@ -283,17 +289,17 @@ private:
 
     // The CiA 301 view of a decoded reply that belongs to an upload (step_upload's callers made
     // sure it is one): a string read whole, a segmented upload's start, a segment, an abort.
-    constexpr canopen::sdo_response as_response(const message& m) const noexcept {
-        if (const auto* v = std::get_if<sdo_read_reply>(&m)) {
+    constexpr canopen::sdo_response as_response(const message& msg) const noexcept {
+        if (const auto* v = std::get_if<sdo_read_reply>(&msg)) {
             canopen::expedited_data d{
                 canopen::expedited_size::make(v->value.size).value_or(canopen::expedited_size{4}),
                 {}};
             detail::store_le<4>(d.bytes, 0, v->value.raw);
             return canopen::sdo_upload_response{address_of(v->object), d};
         }
-        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&m)) return *i;
-        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&m)) return *s;
-        if (const auto* a = std::get_if<canopen::sdo_abort_response>(&m)) return a->abort;
+        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&msg)) return *i;
+        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&msg)) return *s;
+        if (const auto* a = std::get_if<canopen::sdo_abort_response>(&msg)) return a->abort;
         return canopen::sdo_download_response{};  // not an upload's: the reader refuses it
     }
 
