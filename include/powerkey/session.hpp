@@ -68,12 +68,21 @@ struct enum_names<sdo_pairing> {
         POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
+// An SDO frame of the keypad as the session read it: which frame of the protocol (the SDO engine's
+// sdo_op) and the object it names (none for a segment or segment request).
+struct sdo_frame {
+    canopen::sdo_op op;
+    canopen::sdo_address address{};
+    friend constexpr bool operator==(const sdo_frame&, const sdo_frame&) noexcept = default;
+};
+
 // What one frame meant, and what it changed.
 struct session_event {
     canopen::cob_info cls;
     canopen::node_id node = canopen::default_node_id;  // the node the frame was decoded for
     result<message> decoded = errc::unexpected_frame;
     sdo_pairing sdo = sdo_pairing::none;
+    std::optional<powerkey::sdo_frame> sdo_frame;  // an SDO frame of the keypad: what it is
     canopen::sdo_address request{};  // the object of the request answered (sdo == reply)
     bool upload_done = false;        // a string upload (segmented or not) ended here: see text()
     errc upload_error{};             // a segmented upload failed with this frame (toggle, abort..)
@@ -106,9 +115,11 @@ public:
         e.decoded = decode(f, e.node, model_);
         const bool ours = e.cls.node == e.node.value();
         if (e.cls.fn == canopen::function::sdo_rx && ours) {
-            if (const auto s = sdo_frame_of(f, e)) on_request(*s, e);
+            e.sdo_frame = sdo_frame_of(f, e);
+            if (e.sdo_frame) on_request(*e.sdo_frame, e);
         } else if (e.cls.fn == canopen::function::sdo_tx && ours) {
-            if (const auto s = sdo_frame_of(f, e)) on_reply(*s, f, e);
+            e.sdo_frame = sdo_frame_of(f, e);
+            if (e.sdo_frame) on_reply(*e.sdo_frame, f, e);
         } else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
             protocol_ = bus_protocol::canopen;
             e.new_protocol = protocol_;
@@ -119,12 +130,6 @@ public:
 private:
     enum class pending_kind : std::uint8_t { none, download, upload, segmented };
 
-    // Which SDO frame of an exchange a frame is, and the object it names.
-    struct sdo_frame {
-        canopen::sdo_op op;
-        canopen::sdo_address address{};
-    };
-
     constexpr canopen::sdo_address address_of(object o) const noexcept {
         return detail::codec_rows[detail::find_codec_row(info_->dictionary, o)].address();
     }
@@ -132,34 +137,34 @@ private:
     // The SDO frame as decode returned it; for a frame decode refused (an object the dictionary
     // lacks, a value out of range), the SDO engine's reading of its specifier and address, so
     // that the keypad's abort still answers it.
-    constexpr std::optional<sdo_frame> sdo_frame_of(const can::frame& f,
-                                                    const session_event& e) const noexcept {
+    constexpr std::optional<powerkey::sdo_frame> sdo_frame_of(
+        const can::frame& f, const session_event& e) const noexcept {
         using op = canopen::sdo_op;
         if (e.decoded) {
             return std::visit(
-                [this](const auto& v) -> std::optional<sdo_frame> {
+                [this](const auto& v) -> std::optional<powerkey::sdo_frame> {
                     using T = std::remove_cvref_t<decltype(v)>;
                     if constexpr (std::is_same_v<T, sdo_read>)
-                        return sdo_frame{op::upload, address_of(v.object)};
+                        return powerkey::sdo_frame{op::upload, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, sdo_write>)
-                        return sdo_frame{op::expedited_download, address_of(v.object)};
+                        return powerkey::sdo_frame{op::expedited_download, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, command>)
-                        return sdo_frame{op::expedited_download,
-                                         address_of(object::command_module)};
+                        return powerkey::sdo_frame{op::expedited_download,
+                                                   address_of(object::command_module)};
                     else if constexpr (std::is_same_v<T, canopen::sdo_segment_request>)
-                        return sdo_frame{op::segment_request};
+                        return powerkey::sdo_frame{op::segment_request};
                     else if constexpr (std::is_same_v<T, canopen::sdo_abort_request>)
-                        return sdo_frame{op::abort_request, v.abort.address};
+                        return powerkey::sdo_frame{op::abort_request, v.abort.address};
                     else if constexpr (std::is_same_v<T, sdo_write_reply>)
-                        return sdo_frame{op::download_response, address_of(v.object)};
+                        return powerkey::sdo_frame{op::download_response, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, sdo_read_reply>)
-                        return sdo_frame{op::expedited_upload, address_of(v.object)};
+                        return powerkey::sdo_frame{op::expedited_upload, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>)
-                        return sdo_frame{op::upload_initiate, v.address};
+                        return powerkey::sdo_frame{op::upload_initiate, v.address};
                     else if constexpr (std::is_same_v<T, canopen::sdo_segment_response>)
-                        return sdo_frame{op::segment};
+                        return powerkey::sdo_frame{op::segment};
                     else if constexpr (std::is_same_v<T, canopen::sdo_abort_response>)
-                        return sdo_frame{op::abort_response, v.abort.address};
+                        return powerkey::sdo_frame{op::abort_response, v.abort.address};
                     else
                         return std::nullopt;
                 },
@@ -170,10 +175,10 @@ private:
         const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
                                                              : canopen::sdo_response_op(w);
         if (!o) return std::nullopt;
-        return sdo_frame{*o, w.address()};
+        return powerkey::sdo_frame{*o, w.address()};
     }
 
-    constexpr void on_request(const sdo_frame& s, session_event& e) noexcept {
+    constexpr void on_request(const powerkey::sdo_frame& s, session_event& e) noexcept {
         e.sdo = sdo_pairing::request;
         switch (s.op) {
             case canopen::sdo_op::expedited_download:
@@ -214,7 +219,8 @@ private:
         }
     }
 
-    constexpr void on_reply(const sdo_frame& s, const can::frame& f, session_event& e) noexcept {
+    constexpr void on_reply(const powerkey::sdo_frame& s, const can::frame& f,
+                            session_event& e) noexcept {
         e.sdo = sdo_pairing::unanswered;
         const pending_kind was = pending_;
         const canopen::sdo_address asked = pending_address_;

@@ -107,10 +107,10 @@ public:
         const canopen::node_id before = session_.node();
         const auto e = session_.step(f);
         if (e.sdo == sdo_pairing::request) {
-            on_request(f, e);
+            on_request(e);
         } else if (e.cls.fn == canopen::function::sdo_tx &&
                    (e.sdo == sdo_pairing::reply || e.sdo == sdo_pairing::unanswered)) {
-            on_response(f, e);
+            on_response(e);
         }
         if (c.fn == canopen::function::heartbeat && c.node == consumer_producer_ &&
             consumer_period_ != 0 && f.size() == 1 && f[0] != 0x00)
@@ -206,19 +206,20 @@ private:
             report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
-    constexpr void on_request(const can::frame& f, const session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_request(f, e.node);
-        if (!r) return;
-        if (std::holds_alternative<canopen::sdo_abort>(*r)) {  // the host ends the transfer
+    // The SDO frames as the session read them (e.sdo_frame: what each is and its object; the
+    // segment's toggle and the abort's code from what decode returned).
+    constexpr void on_request(const session_event& e) noexcept {
+        if (!e.sdo_frame) return;
+        const auto op = e.sdo_frame->op;
+        if (op == canopen::sdo_op::abort_request) {  // the host ends the transfer
             pending_.reset();
             segmented_ = false;
             return;
         }
-        canopen::sdo_address a{};
-        if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) a = d->address;
-        if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) a = u->address;
-        const auto* s = std::get_if<canopen::sdo_segment_request>(&*r);
-        if (s != nullptr) a = segment_address_;
+        const auto* s =
+            e.decoded ? std::get_if<canopen::sdo_segment_request>(&*e.decoded) : nullptr;
+        const canopen::sdo_address a =
+            op == canopen::sdo_op::segment_request ? segment_address_ : e.sdo_frame->address;
         if (pending_) {  // the keypad still owes a reply: it drops this one
             report(line_, problem_kind::sdo_overlap, pending_->line, pending_->address.index,
                    pending_->address.subindex);
@@ -231,36 +232,42 @@ private:
             request_toggle_ = s->toggle;
             expect_toggle_ = !s->toggle;
         }
-        if (s == nullptr) segmented_ = false;  // a new transfer
+        if (op != canopen::sdo_op::segment_request) segmented_ = false;  // a new transfer
         pending_ = outstanding{line_, now_, a};
     }
 
-    constexpr void on_response(const can::frame& f, const session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_response(f, e.node);
-        if (!r) return;
+    constexpr void on_response(const session_event& e) noexcept {
+        if (!e.sdo_frame) return;
         const bool answers = pending_.has_value();
         pending_.reset();
-        if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
-            report(line_, problem_kind::sdo_abort, static_cast<std::uint32_t>(a->code),
-                   a->address.index, a->address.subindex);
-            segmented_ = false;
-            return;
-        }
-        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
-            segmented_ = answers;
-            expect_toggle_ = false;
-            segment_address_ = i->address;
-            return;
-        }
-        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) {
-            if (!segmented_) return;
-            if (s->toggle != request_toggle_)
-                report(line_, problem_kind::segment_toggle, request_toggle_ ? 1u : 0u,
-                       s->toggle ? 1u : 0u, 1);
-            if (s->last) {
+        const auto* msg = e.decoded ? &*e.decoded : nullptr;
+        switch (e.sdo_frame->op) {
+            case canopen::sdo_op::abort_response: {
+                const auto* a = msg ? std::get_if<canopen::sdo_abort_response>(msg) : nullptr;
+                report(line_, problem_kind::sdo_abort,
+                       a ? static_cast<std::uint32_t>(a->abort.code) : 0u,
+                       e.sdo_frame->address.index, e.sdo_frame->address.subindex);
                 segmented_ = false;
-                if (e.upload_done) upload_size();
+                return;
             }
+            case canopen::sdo_op::upload_initiate:
+                segmented_ = answers;
+                expect_toggle_ = false;
+                segment_address_ = e.sdo_frame->address;
+                return;
+            case canopen::sdo_op::segment: {
+                const auto* s = msg ? std::get_if<canopen::sdo_segment_response>(msg) : nullptr;
+                if (!segmented_ || s == nullptr) return;
+                if (s->toggle != request_toggle_)
+                    report(line_, problem_kind::segment_toggle, request_toggle_ ? 1u : 0u,
+                           s->toggle ? 1u : 0u, 1);
+                if (s->last) {
+                    segmented_ = false;
+                    if (e.upload_done) upload_size();
+                }
+                return;
+            }
+            default: return;
         }
     }
 
