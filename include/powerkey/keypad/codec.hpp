@@ -32,6 +32,7 @@
 #include <powerkey/result.hpp>
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <variant>
 
@@ -90,10 +91,10 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
 
 // Kind K's value of row r, checked, as its message.
 template <class K>
-POWERKEY_DETAIL_HOT constexpr result<message> kind_message(const model_layout& keypad,
-                                                           const codec_row& r, std::uint8_t size,
-                                                           std::uint32_t data,
-                                                           bool write) noexcept {
+POWERKEY_DETAIL_INLINE constexpr result<message> kind_message(const model_layout& keypad,
+                                                              const codec_row& r, std::uint8_t size,
+                                                              std::uint32_t data,
+                                                              bool write) noexcept {
     if (const errc e = K::check(keypad, r, size, data, write); e != errc{}) return e;
     return value_answer(r, K::value(keypad, r, size, data), write);
 }
@@ -583,19 +584,13 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
     const detail::model_layout& keypad = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
     // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
-    // function code; a 29-bit frame's id word has bit 31 set, so it lands past the switch's 16
-    // codes, or where the node bits differ.
+    // function code: rotated right by 7, the function code alone. Any other frame rotates past
+    // the 16 codes (node bits set, or a 29-bit frame's bit 31), so one bounds test of the jump
+    // table sorts out every frame that is not this node's.
     const std::uint32_t id = f.id_word();
-    const std::uint32_t rest = id - node.value();
-    if ((rest & 0x7F) != 0) {
-        if (f.is_extended()) return detail::decode_extended(keypad, f);
-        // Node bits 0: only 000h (NMT) and 080h (SYNC) are for every node.
-        if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
-        if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
-        return errc::wrong_id;
-    }
+    const std::uint32_t code = std::rotr(id - node.value(), 7);
     // One jump table: each PDO case inlines its own body (decode_pdo of a constant code).
-    switch (rest >> 7) {
+    switch (code) {
         case 0x0:  // the node id as a COB-ID
         case 0x1:  // EMCY
         case 0x2:  // TIME
@@ -603,7 +598,7 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
         case 0xF: return errc::wrong_id;
         case 0x3: return detail::decode_pdo(keypad, 0x3, f);
         case 0x4:  // LEDs on and blinking: one body (smaller; the kind is one test at its end)
-        case 0x6: return detail::decode_pdo(keypad, rest >> 7, f);
+        case 0x6: return detail::decode_pdo(keypad, code, f);
         case 0x5: return detail::decode_pdo(keypad, 0x5, f);
         case 0x7: return detail::decode_pdo(keypad, 0x7, f);
         case 0x8: return detail::decode_pdo(keypad, 0x8, f);
@@ -616,7 +611,12 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
             if (!canopen::is_heartbeat_state(f[0])) return errc::value_out_of_range;
             return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
-        default: return detail::decode_extended(keypad, f);  // bit 31 set
+        default:
+            if (f.is_extended()) return detail::decode_extended(keypad, f);
+            // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
+            if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
+            if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
+            return errc::wrong_id;
     }
 }
 
