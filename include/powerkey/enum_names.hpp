@@ -28,9 +28,11 @@ struct enum_names;
 //       static constexpr enum_name_entry<errc> entries[] =
 //       {POWERKEY_ERRC_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 //   };
-// An enum whose names have aliases (two names for one value) writes its table by hand.
+// An enum whose values have second names lists them after the first (POWERKEY_DETAIL_ENUM_ALIAS).
 #define POWERKEY_DETAIL_ENUMERATOR(name, ...) name __VA_OPT__(= __VA_ARGS__),
 #define POWERKEY_DETAIL_ENUM_NAME(name, ...) {value_type::name, #name},
+// A second name for a value, read as well as the first (which is the one written).
+#define POWERKEY_DETAIL_ENUM_ALIAS(name, alias) {value_type::name, alias},
 
 namespace powerkey {}  // namespace powerkey
 

@@ -26,6 +26,16 @@ constexpr std::uint32_t hash_candidate(std::size_t t) noexcept {
     return x | 1u;
 }
 
+// Row + 1 of each code below N in `table` (a row's code read by `code_of`), 0 for none: finding a
+// row by its code (a command byte) is one load instead of a search.
+template <std::size_t N, class Table, class CodeOf>
+constexpr std::array<std::uint8_t, N> index_by_code(const Table& table, CodeOf code_of) noexcept {
+    std::array<std::uint8_t, N> t{};
+    for (std::size_t i = 0; i < std::size(table); ++i)
+        t[static_cast<std::size_t>(code_of(table[i]))] = static_cast<std::uint8_t>(i + 1);
+    return t;
+}
+
 // The distinct values added, in the order first seen; find() and add() give a value's index.
 // More than Cap values is not a constant expression (a table builder fails to compile).
 template <class T, std::size_t Cap>

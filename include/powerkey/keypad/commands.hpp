@@ -7,6 +7,7 @@
 #define POWERKEY_KEYPAD_COMMANDS_HPP
 
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/lookup.hpp>
 #include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/values.hpp>
@@ -87,13 +88,8 @@ inline constexpr startup_show command_shows[] = {startup_show::complete, startup
 }  // namespace detail
 
 namespace detail {
-// Row + 1 of each command byte below 80h, 0 for none: one load instead of a search.
-inline constexpr auto command_index = [] {
-    std::array<std::uint8_t, 0x80> t{};
-    for (std::size_t i = 0; i < std::size(command_table); ++i)
-        t[static_cast<std::size_t>(command_table[i].code)] = static_cast<std::uint8_t>(i + 1);
-    return t;
-}();
+inline constexpr auto command_index =
+    index_by_code<0x80>(command_table, [](const auto& row) { return row.code; });
 }  // namespace detail
 
 // The row of a command byte; nullopt for a byte no command has.

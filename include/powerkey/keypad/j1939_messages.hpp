@@ -15,6 +15,7 @@
 #define POWERKEY_KEYPAD_J1939_MESSAGES_HPP
 
 #include <powerkey/bounded.hpp>
+#include <powerkey/detail/lookup.hpp>
 #include <powerkey/detail/message.hpp>
 #include <powerkey/detail/proxy.hpp>
 #include <powerkey/enum_names.hpp>
@@ -39,17 +40,11 @@ namespace powerkey::j1939 {
 // controllers send as the secondary colour when there is none (docs/j1939.md): accepted there
 // only.
 enum class led_colour : std::uint8_t {
+    // clang-format off
     off = 0x00,
-    red = 0x01,
-    green = 0x02,
-    blue = 0x03,
-    yellow = 0x04,
-    cyan = 0x05,
-    violet = 0x06,
-    white = 0x07,
-    amber = 0x08,
-    yellow_green = 0x09,
+    POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
     not_used = 0xFF,
+    // clang-format on
 };
 
 namespace detail {
@@ -355,13 +350,8 @@ inline constexpr command_row command_table[] = {
     {cc::set_default_led_brightness, ft::default_led_brightness, cp::level, cp::none},
     {cc::set_default_backlight_colour, ft::default_backlight_colour, cp::colour, cp::none},
 };
-// Row + 1 of each command byte below 80h, 0 for none.
-inline constexpr auto command_index = [] {
-    std::array<std::uint8_t, 0x80> t{};
-    for (std::size_t i = 0; i < std::size(command_table); ++i)
-        t[static_cast<std::size_t>(command_table[i].code)] = static_cast<std::uint8_t>(i + 1);
-    return t;
-}();
+inline constexpr auto command_index =
+    powerkey::detail::index_by_code<0x80>(command_table, [](const auto& row) { return row.code; });
 }  // namespace detail
 
 // The row of a command byte; nullptr for a byte no configuration command has.
@@ -423,22 +413,15 @@ namespace powerkey {
 
 template <>
 struct enum_names<j1939::led_colour> {
-    using c = j1939::led_colour;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::off, "off"},
-        {c::red, "red"},
-        {c::green, "green"},
-        {c::blue, "blue"},
-        {c::yellow, "yellow"},
-        {c::cyan, "cyan"},
-        {c::violet, "violet"},
-        {c::white, "white"},
-        {c::amber, "amber"},
-        {c::yellow_green, "yellow_green"},
-        {c::not_used, "not_used"},
-        {c::violet, "magenta"},          // the J1939 manuals
-        {c::white, "white_light_blue"},  // the manuals' full names
-        {c::amber, "amber_orange"},
+    using value_type = j1939::led_colour;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        // clang-format off
+        {value_type::off, "off"},
+        POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)
+        {value_type::not_used, "not_used"},
+        {value_type::violet, "magenta"},  // the J1939 manuals
+        POWERKEY_COLOUR_CODE_ALIAS_LIST(POWERKEY_DETAIL_ENUM_ALIAS)
+        // clang-format on
     };
 };
 

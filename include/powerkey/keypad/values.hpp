@@ -24,6 +24,25 @@ struct level_tag;
 // .. 3Fh (100 %). PK1000 sections 14, 15, 19; PKP sections 13 b, i, j and 30.
 using level = bounded<level_tag, std::uint8_t, 0, 0x3F>;
 
+// The colour codes of the keypads, the same for the backlight in CANopen and the LEDs and
+// backlight in J1939 (j1939::led_colour): 01h..09h, amber the factory default (PK1000 section 3),
+// and the manuals' longer names as second names.
+// clang-format off
+#define POWERKEY_COLOUR_CODE_LIST(X) \
+    X(red, 0x01) \
+    X(green, 0x02) \
+    X(blue, 0x03) \
+    X(yellow, 0x04) \
+    X(cyan, 0x05) \
+    X(violet, 0x06) \
+    X(white, 0x07) \
+    X(amber, 0x08) \
+    X(yellow_green, 0x09)
+#define POWERKEY_COLOUR_CODE_ALIAS_LIST(X) \
+    X(white, "white_light_blue") \
+    X(amber, "amber_orange")
+// clang-format on
+
 // Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k). The PK1000 manual's names
 // "white/light blue" and "amber/orange" are aliases of white and amber. `keep` (00h) exists only
 // in the backlight PDO, where it keeps the stored colour (PK1000 section 15, note 2; PKP3500-MT
@@ -31,15 +50,7 @@ using level = bounded<level_tag, std::uint8_t, 0, 0x3F>;
 // (model_info::backlight_zero_is_default).
 enum class backlight_colour : std::uint8_t {
     keep = 0x00,
-    red = 0x01,
-    green = 0x02,
-    blue = 0x03,
-    yellow = 0x04,
-    cyan = 0x05,
-    violet = 0x06,
-    white = 0x07,
-    amber = 0x08,  // the factory default (PK1000 section 3)
-    yellow_green = 0x09,
+    POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 // Bit rate (PK1000 object 2010h, section 20: these are its codes; PKP command 11h codes are
@@ -194,20 +205,13 @@ struct leds {
 
 template <>
 struct enum_names<backlight_colour> {
-    using c = backlight_colour;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::keep, "keep"},
-        {c::red, "red"},
-        {c::green, "green"},
-        {c::blue, "blue"},
-        {c::yellow, "yellow"},
-        {c::cyan, "cyan"},
-        {c::violet, "violet"},
-        {c::white, "white"},
-        {c::amber, "amber"},
-        {c::yellow_green, "yellow_green"},
-        {c::white, "white_light_blue"},  // PK1000 manual
-        {c::amber, "amber_orange"},      // PK1000 manual
+    using value_type = backlight_colour;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        // clang-format off
+        {value_type::keep, "keep"},
+        POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)
+        POWERKEY_COLOUR_CODE_ALIAS_LIST(POWERKEY_DETAIL_ENUM_ALIAS)
+        // clang-format on
     };
 };
 
