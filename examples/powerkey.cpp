@@ -5,9 +5,10 @@
 //   powerkey list [--model M] [--node N]
 //   powerkey simulate --model M [--node N] [--press T:K] [--release T:K] [--until T] [FILE...]
 //   powerkey check --model M [--node N] [--json] [--sdo-timeout MS] [FILE...]
+//   powerkey export dbc --model M [--node N]
 // The options are read by CLI11; each subcommand is one file of tool/ (cmd_decode.cpp,
-// cmd_encode.cpp, cmd_list.cpp, and cmd_simulate.cpp, cmd_check.cpp, which read their own
-// options). docs/cli.md describes the options, the output and the exit status.
+// cmd_encode.cpp, cmd_list.cpp, cmd_export.cpp, and cmd_simulate.cpp, cmd_check.cpp, which read
+// their own options). docs/cli.md describes the options, the output and the exit status.
 #include "tool/common.hpp"
 
 #include <CLI/CLI.hpp>
@@ -32,6 +33,7 @@ constexpr std::string_view usage_text =
     "       powerkey simulate --model M [--node N] [--press T:K] [--release T:K] [--until T]\n"
     "                         [FILE...]\n"
     "       powerkey check --model M [--node N] [--json] [--sdo-timeout MS] [FILE...]\n"
+    "       powerkey export dbc --model M [--node N]\n"
     "       powerkey help | version\n"
     "\n"
     "  --model M    pk1000 (default), pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt,\n"
@@ -45,6 +47,7 @@ constexpr std::string_view usage_text =
     "  --broadcast  encode: an NMT command for every node (target 0) instead of --node\n"
     "  simulate     a virtual keypad answering a controller's frames (docs/behaviour.md)\n"
     "  check        a bus log checked against the keypad's rules (docs/controller.md)\n"
+    "  export dbc   the keypad's frames as a DBC file for CAN tools (docs/dbc.md)\n"
     "\n"
     "Input (told apart by content; FILE - or none reads standard input, as it arrives):\n"
     "  candump -l, -L     (1700000000.000000) can0 195#0900000012   (a trailing R or T too)\n"
@@ -89,9 +92,11 @@ int main(int argc, char** argv) {
     auto* encode = app.add_subcommand("encode");
     encode->add_option("ARG", o.args);
     auto* list = app.add_subcommand("list");
+    auto* export_command = app.add_subcommand("export");
+    auto* dbc = export_command->add_subcommand("dbc");
     auto* help_command = app.add_subcommand("help");
     auto* version_command = app.add_subcommand("version");
-    for (auto* sub : {decode, encode, list, help_command, version_command}) {
+    for (auto* sub : {decode, encode, list, export_command, dbc, help_command, version_command}) {
         sub->fallthrough();  // the options above may come before or after the subcommand
         sub->set_help_flag();
     }
@@ -148,6 +153,13 @@ int main(int argc, char** argv) {
         return usage_error("--parse-only and --quiet are options of decode");
     if (*decode) return tool::run_decode(o);
     if (*encode) return o.json ? tool::run_encode_json(o) : tool::run_encode(o);
+    if (*export_command && !*dbc) return usage_error("export: say what to export (dbc)");
+    if (*dbc) {
+        if (!o.model_given)
+            return usage_error("export dbc: --model is required (" + tool::model_names() + ")");
+        if (o.json) return usage_error("export dbc has no --json");
+        return tool::run_export_dbc(o);
+    }
     if (*list) {
         if (o.json) return usage_error("list has no --json");
         return tool::run_list(o);

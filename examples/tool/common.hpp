@@ -141,6 +141,7 @@ int run_decode(const options& o);
 int run_encode(const options& o);
 int run_encode_json(const options& o);
 int run_list(const options& o);
+int run_export_dbc(const options& o);  // cmd_export.cpp
 
 }  // namespace tool
 

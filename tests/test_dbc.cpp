@@ -1,0 +1,254 @@
+// The DBC writer (examples/tool/dbc.hpp) against the library, for every model: what a DBC reader
+// would not check (names, overlaps, multiplexor values) and what the library decides (each SDO
+// multiplexor value is the request or reply it names; each number's range is the one the decoder
+// accepts). tests/test_dbc.py reads the files with canmatrix and compares every sample-log frame.
+#include <doctest/doctest.h>
+
+#include "../examples/tool/dbc.hpp"
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/objects.hpp>
+#include <powerkey/names.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace {
+
+using namespace powerkey;
+namespace dbc = tool::dbc;
+
+constexpr canopen::node_id nodes[] = {0x15, 0x7F};
+
+bool identifier(std::string_view s) {
+    if (s.empty() || s.size() > dbc::name_limit || (s[0] >= '0' && s[0] <= '9')) return false;
+    return std::all_of(s.begin(), s.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_';
+    });
+}
+
+std::uint64_t field_mask(const dbc::signal& s) {
+    return (s.size >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << s.size) - 1) << s.start;
+}
+
+std::uint64_t place(const dbc::signal& s, std::uint64_t raw) {
+    return (raw << s.start) & field_mask(s);
+}
+
+// The signals present when the multiplexor has value `mux` (nullopt: a message without one).
+std::vector<const dbc::signal*> group(const dbc::message& m, std::optional<std::uint64_t> mux) {
+    std::vector<const dbc::signal*> out;
+    for (const auto& s : m.signals)
+        if (!s.multiplexor && (!s.mux || s.mux == mux)) out.push_back(&s);
+    return out;
+}
+
+const dbc::signal* multiplexor(const dbc::message& m) {
+    for (const auto& s : m.signals)
+        if (s.multiplexor) return &s;
+    return nullptr;
+}
+
+can::frame frame_of(const dbc::message& m, std::uint64_t data) {
+    can::payload p{};
+    for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(data >> (8 * i));
+    return can::frame(can::standard_id::make(m.id).value(), can::dlc::make(m.dlc).value(), p);
+}
+
+std::string_view kind_of_message(const message& msg) {
+    return std::visit([](const auto& v) -> std::string_view { return v.kind; }, msg);
+}
+
+std::optional<object> object_of(const message& msg) {
+    return std::visit(
+        [](const auto& v) -> std::optional<object> {
+            if constexpr (requires { v.object; })
+                return v.object;
+            else
+                return std::nullopt;
+        },
+        msg);
+}
+
+std::string label(model m, canopen::node_id n, const dbc::message& msg, std::string_view more) {
+    return std::string(to_string(m)) + " node " + std::to_string(n.value()) + " " + msg.name + " " +
+           std::string(more);
+}
+
+}  // namespace
+
+TEST_CASE("dbc: every model's names, sizes and multiplexor values are well formed") {
+    for (const auto m : enum_values<model>())
+        for (const auto n : nodes) {
+            const auto db = dbc::describe(m, n);
+            CHECK(identifier(db.name));
+            std::set<std::uint32_t> ids;
+            for (const auto& msg : db.messages) {
+                INFO(label(m, n, msg, ""));
+                CHECK(identifier(msg.name));
+                CHECK(ids.insert(msg.id).second);
+                CHECK(msg.dlc <= 8);
+                std::set<std::string> names;
+                for (const auto& s : msg.signals) {
+                    INFO(s.name);
+                    CHECK(identifier(s.name));
+                    CHECK(names.insert(s.name).second);
+                    CHECK(s.size >= 1);
+                    CHECK(s.start + s.size <= 8 * msg.dlc);
+                    CHECK(s.minimum <= s.maximum);
+                    CHECK(s.comment.find('"') == std::string::npos);
+                }
+                // Signals present together do not overlap; every multiplexed value is named.
+                const auto* mux = multiplexor(msg);
+                std::vector<std::optional<std::uint64_t>> groups{std::nullopt};
+                if (mux) {
+                    groups.clear();
+                    std::set<std::uint64_t> named;
+                    for (const auto& v : mux->values) CHECK(named.insert(v.value).second);
+                    for (const auto& s : msg.signals)
+                        if (s.mux) {
+                            CHECK(named.count(*s.mux) == 1);
+                            groups.push_back(*s.mux);
+                        }
+                }
+                for (const auto& g : groups) {
+                    std::uint64_t used = mux ? field_mask(*mux) : 0;
+                    for (const auto* s : group(msg, g)) {
+                        INFO(s->name);
+                        CHECK((used & field_mask(*s)) == 0);
+                        used |= field_mask(*s);
+                    }
+                }
+            }
+        }
+}
+
+TEST_CASE("dbc: each SDO multiplexor value is the request or reply it names") {
+    std::size_t checked = 0;
+    for (const auto m : enum_values<model>())
+        for (const auto n : nodes) {
+            const auto db = dbc::describe(m, n);
+            const auto dictionary = info(m)->dictionary;
+            for (const auto& msg : db.messages) {
+                const auto* mux = multiplexor(msg);
+                if (!mux) continue;
+                for (const auto& v : mux->values) {
+                    INFO(label(m, n, msg, v.name));
+                    const auto space = v.name.find(' ');
+                    const std::string kind = v.name.substr(0, space);
+                    const std::string object_name =
+                        space == std::string::npos ? "" : v.name.substr(space + 1);
+                    // Every value signal at its minimum, the rest zero.
+                    std::uint64_t data = v.value;
+                    for (const auto* s : group(msg, v.value))
+                        data |= place(*s, static_cast<std::uint64_t>(s->minimum) / s->factor);
+                    const auto got = decode(frame_of(msg, data), n, m);
+                    if (kind == "command") {  // any command byte needs its parameters: the header
+                        CHECK((got || got.error() == errc::value_out_of_range));
+                        continue;
+                    }
+                    REQUIRE(got);
+                    CHECK(kind_of_message(*got) == kind);
+                    const auto o = from_string<object>(object_name);
+                    REQUIRE(o);
+                    if (const auto decoded = object_of(*got)) {
+                        CHECK(*decoded == *o);
+                    } else {  // the segmented read's first reply carries the address
+                        const auto& r =
+                            std::get<canopen::sdo_upload_initiate_response>(*got).address;
+                        CHECK(r == find_row(dictionary, *o)->address);
+                    }
+                    ++checked;
+                }
+            }
+        }
+    CHECK(checked > 1000);
+}
+
+TEST_CASE("dbc: each number's range is the one the library accepts") {
+    // For each group of signals (a PDO, or one SDO request or reply): every signal at its
+    // minimum decodes; then each number at its maximum decodes, and one past either end (where
+    // the bits can hold it) is refused. The command module's bytes depend on the command: left
+    // out. Values inside a range that the library refuses (heartbeat state 01h, TOP 01h, the
+    // transmission types F1h..FDh) are what a DBC range cannot say: docs/dbc.md.
+    std::size_t checked = 0;
+    for (const auto m : enum_values<model>())
+        for (const auto n : nodes) {
+            const auto db = dbc::describe(m, n);
+            for (const auto& msg : db.messages) {
+                if (msg.name == "sync") continue;
+                const auto* mux = multiplexor(msg);
+                std::vector<std::pair<std::optional<std::uint64_t>, std::string>> groups;
+                if (mux)
+                    for (const auto& v : mux->values) groups.push_back({v.value, v.name});
+                else
+                    groups.push_back({std::nullopt, ""});
+                for (const auto& [g, what] : groups) {
+                    if (what == "command") continue;
+                    INFO(label(m, n, msg, what));
+                    const auto members = group(msg, g);
+                    std::uint64_t base = g.value_or(0);
+                    for (const auto* s : members)
+                        base |= place(*s, static_cast<std::uint64_t>(s->minimum) / s->factor);
+                    REQUIRE(decode(frame_of(msg, base), n, m));
+                    for (const auto* s : members) {
+                        if (s->size == 1) continue;
+                        INFO(s->name);
+                        const auto lo = static_cast<std::uint64_t>(s->minimum) / s->factor;
+                        const auto hi = static_cast<std::uint64_t>(s->maximum) / s->factor;
+                        const auto with = [&](std::uint64_t raw) {
+                            return frame_of(msg, (base & ~field_mask(*s)) | place(*s, raw));
+                        };
+                        CHECK(decode(with(hi), n, m));
+                        if (s->size < 64 && hi + 1 < (std::uint64_t{1} << s->size))
+                            CHECK(!decode(with(hi + 1), n, m));
+                        if (lo > 0) CHECK(!decode(with(lo - 1), n, m));
+                        ++checked;
+                    }
+                }
+            }
+        }
+    CHECK(checked > 1000);
+}
+
+TEST_CASE("dbc: every key and LED the library encodes has its one-bit signal") {
+    // The PDO maps: the signals are found by encoding one key or LED (dbc.cpp); here their count
+    // is the model row's (keys, and the LEDs of led_mask in each plane).
+    for (const auto m : enum_values<model>()) {
+        const auto mi = *info(m);
+        const auto db = dbc::describe(m, 0x15);
+        const auto count = [&](std::string_view message) {
+            for (const auto& msg : db.messages)
+                if (msg.name == message)
+                    return std::count_if(msg.signals.begin(), msg.signals.end(),
+                                         [](const dbc::signal& s) { return s.size == 1; });
+            return std::ptrdiff_t{-1};
+        };
+        INFO(to_string(m));
+        CHECK(count("key_state") == mi.keys);
+        const auto leds = static_cast<std::ptrdiff_t>(std::popcount(mi.led_mask)) * mi.planes;
+        CHECK(count("led_on") == leds);
+        CHECK(count("led_blink") == leds);
+        CHECK(count("encoder_leds") == (mi.encoder_leds_pdo ? 32 : -1));
+        CHECK(count("led_brightness") == (mi.brightness_pdo ? 0 : -1));
+        CHECK(count("backlight") == (mi.backlight_pdo ? 0 : -1));
+        CHECK(count("analog_inputs") == (mi.encoders ? 0 : -1));
+    }
+}
+
+TEST_CASE("dbc: the text is the same for the same model and node, and names the node") {
+    const auto a = dbc::text(dbc::describe(model::pkp2400, 0x3A));
+    CHECK(a == dbc::text(dbc::describe(model::pkp2400, 0x3A)));
+    CHECK(a != dbc::text(dbc::describe(model::pkp2400, 0x15)));
+    CHECK(a.find("\nBO_ 442 key_state: 5 keypad\n") != std::string::npos);  // 180h + 3Ah
+    CHECK(a.find("BA_ \"DBName\" \"pkp2400_3Ah\";") != std::string::npos);
+}
