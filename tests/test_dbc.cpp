@@ -252,3 +252,42 @@ TEST_CASE("dbc: the text is the same for the same model and node, and names the 
     CHECK(a.find("\nBO_ 442 key_state: 5 keypad\n") != std::string::npos);  // 180h + 3Ah
     CHECK(a.find("BA_ \"DBName\" \"pkp2400_3Ah\";") != std::string::npos);
 }
+
+TEST_CASE("dbc: each key and LED bit of an SDO value is that key or LED for the library") {
+    // The SDO objects' one-bit signals, named OBJECT_MEMBERk (keys_key9, led_on_red_red3,
+    // led_on_encoder_led17): the frame of the header and that one bit decodes to a value holding
+    // exactly that key or LED.
+    std::size_t checked = 0;
+    for (const auto m : enum_values<model>()) {
+        const auto db = dbc::describe(m, 0x15);
+        for (const auto& msg : db.messages) {
+            if (!multiplexor(msg)) continue;
+            for (const auto& s : msg.signals) {
+                if (!s.mux || s.size != 1) continue;
+                const auto member = s.name.substr(s.name.rfind('_') + 1);
+                const auto digits = member.find_first_of("0123456789");
+                if (digits == std::string::npos || digits == 0) continue;  // a flag: no_rtr ...
+                INFO(label(m, 0x15, msg, s.name));
+                const auto what = member.substr(0, digits);
+                const auto k = static_cast<unsigned>(std::stoul(member.substr(digits)));
+                const auto got = decode(frame_of(msg, *s.mux | place(s, 1)), 0x15, m);
+                REQUIRE(got);
+                const object_value* v = nullptr;
+                if (const auto* r = std::get_if<sdo_read_reply>(&*got)) v = &r->value;
+                if (const auto* w = std::get_if<sdo_write>(&*got)) v = &w->value;
+                REQUIRE(v);
+                if (what == "key" || what == "led") {
+                    CHECK(v->raw == (std::uint32_t{1} << (k - 1)));
+                } else {
+                    const auto p = from_string<plane>(what);
+                    REQUIRE(p);
+                    leds want;
+                    want.of(*p).insert(k);
+                    CHECK(v->map == want);
+                }
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked > 1000);
+}

@@ -866,9 +866,24 @@ void append_number(std::string& out, std::int64_t v) {
 }  // namespace
 
 std::string text(const database& db) {
-    std::string out =
-        "VERSION \"\"\n\n\nNS_ :\n\tNS_DESC_\n\tCM_\n\tBA_DEF_\n\tBA_\n\tVAL_\n\tBA_DEF_DEF_\n"
-        "\tVAL_TABLE_\n\tSIG_VALTYPE_\n\tBO_TX_BU_\n\tSG_MUL_VAL_\n\nBS_:\n\n";
+    // The new-symbols list as CANdb++ writes it (some readers expect the whole list).
+    std::string out = "VERSION \"\"\n\n\nNS_ :\n";
+    for (const std::string_view symbol : {"NS_DESC_",     "CM_",
+                                          "BA_DEF_",      "BA_",
+                                          "VAL_",         "CAT_DEF_",
+                                          "CAT_",         "FILTER",
+                                          "BA_DEF_DEF_",  "EV_DATA_",
+                                          "ENVVAR_DATA_", "SGTYPE_",
+                                          "SGTYPE_VAL_",  "BA_DEF_SGTYPE_",
+                                          "BA_SGTYPE_",   "SIG_TYPE_REF_",
+                                          "VAL_TABLE_",   "SIG_GROUP_",
+                                          "SIG_VALTYPE_", "SIGTYPE_VALTYPE_",
+                                          "BO_TX_BU_",    "BA_DEF_REL_",
+                                          "BA_REL_",      "BA_DEF_DEF_REL_",
+                                          "BU_SG_REL_",   "BU_EV_REL_",
+                                          "BU_BO_REL_",   "SG_MUL_VAL_"})
+        out.append("\t").append(symbol).append("\n");
+    out.append("\nBS_:\n\n");
     out.append("BU_: ").append(keypad_node).append(" ").append(controller_node).append("\n\n");
     // The named value tables, each once, in the order of first use.
     std::vector<std::string> tables;
