@@ -42,9 +42,6 @@ struct sources {
 };
 
 constexpr std::string_view other_sizes = "docs/si-family.md, The other sizes";
-constexpr std::string_view pkp2600_layout =
-    "; the 12-key layout is the PowerKey Pro and PKP2600SI manuals' (docs/pkp.md, The PKP-2600; "
-    "erratum E-PKP-8)";
 
 // One row per model, in the order of the model table (checked by source_of).
 constexpr sources source_table[] = {
@@ -76,9 +73,9 @@ constexpr sources source_table[] = {
      .manual = "PKP manual",
      .nmt = "sections 4 to 7",
      .heartbeat = "sections 8, 9, 17",
-     .key_state = "section 10",
-     .led_on = "section 11",
-     .led_blink = "section 12"},
+     .key_state = "section 10; the 12-key layout: docs/pkp.md, The PKP-2600",
+     .led_on = "section 11; the 12-key layout: docs/pkp.md, The PKP-2600",
+     .led_blink = "section 12; the 12-key layout: docs/pkp.md, The PKP-2600"},
     {.id = model::pkp2600si,
      .manual = "PKP2600SI manual",
      .nmt = "sections 4 to 7",
