@@ -192,7 +192,9 @@ TEST_CASE("dbc: each number's range is the one the library accepts") {
                     for (const auto& v : mux->values) groups.push_back({v.value, v.name});
                 else
                     groups.push_back({std::nullopt, ""});
-                for (const auto& [g, what] : groups) {
+                for (const auto& entry : groups) {
+                    const auto& g = entry.first;
+                    const std::string& what = entry.second;
                     if (what == "command") continue;
                     INFO(label(m, n, msg, what));
                     const auto members = group(msg, g);

@@ -149,13 +149,25 @@ static_assert(sources_in_model_order(), "one row of source_table per model, in t
 
 // --- building ------------------------------------------------------------------------------------
 
+// Everything the writer takes from the model table (keypad/models.hpp) is read here, in
+// context_of; the rest of the file reads the context.
 struct context {
     model id;
     node_id node;
-    model_info info;
+    model_info info;          // the row: dictionary, stride, which PDOs
+    std::string name;         // "pkp2400"
+    std::string manual_name;  // "PKP-2400-LI"
     const sources& src;
-    std::string model_name;  // "pkp2400"
 };
+
+context context_of(model m, node_id node) {
+    std::string manual_name;
+    for (const auto& n : model_name_table)
+        if (n.id == m) manual_name = n.manual;
+    return {m,           node,
+            *info(m),    std::string(to_string(m)),
+            manual_name, source_table[static_cast<std::size_t>(m)]};
+}
 
 // "PK1000 manual section 11", "PKP2500SI manual, inferred ...", "" for no place.
 std::string cite(const context& c, std::string_view where) {
@@ -654,7 +666,7 @@ void add_value(const context& c, sdo_target& t, const object_row& r) {
     }
     // The set kinds: the value with one key or LED, encoded as a read reply (or a write, for an
     // object that cannot be read), against the empty value.
-    const auto probe = [&c, &r](const object_value& v) -> keypad_message {
+    const auto probe = [&r](const object_value& v) -> keypad_message {
         if (r.readable()) return sdo_read_reply{r.id, v};
         return sdo_write{r.id, v};
     };
@@ -792,19 +804,14 @@ void add_sdo(const context& c, database& db) {
 }  // namespace
 
 database describe(model m, node_id node) {
-    const auto mi = info(m);
-    const sources& src = source_table[static_cast<std::size_t>(m)];
-    const context c{m, node, *mi, src, std::string(to_string(m))};
+    const context c = context_of(m, node);
     database db;
-    db.name = c.model_name + "_" + hex_h(node.value(), 2);
-    std::string manual_name;
-    for (const auto& n : model_name_table)
-        if (n.id == m) manual_name = n.manual;
-    db.keypad_comment = "Blink Marine " + manual_name + " (powerkey model " + c.model_name +
+    db.name = c.name + "_" + hex_h(node.value(), 2);
+    db.keypad_comment = "Blink Marine " + c.manual_name + " (powerkey model " + c.name +
                         ") at node id " + hex_h(node.value(), 2) + "; frames as the " +
-                        std::string(src.manual) +
-                        " describes them, written by powerkey export dbc "
-                        "from its model table (docs/dbc.md)";
+                        std::string(c.src.manual) +
+                        " describes them, written by powerkey export dbc from its model table "
+                        "(docs/dbc.md)";
     // The frames every keypad has, then those its row of the model table gives it. J1939 (the
     // key state and LED command, multiplexed on the command byte) will be one more function here
     // that adds messages with 29-bit identifiers.
