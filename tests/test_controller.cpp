@@ -124,7 +124,7 @@ bool only(const std::vector<problem>& ps, std::initializer_list<problem_kind> al
 // The virtual keypad reports 100Bh for the models whose manuals print it; for the others it aborts
 // the controller's identify read (the controller then keeps the configured model), the one
 // problem the checker may see in an otherwise clean session.
-bool identify_aborts(model m) { return !string_of(m, object::model_name).has_value(); }
+bool identify_aborts(model m) { return !info(m)->string_of(object::model_name).has_value(); }
 std::vector<problem> without_identify(model m, std::vector<problem> ps) {
     if (!identify_aborts(m)) return ps;
     ps.erase(std::remove_if(ps.begin(), ps.end(),
@@ -327,7 +327,7 @@ std::optional<message> aborted_request(model m) {
     const auto mi = info(m).value();
     for (const auto& r : rows_of(mi.dictionary)) {
         if (r.readable() && keypad_aborts(m, sdo_read{r.id})) return sdo_read{r.id};
-        if (r.writable() && kind_of(r.id).kind != value_kind::commands) {
+        if (r.writable() && info(r.id).kind != value_kind::commands) {
             for (const std::uint32_t v : {r.min, r.max, r.initial}) {
                 const message w = sdo_write{r.id, number_value(v)};
                 if (keypad_aborts(m, w)) return w;

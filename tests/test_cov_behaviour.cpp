@@ -138,12 +138,12 @@ TEST_CASE("virtual keypad: the red/green blink of command 01h (PKP 13 a 0Ah, PKP
 }
 
 TEST_CASE("virtual keypad: the strings each keypad reports") {
-    const auto name = string_of(model::pk1000, object::device_name);
+    const auto name = info(model::pk1000)->string_of(object::device_name);
     REQUIRE(name.has_value());
     CHECK(name->bytes == "BlinkMarine");
     CHECK(name->announced == 11);
     // The PK1000 has no 6100h sub 2 (a PKP object).
-    CHECK_FALSE(string_of(model::pk1000, object::device_model).has_value());
+    CHECK_FALSE(info(model::pk1000)->string_of(object::device_model).has_value());
 }
 
 // --- the controller ------------------------------------------------------------------------------

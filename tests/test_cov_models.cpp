@@ -151,14 +151,16 @@ static_assert(
 
 // Every name in the tables reads back to its model.
 constexpr bool every_name_reads_back() {
-    for (const auto& n : model_name_table) {
+    for (const model m : enum_values<model>()) {
+        const auto n = *info(m);
+        if (n.id != m || to_string(m) != n.name) return false;
         if (parse_model(n.manual) != result<model>(n.id)) return false;
         if (parse_model(to_string(n.id)) != result<model>(n.id)) return false;
-        if (!n.reported.empty() && (model_from_report(n.reported) != result<model>(n.id) ||
-                                    parse_model(n.reported) != result<model>(n.id)))
+        if (!n.reported().empty() && (model_from_report(n.reported()) != result<model>(n.id) ||
+                                      parse_model(n.reported()) != result<model>(n.id)))
             return false;
     }
-    return std::size(model_name_table) == model_count;
+    return enum_values<model>().size() == model_count;
 }
 static_assert(every_name_reads_back());
 

@@ -4,6 +4,7 @@
 // every row found both ways.
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/names.hpp>
@@ -156,7 +157,7 @@ constexpr bool every_row_found(dictionary d) {
         const dict_row e{"",     "",       d,     r.id,  r.address.index, r.address.subindex,
                          r.size, r.access, r.min, r.max, r.also,          r.initial};
         if (!row_is(*a, e) || !row_is(*o, e)) return false;
-        if (kind_of(r.id).id != r.id) return false;
+        if (info(r.id).id != r.id) return false;
     }
     return true;
 }
@@ -265,14 +266,14 @@ constexpr kind_row kind_rows[] = {
     {"PK1000 36", "", object::restore_defaults, value_kind::restore, plane::red, 0, 0},
 };
 constexpr bool kind_holds(const kind_row& r) {
-    const auto k = kind_of(r.id);
+    const auto k = info(r.id);
     return k.id == r.id && k.kind == r.kind && k.holds == r.holds && k.offset == r.offset &&
            k.width == r.width;
 }
 static_assert(
     powerkey_tests::all_rows_pass<first_failing(kind_rows, kind_holds), std::size(kind_rows)>);
 // A value outside the enum has no kind.
-static_assert(kind_of(static_cast<object>(0xFF)).kind == value_kind::none);
+static_assert(info(static_cast<object>(0xFF)).kind == value_kind::none);
 static_assert(load_signature == 0x6461'6F6C);  // "load" (6Ch 6Fh 61h 64h), PK1000 36
 }  // namespace
 
@@ -302,6 +303,6 @@ TEST_CASE("access, ranges and kinds of the rows") {
     powerkey_tests::check_rows(access_rows, access_holds);
     powerkey_tests::check_rows(range_rows, range_holds);
     powerkey_tests::check_rows(kind_rows, kind_holds);
-    CHECK(kind_of(static_cast<object>(object_count)).kind == value_kind::none);
-    CHECK(kind_of(static_cast<object>(object_count)).id == static_cast<object>(object_count));
+    CHECK(info(static_cast<object>(object_count)).kind == value_kind::none);
+    CHECK(info(static_cast<object>(object_count)).id == static_cast<object>(object_count));
 }

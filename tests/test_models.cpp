@@ -3,6 +3,7 @@
 // row named, typed, ranged and found both ways.
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/names.hpp>
@@ -86,9 +87,10 @@ constexpr bool names_read_back() {
         if (parse_model(to_string(m)) != result<model>(m)) return false;
         if (from_string<model>(to_string(m)) != std::optional<model>(m)) return false;
     }
-    for (const auto& n : model_name_table) {
-        if (parse_model(n.manual) != result<model>(n.id)) return false;
-        if (!n.reported.empty() && model_from_report(n.reported) != result<model>(n.id))
+    for (const model m : enum_values<model>()) {
+        const auto n = *info(m);
+        if (parse_model(n.manual) != result<model>(m)) return false;
+        if (!n.reported().empty() && model_from_report(n.reported()) != result<model>(m))
             return false;
     }
     return true;
@@ -127,9 +129,9 @@ constexpr dictionary dictionaries[] = {dictionary::pk1000, dictionary::pkp_li};
 // Every row's object has a kind and a name; find_row by address and by object give the row.
 constexpr bool rows_agree(dictionary d) {
     for (const auto& r : rows_of(d)) {
-        if (kind_of(r.id).id != r.id) return false;
-        if (kind_of(r.id).kind == value_kind::none && r.id != object::error_register) return false;
-        if (to_string(r.id).empty() || to_string(kind_of(r.id).kind).empty()) return false;
+        if (info(r.id).id != r.id) return false;
+        if (info(r.id).kind == value_kind::none && r.id != object::error_register) return false;
+        if (to_string(r.id).empty() || to_string(info(r.id).kind).empty()) return false;
         const auto by_address = find_row(d, r.address);
         const auto by_object = find_row(d, r.id);
         if (!by_address || !by_object) return false;
@@ -146,7 +148,7 @@ static_assert(rows_agree(dictionary::pkp_li));
 constexpr bool ranges_hold(dictionary d) {
     for (const auto& r : rows_of(d)) {
         if (!r.writable()) continue;
-        const auto k = kind_of(r.id).kind;
+        const auto k = info(r.id).kind;
         if (k == value_kind::brightness &&
             !(r.min == 0 && r.max == 0x3F && !r.in_range(0x40) && r.in_range(r.initial)))
             return false;
@@ -180,7 +182,7 @@ static_assert(!find_row(dictionary::pk1000, object::command_module).has_value())
 static_assert(!find_row(dictionary::pk1000, canopen::sdo_address{0x6000, 0}).has_value());
 static_assert(!find_row(dictionary::pk1000, canopen::sdo_address{0x2003, 7}).has_value());
 static_assert(!find_row(dictionary::pk1000, static_cast<object>(object_count)).has_value());
-static_assert(kind_of(static_cast<object>(object_count)).kind == value_kind::none);
+static_assert(info(static_cast<object>(object_count)).kind == value_kind::none);
 
 // Access and defaults pinned from the manuals.
 static_assert(find_row(dictionary::pk1000, object::keys)->access == access::read_only);
@@ -217,7 +219,7 @@ TEST_CASE("every dictionary row: kind, name, range, and found by address and by 
             CHECK(by_address->id == r.id);
             CHECK(by_object->address == r.address);
             CHECK_FALSE(to_string(r.id).empty());
-            CHECK_FALSE(to_string(kind_of(r.id).kind).empty());
+            CHECK_FALSE(to_string(info(r.id).kind).empty());
         }
     }
     // Every object is in at least one dictionary (of the two manuals or of a later keypad).

@@ -7,6 +7,7 @@
 #include <powerkey/can/candump.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 
@@ -160,7 +161,7 @@ constexpr bool dictionary_is_consistent() {
         const auto by_object = find_row(dictionary::pkp_li, r.id);
         if (!by_address || by_address->id != r.id) return false;
         if (!by_object || !(by_object->address == r.address)) return false;
-        if (kind_of(r.id).kind == value_kind::number && r.size != 1 && r.size != 2 && r.size != 4)
+        if (info(r.id).kind == value_kind::number && r.size != 1 && r.size != 2 && r.size != 4)
             return false;
     }
     return true;

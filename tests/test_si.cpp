@@ -282,8 +282,7 @@ constexpr bool model_rows_hold() {
         const std::uint32_t all = (std::uint32_t{1} << f.keys) - 1;
         if (i->led_mask != (mt ? all & ~0x401u : all)) return false;
         if (!f.reported.empty() && model_from_report(f.reported) != f.id) return false;
-        for (const auto& n : model_name_table)
-            if (n.id == f.id && n.reported != f.reported) return false;
+        if (i->reported() != f.reported) return false;
     }
     return std::size(si_rows::model_facts) == 8;
 }

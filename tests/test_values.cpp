@@ -8,6 +8,7 @@
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>

@@ -776,7 +776,7 @@ TEST_CASE("segmented uploads of the strings, per model") {
     CHECK(read_string(model::pkp2200, "615#400B100000000000") ==
           strings{"595#410B100007000000", "595#00504B5532323030", "595#1D00000000000000",
                   "595#8000000001000405", "595#8000000001000405"});
-    CHECK(behaviour::string_of(model::pk1000, object::software_version)->bytes == "V2.8");
+    CHECK(info(model::pk1000)->string_of(object::software_version)->bytes == "V2.8");
 }
 
 TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every readable object") {
@@ -801,7 +801,7 @@ TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every rea
         // every readable object: a reply the library's decoder reads as this object's
         millis t{10};
         for (const auto& r : rows_of(mi.dictionary)) {
-            if (!r.readable() || kind_of(r.id).kind == value_kind::none) continue;
+            if (!r.readable() || info(r.id).kind == value_kind::none) continue;
             CAPTURE(r.id);
             can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),
                              static_cast<std::uint8_t>(r.address.index >> 8), r.address.subindex};
@@ -815,7 +815,7 @@ TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every rea
             const auto d = decode(*reply, canopen::default_node_id, m);
             CHECK_MESSAGE(d.has_value(), text_of(*reply));
             CHECK((*reply)[0] != 0x80);  // no abort: every string has its bytes
-            if (kind_of(r.id).kind == value_kind::string) CHECK(behaviour::string_of(m, r.id));
+            if (info(r.id).kind == value_kind::string) CHECK(info(m)->string_of(r.id));
             // a segmented upload to its end, each segment read by the decoder
             bool toggle = false, more = (*reply)[0] == 0x40 || (*reply)[0] == 0x41;
             while (more) {
@@ -838,7 +838,7 @@ TEST_CASE("every model: writing back what a read gives is acknowledged") {
         auto k = booted(m);
         millis t{10};
         for (const auto& r : rows_of(mi.dictionary)) {
-            const auto kind = kind_of(r.id).kind;
+            const auto kind = info(r.id).kind;
             if (!r.readable() || !r.writable() || kind == value_kind::restore) continue;
             CAPTURE(r.id);
             can::payload req{0x40, static_cast<std::uint8_t>(r.address.index & 0xFF),

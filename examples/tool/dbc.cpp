@@ -43,7 +43,8 @@ struct sources {
 
 constexpr std::string_view other_sizes = "docs/si-family.md, The other sizes";
 
-// One row per model, in the order of the model table (checked by source_of).
+// One row per model. A model without one (a new row of the model table) still gets its file:
+// its comments then name its manual without sections (context_of).
 constexpr sources source_table[] = {
     {.id = model::pk1000,
      .manual = "PK1000 manual",
@@ -139,13 +140,13 @@ constexpr sources source_table[] = {
      .backlight = "inferred: level only (docs/si-family.md, The other sizes)"},
 };
 
-constexpr bool sources_in_model_order() {
-    if (std::size(source_table) != model_count) return false;
-    for (std::size_t i = 0; i < model_count; ++i)
-        if (static_cast<std::size_t>(source_table[i].id) != i) return false;
+constexpr bool sources_once() {
+    for (std::size_t i = 0; i < std::size(source_table); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (source_table[i].id == source_table[j].id) return false;
     return true;
 }
-static_assert(sources_in_model_order(), "one row of source_table per model, in the table's order");
+static_assert(sources_once(), "at most one row of source_table per model");
 
 // --- building ------------------------------------------------------------------------------------
 
@@ -154,25 +155,28 @@ static_assert(sources_in_model_order(), "one row of source_table per model, in t
 struct context {
     model id;
     node_id node;
-    model_info info;          // the row: dictionary, stride, which PDOs
+    model_info info;          // the row: names, dictionary, stride, which PDOs
     std::string name;         // "pkp2400"
     std::string manual_name;  // "PKP-2400-LI"
-    const sources& src;
+    std::string manual;       // the document: "PKP manual"
+    sources src;
 };
 
 context context_of(model m, node_id node) {
-    std::string manual_name;
-    for (const auto& n : model_name_table)
-        if (n.id == m) manual_name = n.manual;
-    return {m,           node,
-            *info(m),    std::string(to_string(m)),
-            manual_name, source_table[static_cast<std::size_t>(m)]};
+    const model_info row = *info(m);
+    context c{
+        m, node, row, std::string(row.name), std::string(row.manual), "", {.id = m, .manual = {}}};
+    for (const auto& s : source_table)
+        if (s.id == m) c.src = s;
+    c.manual =
+        c.src.manual.empty() ? "the " + c.manual_name + " manual" : std::string(c.src.manual);
+    return c;
 }
 
 // "PK1000 manual section 11", "PKP2500SI manual, inferred ...", "" for no place.
 std::string cite(const context& c, std::string_view where) {
     if (where.empty()) return "";
-    std::string s(c.src.manual);
+    std::string s = c.manual;
     s.append(where.starts_with("section") ? " " : ", ").append(where);
     return s;
 }
@@ -516,8 +520,8 @@ void add_value_signal(sdo_target& t, signal s) {
 // "2003h sub 01h; PK1000 manual, section Object 2003h": the manuals title each object's section
 // so.
 std::string object_place(const context& c, const object_row& r) {
-    return hex_h(r.address.index, 4) + " sub " + hex_h(r.address.subindex, 2) + "; " +
-           std::string(c.src.manual) + ", section Object " + hex_h(r.address.index, 4);
+    return hex_h(r.address.index, 4) + " sub " + hex_h(r.address.subindex, 2) + "; " + c.manual +
+           ", section Object " + hex_h(r.address.index, 4);
 }
 
 // The expedited bytes of a row's value (objects.hpp, object_row::size: 0 for a per-colour LED
@@ -530,7 +534,7 @@ unsigned value_bytes(const context& c, const object_row& r) {
 // per key or LED for the set kinds (their bits found by encoding the object's value with one key
 // or LED).
 void add_value(const context& c, sdo_target& t, const object_row& r) {
-    const auto kind = kind_of(r.id).kind;
+    const auto kind = info(r.id).kind;
     const std::string o(to_string(r.id));
     const auto place = object_place(c, r);
     const unsigned bits = 8 * value_bytes(c, r);
@@ -715,7 +719,7 @@ void add_command(const context& c, sdo_target& t, const object_row& r) {
 }
 
 void add_sdo(const context& c, database& db) {
-    const auto sections = std::string(c.src.manual) + ", the sections on each object";
+    const auto sections = c.manual + ", the sections on each object";
     auto request = new_message(
         cob(function::sdo_rx, c.node), "sdo_request", 8, controller_node,
         with_source("SDO requests, 600h + node, controller to keypad: reads (40h) and expedited "
@@ -749,7 +753,7 @@ void add_sdo(const context& c, database& db) {
         m.signals.front().values.push_back({value, std::move(text)});
     };
     for (const auto& r : rows) {
-        const auto kind = kind_of(r.id).kind;
+        const auto kind = info(r.id).kind;
         const std::string o(to_string(r.id));
         if (r.readable()) {
             name(request,
@@ -808,8 +812,7 @@ database describe(model m, node_id node) {
     database db;
     db.name = c.name + "_" + hex_h(node.value(), 2);
     db.keypad_comment = "Blink Marine " + c.manual_name + " (powerkey model " + c.name +
-                        ") at node id " + hex_h(node.value(), 2) + "; frames as the " +
-                        std::string(c.src.manual) +
+                        ") at node id " + hex_h(node.value(), 2) + "; frames as the " + c.manual +
                         " describes them, written by powerkey export dbc from its model table "
                         "(docs/dbc.md)";
     // The frames every keypad has, then those its row of the model table gives it. J1939 (the

@@ -3,7 +3,7 @@
 #ifndef POWERKEY_ERROR_HPP
 #define POWERKEY_ERROR_HPP
 
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 
 #include <cstdint>
 

@@ -13,7 +13,7 @@
 #ifndef POWERKEY_NAMES_HPP
 #define POWERKEY_NAMES_HPP
 
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/result.hpp>
 
 #include <array>

@@ -4,6 +4,7 @@
 
 #include <powerkey/bounded.hpp>
 #include <powerkey/describe.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/fields.hpp>
 #include <powerkey/index_set.hpp>
@@ -35,6 +36,8 @@
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/dictionaries.hpp>
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>

@@ -24,7 +24,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -77,7 +77,7 @@ template <std::size_t TextCapacity = 64>
 class session {
 public:
     constexpr session(powerkey::model m, canopen::node_id node) noexcept
-        : model_(m), info_(info(m).value_or(model_info{})), node_(node), upload_(node) {}
+        : model_(m), info_(&detail::row_or_none(m)), node_(node), upload_(node) {}
 
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
@@ -134,7 +134,7 @@ private:
     // The writes that move the keypad to another node id or protocol.
     constexpr void on_write(const message& m, session_event& e) noexcept {
         if (const auto n = node_id_change(m); n && *n != node_) {
-            if (info_.replies_from_new_id) {  // PK1000 section 23: the reply comes from the new id
+            if (info_->replies_from_new_id) {  // PK1000 section 23: the reply comes from the new id
                 previous_node_ = node_;
                 node_ = *n;
                 e.new_node = node_;
@@ -183,7 +183,7 @@ private:
                 pair(e);
                 // A string of up to four bytes comes in one reply: it ends the upload too.
                 const auto* v = e.decoded ? std::get_if<sdo_read_reply>(&*e.decoded) : nullptr;
-                if (v && kind_of(v->object).kind == value_kind::string) step_upload(f, e);
+                if (v && info(v->object).kind == value_kind::string) step_upload(f, e);
             }
         } else if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
             if (was == pending_kind::upload && answers(i->address)) {
@@ -215,7 +215,7 @@ private:
     }
 
     powerkey::model model_;
-    model_info info_;
+    const model_info* info_;  // the model's row (detail::row_or_none)
     canopen::node_id node_;
     bus_protocol protocol_ = bus_protocol::canopen;
     pending_kind pending_ = pending_kind::none;

@@ -31,7 +31,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/describe.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>

@@ -43,7 +43,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
@@ -140,7 +140,7 @@ public:
     constexpr explicit controller(const controller_config& c) noexcept
         : cfg_(c),
           model_(c.keypad_model),
-          info_(info(c.keypad_model).value_or(model_info{})),
+          info_(&powerkey::detail::row_or_none(c.keypad_model)),
           node_(c.node),
           upload_(c.node) {}
 
@@ -177,7 +177,7 @@ public:
 
     // LED k (1..the model's LEDs) in colour c, steady or blinking; false for an LED it lacks.
     constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
-        if (k < 1 || k > info_.leds || ((info_.led_mask >> (k - 1)) & 1u) == 0) return false;
+        if (k < 1 || k > info_->leds || ((info_->led_mask >> (k - 1)) & 1u) == 0) return false;
         leds on = on_, bl = blink_;
         on.set(k, blink ? colour::off : c);
         bl.set(k, blink ? c : colour::off);
@@ -405,7 +405,7 @@ private:
                 node_ = *n;
                 upload_ = canopen::segmented_upload<16>(node_);
                 // PKP 13 h: a boot-up from the new id follows; it is not a reboot to report.
-                awaiting_boot_from_new_ = !info_.replies_from_new_id;
+                awaiting_boot_from_new_ = !info_->replies_from_new_id;
                 emit(event_kind::node_changed);
             }
         }
@@ -414,16 +414,15 @@ private:
     }
 
     constexpr void set_model(powerkey::model m) noexcept {
-        const auto i = info(m);
-        if (!i) return;
+        if (!powerkey::detail::is_model(m)) return;
         model_ = m;
-        info_ = *i;
+        info_ = &powerkey::detail::row_of(m);
     }
 
     // --- keys -------------------------------------------------------------------------------
 
     constexpr void on_keys(key_set now_pressed) noexcept {
-        for (unsigned k = 1; k <= info_.keys; ++k) {
+        for (unsigned k = 1; k <= info_->keys; ++k) {
             const bool was = keys_.contains(k), is = now_pressed.contains(k);
             if (is && !was) {
                 pressed_at_[k - 1] = now_;
@@ -439,7 +438,7 @@ private:
 
     constexpr void key_timers() noexcept {
         for (unsigned k : keys_) {
-            if (k > info_.keys) continue;
+            if (k > info_->keys) continue;
             const auto bit = static_cast<std::uint16_t>(1u << (k - 1));
             if (cfg_.long_press.value != 0 && (long_sent_ & bit) == 0 &&
                 reached(pressed_at_[k - 1] + cfg_.long_press, now_)) {
@@ -488,7 +487,7 @@ private:
     constexpr void probe() noexcept {
         if (cfg_.probe_period.value == 0 || !reached(next_probe_, now_)) return;
         next_probe_ = now_ + cfg_.probe_period;
-        const auto row = find_row(info_.dictionary, object::device_type);
+        const auto row = find_row(info_->dictionary, object::device_type);
         if (row) send_frame(canopen::encode(node_, canopen::sdo_upload_request{row->address}));
     }
 
@@ -547,7 +546,7 @@ private:
     }
 
     constexpr message active_message() const noexcept {
-        if (info_.dictionary == dictionary::pkp_li) {
+        if (info_->dictionary == dictionary::pkp_li) {
             command c;
             c.code = command_code::set_active_on_startup;
             c.enabled = true;
@@ -571,35 +570,35 @@ private:
             const auto n = *pending_node_change_;
             pending_node_change_.reset();
             message m = sdo_write{object::node_id, node_value(n)};
-            if (info_.dictionary == dictionary::pkp_li) {
+            if (info_->dictionary == dictionary::pkp_li) {
                 command c;
                 c.code = command_code::set_node_id;
                 c.node_id = n;
                 m = c;
             }
             if (begin_job(m, sdo_origin::node_change, 0)) {
-                if (info_.replies_from_new_id) job_->reply_node = n;  // PK1000 23
+                if (info_->replies_from_new_id) job_->reply_node = n;  // PK1000 23
                 return;
             }
         }
         // The shadow values this model takes by SDO only (no RPDO3/RPDO4 for them).
-        if (take(dirty_brightness, !info_.brightness_pdo && has_brightness_)) {
+        if (take(dirty_brightness, !info_->brightness_pdo && has_brightness_)) {
             // By SDO write of the object. (The command module 6500h could set it too, but the one
             // dictionary with the module, the PKP's, also has the objects: 6201h sub 1 and 2.)
-            if (find_row(info_.dictionary, object::led_brightness) &&
+            if (find_row(info_->dictionary, object::led_brightness) &&
                 begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
                           sdo_origin::shadow, 0))
                 return;
         }
-        if (take(dirty_level, !info_.backlight_pdo && has_backlight_)) {
-            if (find_row(info_.dictionary, object::backlight_level) &&
+        if (take(dirty_level, !info_->backlight_pdo && has_backlight_)) {
+            if (find_row(info_->dictionary, object::backlight_level) &&
                 begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
                           sdo_origin::shadow, 0))
                 return;
         }
         if (take(dirty_colour, !colour_by_pdo() && has_backlight_ &&
                                    backlight_colour_ != backlight_colour::keep)) {
-            if (find_row(info_.dictionary, object::backlight_colour)) {
+            if (find_row(info_->dictionary, object::backlight_colour)) {
                 if (begin_job(sdo_write{object::backlight_colour, colour_value(backlight_colour_)},
                               sdo_origin::shadow, 0))
                     return;
@@ -615,18 +614,18 @@ private:
     // Clears dirty bit `bit` when `mine` (the SDO path owns it) or there is nothing to send.
     constexpr bool take(std::uint8_t bit, bool mine) noexcept {
         if ((dirty_ & bit) == 0) return false;
-        const bool pdo_owned = (bit == dirty_brightness && info_.brightness_pdo) ||
-                               (bit == dirty_level && info_.backlight_pdo) ||
+        const bool pdo_owned = (bit == dirty_brightness && info_->brightness_pdo) ||
+                               (bit == dirty_level && info_->backlight_pdo) ||
                                (bit == dirty_colour && colour_by_pdo());
         if (pdo_owned) return false;  // send_shadow's
         dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
         return mine;
     }
     constexpr bool has_commands() const noexcept {
-        return find_row(info_.dictionary, object::command_module).has_value();
+        return find_row(info_->dictionary, object::command_module).has_value();
     }
     constexpr bool colour_by_pdo() const noexcept {
-        return info_.backlight_pdo && info_.backlight_colour;
+        return info_->backlight_pdo && info_->backlight_colour;
     }
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
@@ -646,7 +645,7 @@ private:
             return false;  // not an SDO request: skipped
         }
         j.what = o;
-        const auto row = find_row(info_.dictionary, o);
+        const auto row = find_row(info_->dictionary, o);
         const auto f = encode(node_, model_, m);
         if (!row || !f) {
             emit_sdo(event_kind::sdo_refused, j,
@@ -683,12 +682,12 @@ private:
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_on);
         if ((dirty_ & dirty_blink) != 0 && send_message(led_blink{blink_}))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_blink);
-        if (info_.brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
+        if (info_->brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
             (!has_brightness_ || send_message(led_brightness{brightness_})))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
         const std::uint8_t pdo_bits =
             static_cast<std::uint8_t>(dirty_level | (colour_by_pdo() ? dirty_colour : 0));
-        if (info_.backlight_pdo && (dirty_ & pdo_bits) != 0 &&
+        if (info_->backlight_pdo && (dirty_ & pdo_bits) != 0 &&
             (!has_backlight_ ||
              send_message(backlight{backlight_level_,
                                     colour_by_pdo() ? backlight_colour_ : backlight_colour::keep})))
@@ -704,7 +703,7 @@ private:
 
     controller_config cfg_;
     powerkey::model model_;
-    model_info info_;
+    const model_info* info_;  // the model's row (detail::row_or_none)
     canopen::node_id node_;
     controller_state state_ = controller_state::searching;
     std::optional<canopen::nmt_state> keypad_state_;

@@ -12,7 +12,7 @@
 #define POWERKEY_BEHAVIOUR_KEY_MODES_HPP
 
 #include <powerkey/behaviour/controller.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>

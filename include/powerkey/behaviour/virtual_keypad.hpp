@@ -40,117 +40,6 @@
 
 namespace powerkey::behaviour {
 
-// --- the strings each keypad reports ------------------------------------------------------------
-
-// A string object as the keypad sends it: the bytes exactly as the manual prints them (NUL
-// padding and all, E-CORE-5), and what the initiate reply announces. Strings of up to 4 bytes go
-// expedited (43h), longer ones segmented: 41h with `announced` in bytes 4..7, or 40h ("size not
-// indicated") with `announced` still in byte 4 where the manual prints that (E-CORE-3).
-struct keypad_string {
-    std::uint16_t models;  // bit m for model m (models.hpp order)
-    object id;
-    std::string_view bytes;
-    std::uint32_t announced;
-    bool size_indicated;
-    std::string_view section;  // where the manual prints it; "inferred" where it does not
-};
-
-namespace detail {
-constexpr std::uint16_t bit(model m) noexcept {
-    return static_cast<std::uint16_t>(1u << static_cast<unsigned>(m));
-}
-inline constexpr std::uint16_t pk1000_bit = bit(model::pk1000), pkp2200_bit = bit(model::pkp2200),
-                               pkp2400_bit = bit(model::pkp2400), pkp2600_bit = bit(model::pkp2600),
-                               pkp_bits = pkp2200_bit | pkp2400_bit | pkp2600_bit;
-// The SI family (docs/si-family.md): the PKP-2600-SI and PKP-3500-MT manuals print their
-// strings; the other SI models' are inferred from the PKP-2600-SI's and their reported names.
-inline constexpr std::uint16_t si_bits =
-    bit(model::pkp2600si) | bit(model::pkp3500mt) | bit(model::pkp3500si) | bit(model::pkp2500si) |
-    bit(model::pkp1500li) | bit(model::pkp2200si) | bit(model::pkp2300si) | bit(model::pkp2400si);
-inline constexpr std::uint16_t si_inferred =
-    si_bits & ~bit(model::pkp2600si) & ~bit(model::pkp3500mt);
-// Every byte of a literal but its terminator, NULs inside included.
-template <std::size_t N>
-constexpr std::string_view bytes_of(const char (&s)[N]) noexcept {
-    return {s, N - 1};
-}
-}  // namespace detail
-
-inline constexpr keypad_string keypad_strings[] = {
-    {detail::pk1000_bit, object::device_name, detail::bytes_of("BlinkMarine"), 11, true,
-     "PK1000 32"},
-    {detail::pk1000_bit, object::hardware_version, detail::bytes_of("V_03"), 4, true, "PK1000 33"},
-    {detail::pk1000_bit, object::software_version, detail::bytes_of("V2.8"), 4, true, "PK1000 34"},
-    // 7 bytes announced and sent: "PK1000" and a NUL (E-CORE-5)
-    {detail::pk1000_bit, object::model_name, detail::bytes_of("PK1000\0"), 7, true, "PK1000 35"},
-    {detail::pk1000_bit, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true,
-     "PK1000 48 (E-CORE-1)"},
-    {detail::pkp_bits, object::device_name, detail::bytes_of("BlinkMarine"), 11, true, "PKP 19"},
-    {detail::pkp_bits, object::hardware_version, detail::bytes_of("Rev 1.0\0D\0"), 10, true,
-     "PKP 20 (E-CORE-5)"},
-    {detail::pkp_bits, object::software_version, detail::bytes_of("Rev 1.0\0R\0"), 10, true,
-     "PKP 21 (E-CORE-5)"},
-    // 7 announced, 8 sent: the keypad goes on after the announced size (E-CORE-2)
-    {detail::pkp2400_bit, object::model_name, detail::bytes_of("PKU2400\0"), 7, true,
-     "PKP 22 (E-CORE-2)"},
-    {detail::pkp2200_bit, object::model_name, detail::bytes_of("PKU2200\0"), 7, true,
-     "inferred from PKP 22"},
-    {detail::pkp2600_bit, object::model_name, detail::bytes_of("PKU2600\0"), 7, true,
-     "inferred from PKP 22"},
-    // 40h, size not indicated, 08h in byte 4 (E-CORE-3)
-    {detail::pkp2400_bit, object::device_model, detail::bytes_of("PKU2400\0"), 8, false,
-     "PKP 29 (E-CORE-3)"},
-    {detail::pkp2200_bit, object::device_model, detail::bytes_of("PKU2200\0"), 8, false,
-     "inferred from PKP 29"},
-    {detail::pkp2600_bit, object::device_model, detail::bytes_of("PKU2600\0"), 8, false,
-     "inferred from PKP 29"},
-    // 6 announced, 8 sent (E-CORE-4)
-    {detail::pkp_bits, object::serial_number_string, detail::bytes_of("000000\0\0"), 6, true,
-     "PKP 31 (E-CORE-4)"},
-    // SI family: PKP2600SI = PKP-2600-SI manual rev1.5, MT = PKP-3500-MT manual rev1.3
-    {detail::si_bits, object::device_name, detail::bytes_of("BlinkMarine"), 11, true,
-     "PKP2600SI 30, MT 36"},
-    {detail::bit(model::pkp2600si), object::hardware_version, detail::bytes_of("V_01"), 4, true,
-     "PKP2600SI 31"},
-    {detail::bit(model::pkp3500mt), object::hardware_version, detail::bytes_of("V_00"), 4, true,
-     "MT 37"},
-    {detail::si_inferred, object::hardware_version, detail::bytes_of("V_01"), 4, true,
-     "inferred from PKP2600SI 31"},
-    {detail::bit(model::pkp2600si), object::software_version, detail::bytes_of("V2.8"), 4, true,
-     "PKP2600SI 32"},
-    {detail::bit(model::pkp3500mt), object::software_version, detail::bytes_of("1.00"), 4, true,
-     "MT 38"},
-    {detail::bit(model::pkp1500li), object::software_version, detail::bytes_of("2.10"), 4, true,
-     "docs/si-family.md"},
-    {static_cast<std::uint16_t>(detail::si_inferred & ~detail::bit(model::pkp1500li)),
-     object::software_version, detail::bytes_of("V2.8"), 4, true, "inferred from PKP2600SI 32"},
-    {detail::bit(model::pkp2600si), object::model_name, detail::bytes_of("PKP2600SI"), 9, true,
-     "PKP2600SI 33"},
-    {detail::bit(model::pkp3500mt), object::model_name, detail::bytes_of("PKP3500MT"), 9, true,
-     "MT 39"},
-    {detail::bit(model::pkp3500si), object::model_name, detail::bytes_of("PKP3500SI"), 9, true,
-     "docs/si-family.md"},
-    {detail::bit(model::pkp1500li), object::model_name, detail::bytes_of("PKP1500LI"), 9, true,
-     "docs/si-family.md"},
-    {detail::bit(model::pkp2500si), object::model_name, detail::bytes_of("PKP2500SI"), 9, true,
-     "inferred from the naming"},
-    {detail::bit(model::pkp2200si), object::model_name, detail::bytes_of("PKP2200SI"), 9, true,
-     "inferred from the naming"},
-    {detail::bit(model::pkp2300si), object::model_name, detail::bytes_of("PKP2300SI"), 9, true,
-     "inferred from the naming"},
-    {detail::bit(model::pkp2400si), object::model_name, detail::bytes_of("PKP2400SI"), 9, true,
-     "inferred from the naming"},
-    {detail::si_bits, object::serial_number_string, detail::bytes_of("FFFFFFFF"), 8, true,
-     "PKP2600SI 46, MT 57; the others inferred"},
-};
-
-// The string object `o` of model m reports; nullopt when it has none.
-[[nodiscard]] constexpr std::optional<keypad_string> string_of(model m, object o) noexcept {
-    for (const auto& s : keypad_strings)
-        if ((s.models & detail::bit(m)) != 0 && s.id == o) return s;
-    return std::nullopt;
-}
-
 // --- the keypad ---------------------------------------------------------------------------------
 
 // Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
@@ -184,7 +73,7 @@ public:
     constexpr explicit virtual_keypad(model m, canopen::node_id node = canopen::default_node_id,
                                       keypad_options options = {}) noexcept
         : model_(powerkey::detail::is_model(m) ? m : model::pk1000),
-          info_(powerkey::detail::row_of(model_)),
+          info_(&powerkey::detail::row_of(model_)),
           options_(options) {
         factory_defaults();
         value_[idx(object::node_id)] = node.value();
@@ -290,14 +179,14 @@ public:
     // model lacks. A change sends the key state when the keypad is operational and event-driven
     // (PK1000 11, 46: transmission type FEh; PKP 10).
     constexpr bool press(unsigned k, millis t) noexcept {
-        if (k < 1 || k > info_.keys) return false;
+        if (k < 1 || k > info_->keys) return false;
         key_set s = keys_;
         s.insert(k);
         set_keys(s, t);
         return true;
     }
     constexpr bool release(unsigned k, millis t) noexcept {
-        if (k < 1 || k > info_.keys) return false;
+        if (k < 1 || k > info_->keys) return false;
         key_set s = keys_;
         s.erase(k);
         set_keys(s, t);
@@ -306,7 +195,7 @@ public:
     // All keys at once (keys the model lacks are left out).
     constexpr void set_keys(key_set s, millis t) noexcept {
         advance(t);
-        s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(info_.keys));
+        s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(info_->keys));
         if (s == keys_) return;
         keys_ = s;
         if (state_ == run_state::operational && event_driven()) send_keys(t);
@@ -338,7 +227,7 @@ public:
     // The number an SDO read of o would give now (for number-like objects; LED maps, keys and
     // strings have their own accessors); nullopt for an object the model's dictionary lacks.
     [[nodiscard]] constexpr std::optional<std::uint32_t> read(object o) const noexcept {
-        const auto row = find_row(info_.dictionary, o);
+        const auto row = find_row(info_->dictionary, o);
         if (!row) return std::nullopt;
         return current(*row);
     }
@@ -361,14 +250,14 @@ private:
         for (auto& v : value_) v = 0;
         // defaults common to both manuals (section 3); the PK1000 rows carry them
         for (const auto& r : rows_of(dictionary::pk1000)) value_[idx(r.id)] = r.initial;
-        for (const auto& r : rows_of(info_.dictionary)) value_[idx(r.id)] = r.initial;
+        for (const auto& r : rows_of(info_->dictionary)) value_[idx(r.id)] = r.initial;
         value_[idx(object::node_id)] = canopen::default_node_id.value();
-        if (find_row(info_.dictionary, object::total_keys)) {
+        if (find_row(info_->dictionary, object::total_keys)) {
             // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
             // (4 keys x RGB), 6 external LEDs; the other models by the same rule (inferred),
             // with no external LEDs.
-            value_[idx(object::total_keys)] = info_.keys;
-            value_[idx(object::total_leds)] = std::uint32_t{info_.leds} * info_.planes;
+            value_[idx(object::total_keys)] = info_->keys;
+            value_[idx(object::total_leds)] = std::uint32_t{info_->leds} * info_->planes;
             value_[idx(object::external_leds)] = model_ == model::pkp2200 ? 6u : 0u;
             value_[idx(object::tpdo1_event_timer)] = 0;  // PKP 3: periodic transmission off
         }
@@ -378,7 +267,7 @@ private:
     // has it); 0 for a string.
     constexpr unsigned size_of(const object_row& r) const noexcept {
         if (r.size != 0) return r.size;
-        if (kind_of(r.id).kind == value_kind::led_plane) return info_.stride / 8u;
+        if (info(r.id).kind == value_kind::led_plane) return info_->stride / 8u;
         return 0;
     }
     // Whether an LED object is of the blink map (by its name: led_blink, led_blink_red, ...).
@@ -390,7 +279,7 @@ private:
 
     // The value a read of row r gives now.
     constexpr std::uint32_t current(const object_row& r) const noexcept {
-        const object_kind k = kind_of(r.id);
+        const object_info k = info(r.id);
         switch (k.kind) {
             case value_kind::keys: return static_cast<std::uint32_t>(keys_.mask());
             case value_kind::led_map: return map_bits(map_of(r.id));
@@ -398,7 +287,7 @@ private:
                 return static_cast<std::uint32_t>(map_of(r.id).of(k.holds).mask());
             case value_kind::led_part:  // SI: bits [offset, offset + width) of the LED string
                 return static_cast<std::uint32_t>(
-                    (pack_leds(info_, map_of(r.id), info_.planes) >> k.offset) &
+                    (pack_leds(*info_, map_of(r.id), info_->planes) >> k.offset) &
                     powerkey::detail::low_bits(k.width));
             case value_kind::cob_id:
                 // PK1000 38-41, 46: 4000 0000h + the identifier in use (the rows hold node 15h);
@@ -416,7 +305,7 @@ private:
         }
     }
     constexpr std::uint32_t map_bits(const leds& l) const noexcept {
-        return static_cast<std::uint32_t>(pack_leds(info_, l, info_.object_planes()) &
+        return static_cast<std::uint32_t>(pack_leds(*info_, l, info_->object_planes()) &
                                           0xFFFF'FFFFu);
     }
 
@@ -448,7 +337,7 @@ private:
         pending_.reset();
         upload_ = {};
         boot_time_ = t;
-        if (value(object::protocol_j1939) != 0 && info_.j1939) {
+        if (value(object::protocol_j1939) != 0 && info_->j1939) {
             state_ = run_state::j1939;
             return;
         }
@@ -535,7 +424,7 @@ private:
     constexpr bool event_driven() const noexcept {
         // PK1000 46 a: FEh event-driven, 01h..F0h every n-th SYNC. The PKP's 1800h/2 reads FDh
         // but it sends on every change (PKP 10).
-        const auto row = find_row(info_.dictionary, object::tpdo1_transmission_type);
+        const auto row = find_row(info_->dictionary, object::tpdo1_transmission_type);
         return !row || !row->writable() || value(object::tpdo1_transmission_type) >= 0xFE;
     }
     constexpr std::uint32_t periodic_ms() const noexcept {
@@ -578,7 +467,7 @@ private:
         if (fn == 0x200 || fn == 0x300) {
             const object type_of =
                 fn == 0x200 ? object::rpdo1_transmission_type : object::rpdo2_transmission_type;
-            if (find_row(info_.dictionary, type_of) && value(type_of) <= 0xF0) {
+            if (find_row(info_->dictionary, type_of) && value(type_of) <= 0xF0) {
                 rpdo_buffer_[fn == 0x200 ? 0 : 1] = *m;
                 return;
             }
@@ -592,8 +481,8 @@ private:
         if (const auto* b = std::get_if<powerkey::backlight>(&m)) {
             backlight_.level = b->level;
             if (b->colour != backlight_colour::keep)
-                backlight_.colour = b->colour;         // PK1000 15: 00h keeps the colour
-            else if (info_.backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
+                backlight_.colour = b->colour;          // PK1000 15: 00h keeps the colour
+            else if (info_->backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
                 backlight_.colour =
                     static_cast<backlight_colour>(value(object::default_backlight_colour));
         }
@@ -601,7 +490,7 @@ private:
     // An LED PDO sets every plane the model has.
     constexpr leds merge(const leds&, const leds& in) const noexcept {
         leds out = in;
-        if (info_.planes < 3) out.blue = {};
+        if (info_->planes < 3) out.blue = {};
         return out;
     }
 
@@ -637,17 +526,17 @@ private:
 
     // The abort for an address the dictionary lacks: the index exists -> no such sub-index.
     constexpr canopen::sdo_abort_code missing(canopen::sdo_address a) const noexcept {
-        for (const auto& r : rows_of(info_.dictionary))
+        for (const auto& r : rows_of(info_->dictionary))
             if (r.address.index == a.index) return canopen::sdo_abort_code::subindex_does_not_exist;
         return canopen::sdo_abort_code::object_does_not_exist;
     }
 
     constexpr void upload(canopen::sdo_address a, millis t) noexcept {
         upload_ = {};
-        const auto row = find_row(info_.dictionary, a);
+        const auto row = find_row(info_->dictionary, a);
         if (!row) return abort(a, missing(a), t);
         // 1001h: "not yet implemented in the device" (PK1000 31): object does not exist
-        if (kind_of(row->id).kind == value_kind::none)
+        if (info(row->id).kind == value_kind::none)
             return abort(a, canopen::sdo_abort_code::object_does_not_exist, t);
         if (!row->readable()) return abort(a, canopen::sdo_abort_code::write_only, t);
         can::payload p{};
@@ -655,7 +544,7 @@ private:
         p[3] = a.subindex;
         const unsigned size = size_of(*row);
         if (size == 0) {
-            const auto s = string_of(model_, row->id);
+            const auto s = info_->string_of(row->id);
             if (!s) return abort(a, canopen::sdo_abort_code::no_data, t);
             if (s->bytes.size() <= 4) {  // expedited (PK1000 33, 34)
                 p[0] = static_cast<std::uint8_t>(0x43 | ((4 - s->bytes.size()) << 2));
@@ -699,7 +588,7 @@ private:
     constexpr void download(const can::frame& f, canopen::sdo_address a, millis t) noexcept {
         upload_ = {};
         const std::uint8_t b0 = f[0];
-        const auto row = find_row(info_.dictionary, a);
+        const auto row = find_row(info_->dictionary, a);
         if (!row) return abort(a, missing(a), t);
         if (!row->writable()) return abort(a, canopen::sdo_abort_code::read_only, t);
         if ((b0 & 0x02) == 0)  // segmented download: no object here takes one
@@ -716,7 +605,7 @@ private:
         p[1] = f[1];
         p[2] = f[2];
         p[3] = f[3];
-        if (row->id == object::node_id && info_.replies_from_new_id) {
+        if (row->id == object::node_id && info_->replies_from_new_id) {
             // PK1000 23: the acknowledgement already comes from the new id
             node_ = canopen::node_id::make(v).value();
         }
@@ -730,30 +619,30 @@ private:
                                                                      after_reply& then,
                                                                      millis t) noexcept {
         using code = canopen::sdo_abort_code;
-        const value_kind kind = kind_of(r.id).kind;
+        const value_kind kind = info(r.id).kind;
         switch (kind) {
             case value_kind::led_plane: {  // PK1000 17, 18: one plane, LEDs 1..28
-                if ((v & ~info_.led_mask) != 0) return code::invalid_value;
-                map_of(r.id).of(kind_of(r.id).holds) = led_set::from_mask(v);
+                if ((v & ~info_->led_mask) != 0) return code::invalid_value;
+                map_of(r.id).of(info(r.id).holds) = led_set::from_mask(v);
                 return std::nullopt;
             }
             case value_kind::led_map: {  // PKP 15, 16: the planes that fit 32 bits
-                const auto m = unpack_leds(info_, v, info_.object_planes());
+                const auto m = unpack_leds(*info_, v, info_->object_planes());
                 if (!m) return code::invalid_value;
                 leds& l = map_of(r.id);
-                for (unsigned c = 0; c < info_.object_planes(); ++c)
+                for (unsigned c = 0; c < info_->object_planes(); ++c)
                     l.of(static_cast<plane>(c)) = m->of(static_cast<plane>(c));
                 return std::nullopt;
             }
             case value_kind::led_part: {  // SI: bits [offset, offset + width) of the string
-                const object_kind k = kind_of(r.id);
+                const object_info k = info(r.id);
                 if ((v & ~powerkey::detail::low_bits(k.width)) != 0) return code::invalid_value;
                 leds& l = map_of(r.id);
                 const std::uint64_t keep = ~(powerkey::detail::low_bits(k.width) << k.offset);
                 const auto m = unpack_leds(
-                    info_,
-                    (pack_leds(info_, l, info_.planes) & keep) | (std::uint64_t{v} << k.offset),
-                    info_.planes);
+                    *info_,
+                    (pack_leds(*info_, l, info_->planes) & keep) | (std::uint64_t{v} << k.offset),
+                    info_->planes);
                 if (!m) return code::invalid_value;
                 l = *m;
                 return std::nullopt;
@@ -796,7 +685,7 @@ private:
                 sync_count_ = 0;
                 break;
             case object::protocol_j1939:  // PK1000 49: the keypad answers, then speaks J1939
-                if (v == 1 && info_.j1939) then = after_reply::to_j1939;
+                if (v == 1 && info_->j1939) then = after_reply::to_j1939;
                 break;
             default: break;
         }
@@ -945,7 +834,7 @@ private:
     };
 
     model model_;
-    model_info info_;
+    const model_info* info_;  // the model's row
     keypad_options options_;
     std::array<std::uint32_t, object_count> value_{};
     bool restore_pending_ = false;

@@ -6,7 +6,8 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/node_id.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
+#include <powerkey/error.hpp>
 
 #include <cstdint>
 
@@ -128,6 +129,18 @@ struct cob_info {
         default: return c.node == node.value();
     }
 }
+
+namespace detail {
+// errc{} when f has the standard identifier `id` and exactly `length` data bytes: the checks
+// every CiA 301 decoder starts with, in one order (format, then id, then length), so that every
+// decoder reports the same errc for the same fault.
+constexpr errc check_frame(const can::frame& f, can::standard_id id, std::uint8_t length) noexcept {
+    if (f.is_extended()) return errc::wrong_id_format;
+    if (f.raw_id() != id.value()) return errc::wrong_id;
+    if (f.size() != length) return errc::wrong_length;
+    return errc{};
+}
+}  // namespace detail
 
 }  // namespace powerkey::canopen
 

@@ -6,8 +6,7 @@
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
-#include <powerkey/detail/checks.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -62,8 +61,7 @@ struct heartbeat_message {
 // toggle bit 80h, which the keypads do not use).
 [[nodiscard]] constexpr result<heartbeat_message> decode_heartbeat(const can::frame& f,
                                                                    node_id node) noexcept {
-    if (const auto e = powerkey::detail::check_frame(f, cob_id(function::heartbeat, node), 1);
-        e != errc{})
+    if (const auto e = detail::check_frame(f, cob_id(function::heartbeat, node), 1); e != errc{})
         return e;
     if (!is_heartbeat_state(f[0])) return errc::value_out_of_range;
     return heartbeat_message{static_cast<nmt_state>(f[0])};

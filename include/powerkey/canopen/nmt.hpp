@@ -7,8 +7,7 @@
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
-#include <powerkey/detail/checks.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -61,7 +60,7 @@ struct nmt_message {
 // Errors: wrong_id_format, wrong_id (not 000h), wrong_length (not 2 bytes), unknown_command,
 // value_out_of_range (target above 7Fh).
 [[nodiscard]] constexpr result<nmt_message> decode_nmt(const can::frame& f) noexcept {
-    if (const auto e = powerkey::detail::check_frame(f, nmt_cob_id, 2); e != errc{}) return e;
+    if (const auto e = detail::check_frame(f, nmt_cob_id, 2); e != errc{}) return e;
     nmt_message m;
     switch (f[0]) {
         case 0x00:

@@ -14,8 +14,7 @@
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/bytes.hpp>
-#include <powerkey/detail/checks.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 
 #include <array>
 #include <cstdint>
@@ -440,8 +439,7 @@ template <class R, class F>
 [[nodiscard]] constexpr R visit_sdo_request_data(const can::frame& f, F&& on) noexcept;
 template <class R, class F>
 [[nodiscard]] constexpr R visit_sdo_request(const can::frame& f, node_id node, F&& on) noexcept {
-    if (const auto e = powerkey::detail::check_frame(f, cob_id(function::sdo_rx, node), 8);
-        e != errc{})
+    if (const auto e = detail::check_frame(f, cob_id(function::sdo_rx, node), 8); e != errc{})
         return e;
     return visit_sdo_request_data<R>(f, on);
 }
@@ -480,8 +478,7 @@ template <class R, class F>
 [[nodiscard]] constexpr R visit_sdo_response_data(const can::frame& f, F&& on) noexcept;
 template <class R, class F>
 [[nodiscard]] constexpr R visit_sdo_response(const can::frame& f, node_id node, F&& on) noexcept {
-    if (const auto e = powerkey::detail::check_frame(f, cob_id(function::sdo_tx, node), 8);
-        e != errc{})
+    if (const auto e = detail::check_frame(f, cob_id(function::sdo_tx, node), 8); e != errc{})
         return e;
     return visit_sdo_response_data<R>(f, on);
 }

@@ -5,7 +5,6 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
-#include <powerkey/detail/checks.hpp>
 
 #include <string_view>
 
@@ -25,7 +24,7 @@ struct sync_message {
 // Errors: wrong_id_format, wrong_id (not 080h), wrong_length (any data: the manual's SYNC has
 // none, and the CiA 301 counter byte is not used by the keypads).
 [[nodiscard]] constexpr result<sync_message> decode_sync(const can::frame& f) noexcept {
-    if (const auto e = powerkey::detail::check_frame(f, sync_cob_id, 0); e != errc{}) return e;
+    if (const auto e = detail::check_frame(f, sync_cob_id, 0); e != errc{}) return e;
     return sync_message{};
 }
 

@@ -74,9 +74,9 @@ constexpr std::optional<led_map_update> map_of_object(const model_info& mi, obje
     if (id == o.whole) {
         c = planes_covered(mi, mi.object_planes());
     } else if (id == o.red || id == o.green || id == o.blue) {
-        c.of(kind_of(id).holds) = led_set::from_mask(mi.led_mask);
+        c.of(info(id).holds) = led_set::from_mask(mi.led_mask);
     } else if (id == o.part1 || id == o.part2 || id == o.part3) {
-        const auto k = kind_of(id);
+        const auto k = info(id);
         c = unpack_leds(mi, detail::low_bits(k.width) << k.offset, mi.planes).value_or(leds{});
     } else {
         return std::nullopt;

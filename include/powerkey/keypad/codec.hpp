@@ -20,10 +20,11 @@
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/detail/bytes.hpp>
-#include <powerkey/detail/checks.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
@@ -32,17 +33,6 @@
 #include <array>
 #include <cstdint>
 #include <variant>
-
-// When optimising for speed, the decoders' cold paths out of line and their common ones inlined:
-// the common paths then need no registers saved (docs/performance.md). Under -Os (the firmware)
-// one copy of each, shared, is smaller.
-#if defined(__OPTIMIZE_SIZE__)
-#define POWERKEY_DETAIL_COLD
-#define POWERKEY_DETAIL_HOT
-#else
-#define POWERKEY_DETAIL_COLD [[gnu::noinline]]
-#define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
-#endif
 
 namespace powerkey {
 
@@ -64,7 +54,7 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 
 // The expedited size of row r's value: its own, the model's plane bytes for a per-colour LED
 // plane of size 0, or what a string piece carries (`carried`).
-constexpr std::uint8_t row_size(const model_info& m, const codec_row& r,
+constexpr std::uint8_t row_size(const model_layout& m, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();
     if (r.kind == value_kind::led_plane) return static_cast<std::uint8_t>(m.stride / 8);
@@ -73,23 +63,11 @@ constexpr std::uint8_t row_size(const model_info& m, const codec_row& r,
 
 // Bits [offset, offset + width) of the model's LED string, as a map; errc::reserved_not_zero for
 // a bit that names no LED.
-constexpr result<leds> unpack_part(const model_info& m, std::uint32_t raw,
+constexpr result<leds> unpack_part(const model_layout& m, std::uint32_t raw,
                                    const codec_row& r) noexcept {
     if ((raw & ~low_bits(r.part_width())) != 0) return errc::reserved_not_zero;
     return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
 }
-
-// The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name no LED, per model: all but
-// those of the planes object_planes() keeps (no division on the decoder's path; the complement, so
-// that the test is one AND).
-inline constexpr auto object_not_leds = [] {
-    std::array<std::uint32_t, std::size(model_table)> t{};
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const model_info& m = model_table[i];
-        t[i] = ~static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride));
-    }
-    return t;
-}();
 
 // The largest value of each expedited size (a table: no 64-bit shift by a variable on a 32-bit
 // core).
@@ -107,7 +85,7 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
 
 // value_message's kinds that decoders meet rarely: out of line, so that the common ones need no
 // frame (no registers to save) in decode_request and decode_response.
-POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_info& m, const codec_row& r,
+POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& m, const codec_row& r,
                                                           std::uint8_t size, std::uint32_t data,
                                                           bool write) noexcept {
     const auto number = [&r, data, write] { return value_answer(r, {data, {}, 0}, write); };
@@ -149,8 +127,9 @@ POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_info& m, c
 // COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
 // unknown_object (an object without a value). One switch on the row's kind (the rare kinds in
 // rare_value), each case returning its message: nothing is staged and copied.
-POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m, const codec_row& r,
-                                                            std::uint8_t size, std::uint32_t data,
+POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& m,
+                                                            const codec_row& r, std::uint8_t size,
+                                                            std::uint32_t data,
                                                             bool write) noexcept {
     if (size != row_size(m, r, size)) return errc::size_mismatch;
     if (data > largest_of_size[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
@@ -181,8 +160,7 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m,
                                 write);
         }
         case value_kind::led_map: {  // unpack_leds(m, data, m.object_planes()), as decode_pdo
-            if ((data & object_not_leds[static_cast<std::size_t>(m.id)]) != 0)
-                return errc::reserved_not_zero;
+            if ((data & m.object_not_leds) != 0) return errc::reserved_not_zero;
             const std::uint64_t up = std::uint64_t{data} >> m.stride;
             const leds l{led_set::from_mask(data & m.led_mask), led_set::from_mask(up & m.led_mask),
                          led_set::from_mask((up >> m.stride) & m.led_mask)};
@@ -193,7 +171,7 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_info& m,
 }
 
 // The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
-constexpr canopen::expedited_data write_value(const model_info& m, const codec_row& r,
+constexpr canopen::expedited_data write_value(const model_layout& m, const codec_row& r,
                                               const object_value& v) noexcept {
     std::uint64_t raw = v.raw;
     if (r.kind == value_kind::led_plane) raw = v.map.of(static_cast<plane>(r.a)).mask();
@@ -209,7 +187,7 @@ constexpr canopen::expedited_data write_value(const model_info& m, const codec_r
 // --- the command module -------------------------------------------------------------------------
 
 // Errors: value_out_of_range for a parameter outside its range.
-constexpr errc read_param(const model_info& m, command_param p, std::uint8_t b,
+constexpr errc read_param(const model_layout& m, command_param p, std::uint8_t b,
                           command& c) noexcept {
     switch (p) {
         case command_param::none: return errc{};
@@ -306,7 +284,7 @@ inline constexpr auto command_shape_index = [] {
 // order: reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h),
 // value_out_of_range (a parameter outside its range).
 template <std::size_t S>
-constexpr result<message> command_of(const model_info& m, command_code code,
+constexpr result<message> command_of(const model_layout& m, command_code code,
                                      std::uint32_t data) noexcept {
     constexpr command_shape shape = command_shapes[S];
     const auto b1 = static_cast<std::uint8_t>(data >> 8);
@@ -323,7 +301,7 @@ constexpr result<message> command_of(const model_info& m, command_code code,
 // The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
 // then command_of's. One jump on the command's parameter pair.
-[[gnu::always_inline]] constexpr result<message> read_command(const model_info& m,
+POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout& m,
                                                               std::uint8_t size,
                                                               std::uint32_t data) noexcept {
     static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
@@ -402,7 +380,7 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_request(std::uint64_t w) no
 // Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
 // unknown_object (no such address); unknown_command (an access the row lacks); then value_message's
 // or read_command's. The two frames a host sends most, an expedited write and a read, first.
-constexpr result<message> decode_request(const model_info& m, const can::frame& f) noexcept {
+constexpr result<message> decode_request(const model_layout& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = load_le<8>(f.bytes(), 0);
     const std::uint8_t c = sdo_wire::specifier(w);
@@ -427,7 +405,7 @@ constexpr result<message> decode_request(const model_info& m, const can::frame& 
 
 // The responses decode_response does not take first: segments, segmented-upload initiations,
 // aborts and the refusals.
-POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_info& m,
+POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_layout& m,
                                                               std::uint64_t w) noexcept {
     const std::uint8_t c = sdo_wire::specifier(w);
     switch (c >> 5) {
@@ -462,7 +440,7 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_info& 
 // unknown_object (no such address, or a segmented upload of an object that is not a string);
 // unknown_command (an access the row lacks); then value_message's. The two frames a keypad answers
 // most, an expedited read reply and a write acknowledgement, first.
-constexpr result<message> decode_response(const model_info& m, const can::frame& f) noexcept {
+constexpr result<message> decode_response(const model_layout& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = load_le<8>(f.bytes(), 0);
     const std::uint8_t c = sdo_wire::specifier(w);
@@ -489,7 +467,8 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
 // node's): only the length and data are checked. Each answer is built in the caller's result.
 // No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
 // (data_le) after its length check, the key state's 5 bytes as a word and a byte.
-[[gnu::always_inline]] constexpr result<message> decode_pdo(const model_info& m, std::uint32_t code,
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& m,
+                                                            std::uint32_t code,
                                                             const can::frame& f) noexcept {
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
@@ -567,14 +546,14 @@ constexpr result<message> decode_response(const model_info& m, const can::frame&
 }
 
 // A 29-bit frame: the J1939 switch back to CANopen, for a keypad that has it.
-constexpr result<message> decode_extended(const model_info& m, const can::frame& f) noexcept {
+constexpr result<message> decode_extended(const model_layout& m, const can::frame& f) noexcept {
     if (!m.j1939) return errc::wrong_id_format;
     return lift(j1939::decode_switch_to_canopen(f));
 }
 
 // --- encoding -----------------------------------------------------------------------------------
 
-[[gnu::always_inline]] constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
+POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
                                                       std::uint8_t dlc,
                                                       std::uint64_t bits) noexcept {
     can::payload p{};
@@ -582,7 +561,7 @@ constexpr result<message> decode_extended(const model_info& m, const can::frame&
     return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
 }
 
-constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
+constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
                                    const message& msg) noexcept {
     using canopen::function;
     return std::visit(
@@ -664,11 +643,11 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
 //                       size, reserved bits of COB-IDs and of the PDOs
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
-[[nodiscard, gnu::always_inline]] constexpr result<message> decode(const can::frame& f,
-                                                                   canopen::node_id node,
-                                                                   model m) noexcept {
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(const can::frame& f,
+                                                                      canopen::node_id node,
+                                                                      model m) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    const model_info& mi = detail::row_of(m);
+    const detail::model_layout& mi = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
     // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
     // function code; a 29-bit frame's id word has bit 31 set, so it lands past the switch's 16
@@ -716,7 +695,7 @@ constexpr result<can::frame> build(const model_info& m, canopen::node_id node,
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    const auto f = detail::build(detail::row_of(m), node, msg);
+    const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
     const auto back = decode(*f, node, m);
     if (!back) return back.error();

@@ -7,7 +7,7 @@
 #define POWERKEY_KEYPAD_COMMANDS_HPP
 
 #include <powerkey/canopen/node_id.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>

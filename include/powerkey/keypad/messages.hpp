@@ -183,7 +183,7 @@ constexpr void raw_field(V& v, F& f, std::string_view name, Get get, Set set) {
 template <class V, class F>
 constexpr void value_fields(object id, V& v, F& f) {
     using u32 = std::uint32_t;
-    const auto k = kind_of(id);
+    const auto k = info(id);
     // Bits [at, at + n) of raw as a T, and back.
     auto bits = [&v, &f](std::string_view name, unsigned at, unsigned n, auto tag) {
         using T = typename decltype(tag)::type;

@@ -1,63 +1,69 @@
-// powerkey: the keypads as data. One row per model says everything the codec needs: its object
-// dictionary, its keys, its LED planes and the one LED-map rule's stride, the PDOs it has, and how
-// it changes node id. Adding a keypad of a known layout is adding a row (and its names).
+// powerkey: the keypads as data. A keypad is one row of POWERKEY_MODELS, written with designated
+// initialisers: its tool name, how the manuals spell it, its object dictionary, its keys, its LED
+// planes and the LED-map rule's stride, the PDOs it has, how it changes node id, and the strings
+// it reports. The enum `model`, its names and the model table are expanded from that one list;
+// adding a keypad of a known layout is adding a row (docs/models.md).
 //
-// The LED-map rule, for every keypad: LED (plane c, number k), c = 0 red, 1 green, 2 blue, is
-// bit c * stride + (k - 1) of a little-endian bit string (byte i / 8, bit i % 8). PK1000 sections
-// 12, 13 (stride 32: red in bytes 0..3, green in 4..7); PKP sections 11, 12, 15, 16 and
-// docs/pkp.md for the 12-key PKP-2600 (stride = key count); docs/si-family.md for the SI family
-// (the PKP-3500-MT's stride is 16 and keys 1 and 11, the encoder pushes, have no LED; the
-// PKP-2200/2300/2400-SI's stride of 8 is inferred).
+// The LED-map rule, for every keypad (docs/models.md, "The LED-map rule"): LED (plane c, number k),
+// c = 0 red, 1 green, 2 blue, is bit c * stride + (k - 1) of a little-endian bit string.
 #ifndef POWERKEY_KEYPAD_MODELS_HPP
 #define POWERKEY_KEYPAD_MODELS_HPP
 
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/detail/bytes.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <optional>
 #include <string_view>
 
 namespace powerkey {
 
-enum class model : std::uint8_t {
-    pk1000,
-    pkp2200,
-    pkp2400,
-    pkp2600,
-    // The SI family (docs/si-family.md)
-    pkp2600si,
-    pkp3500mt,
-    pkp3500si,
-    pkp2500si,
-    pkp1500li,
-    pkp2200si,
-    pkp2300si,
-    pkp2400si,
+enum class model : std::uint8_t;  // every keypad: POWERKEY_MODELS below
+
+// A string object as the keypad sends it: the bytes exactly as the manual prints them (NUL
+// padding and all, E-CORE-5), and what the initiate reply announces. Strings of up to 4 bytes go
+// expedited (43h), longer ones segmented: 41h with `announced` in bytes 4..7, or 40h ("size not
+// indicated") with `announced` still in byte 4 where the manual prints that (E-CORE-3).
+struct keypad_string {
+    powerkey::object id = object::keys;
+    std::string_view bytes;  // empty: no string (the rest of a model's `strings`)
+    std::uint32_t announced = 0;
+    bool size_indicated = true;
+    std::string_view section;  // where a manual prints it; "inferred ..." where none does
 };
 
+// The row of a model. Flags default to false, so a row names only what its keypad has.
 struct model_info {
     powerkey::model id;
+    std::string_view name;    // the tool's and the enum's name: "pkp2400"
+    std::string_view manual;  // how its manual names it: "PKP-2400-LI"
     powerkey::dictionary dictionary;
     std::uint8_t keys;       // keys 1..keys
     std::uint8_t leds;       // LEDs 1..leds in each colour plane (some may be missing: led_mask)
     std::uint8_t planes;     // colour planes: 2 red and green, 3 RGB
     std::uint8_t stride;     // bits from one plane to the next in an LED map
     std::uint32_t led_mask;  // the LEDs of one plane: bit k-1 for LED k (PKP-3500-MT: no 1, 11)
-    bool brightness_pdo;     // RPDO3 400h + node: LED brightness (PK1000 section 14)
-    bool encoder_leds_pdo;   // RPDO3 400h + node: the encoder LED rings (PKP-3500-MT 17)
-    bool backlight_pdo;      // RPDO4 500h + node: backlight level (PK1000 section 15)
-    bool backlight_colour;   // ... and colour in byte 1 (a level-only keypad needs byte 1 00h)
-    bool encoders;           // TPDO2/3 encoder states, TPDO4 analog inputs (PKP-3500-MT 12-14)
-    bool j1939;              // the switch to J1939 (object protocol_j1939) and back (PK1000 49)
-    // After a node-id change the keypad answers from the new id (PK1000 section 23) or from the
-    // old one, then boots up with the new one (PKP section 13 h).
-    bool replies_from_new_id;
+    bool brightness_pdo = false;    // RPDO3 400h + node: LED brightness (PK1000 section 14)
+    bool encoder_leds_pdo = false;  // RPDO3 400h + node: the encoder LED rings (PKP-3500-MT 17)
+    bool backlight_pdo = false;     // RPDO4 500h + node: backlight level (PK1000 section 15)
+    bool backlight_colour = false;  // ... and colour in byte 1 (a level-only keypad needs 00h)
+    bool encoders = false;          // TPDO2/3 encoder states, TPDO4 analog inputs (MT 12-14)
+    bool j1939 = false;             // the switch to J1939 (protocol_j1939) and back (PK1000 49)
+    // After a node-id change the keypad answers from the new id (PK1000 section 23), not from the
+    // old one and then boots up with the new one (PKP section 13 h).
+    bool replies_from_new_id = false;
     // Colour 00h in the backlight PDO returns to the default colour (2003h sub 4) rather than
     // keeping the current one: PKP2600SI manual section 15 (PK1000 15 and PKP3500-MT 18: keep).
     bool backlight_zero_is_default = false;
+    // The strings the keypad reports (the virtual keypad sends them), at most six.
+    std::array<keypad_string, 6> strings{};
+
     // Derived from the fields above, for the PDO decoders (docs/performance.md): the bits of the
     // key-state PDO's bytes 0..3 that name no key, and every bit of an LED map that names an LED.
     std::uint32_t not_keys = keys >= 32 ? 0u : ~((std::uint32_t{1} << keys) - 1);
@@ -70,47 +76,165 @@ struct model_info {
         const unsigned fit = 32u / stride;
         return fit < planes ? fit : planes;
     }
+    // The string of object o the keypad reports; nullopt when it has none. (A copy, not a
+    // pointer: a null test on the address of a member is not always a constant expression.)
+    [[nodiscard]] constexpr std::optional<keypad_string> string_of(object o) const noexcept {
+        for (const auto& s : strings)
+            if (!s.bytes.empty() && s.id == o) return s;
+        return std::nullopt;
+    }
+    // The model name it reports in 100Bh (PKP 6100h sub 2 too), up to its first NUL, where a
+    // manual shows it; "" where none does.
+    [[nodiscard]] constexpr std::string_view reported() const noexcept {
+        const auto s = string_of(object::model_name);
+        if (!s || s->section.starts_with("inferred")) return {};
+        std::size_t n = 0;
+        while (n < s->bytes.size() && s->bytes[n] != '\0') ++n;
+        return {s->bytes.data(), n};
+    }
 };
 
 namespace detail {
+using namespace std::string_view_literals;  // "PK1000\0"sv keeps the NUL
 using dict = dictionary;
-//                                             keys leds planes stride led_mask     brightness
-//                                                                                  rings
-//                                                                                  backlight colour
-//                                                                                  encoders j1939
-//                                                                                  new-id
-inline constexpr model_info model_table[] = {
-    {model::pk1000, dict::pk1000, 10, 28, 2, 32, 0x0FFF'FFFF, true, false, true, true, false, true,
-     true},
-    {model::pkp2200, dict::pkp_li, 4, 4, 3, 4, 0xF, false, false, false, false, false, false,
-     false},
-    {model::pkp2400, dict::pkp_li, 8, 8, 3, 8, 0xFF, false, false, false, false, false, false,
-     false},
-    {model::pkp2600, dict::pkp_li, 12, 12, 3, 12, 0xFFF, false, false, false, false, false, false,
-     false},
-    {model::pkp2600si, dict::si_packed, 12, 12, 3, 12, 0xFFF, true, false, true, true, false, true,
-     true, true},
-    {model::pkp3500mt, dict::si_mt, 15, 15, 3, 16, 0x7BFE, false, true, true, true, true, true,
-     true},
-    {model::pkp3500si, dict::si_per_colour, 15, 15, 3, 16, 0x7FFF, true, false, true, false, false,
-     true, true},
-    {model::pkp2500si, dict::si_per_colour, 10, 10, 3, 16, 0x3FF, true, false, true, false, false,
-     true, true},
-    {model::pkp1500li, dict::si_per_colour, 5, 5, 3, 8, 0x1F, false, false, true, false, false,
-     true, true},
-    {model::pkp2200si, dict::si_per_colour, 4, 4, 3, 8, 0xF, false, false, true, false, false, true,
-     true},
-    {model::pkp2300si, dict::si_per_colour, 6, 6, 3, 8, 0x3F, false, false, true, false, false,
-     true, true},
-    {model::pkp2400si, dict::si_per_colour, 8, 8, 3, 8, 0xFF, false, false, true, false, false,
-     true, true},
-};
-constexpr bool models_in_enum_order() noexcept {
-    for (std::size_t i = 0; i < std::size(model_table); ++i)
-        if (static_cast<std::size_t>(model_table[i].id) != i) return false;
-    return true;
+// The strings the keypads of a family share, each once ("PKP n" the PKP-2200-2400-LI manual's
+// section n, "PKP2600SI n" the PKP-2600-SI manual's, "MT n" the PKP-3500-MT manual's).
+inline constexpr keypad_string blinkmarine_pk1000{object::device_name, "BlinkMarine"sv, 11, true,
+                                                  "PK1000 32"};
+inline constexpr keypad_string blinkmarine_pkp{object::device_name, "BlinkMarine"sv, 11, true,
+                                               "PKP 19"};
+inline constexpr keypad_string blinkmarine_si{object::device_name, "BlinkMarine"sv, 11, true,
+                                              "PKP2600SI 30, MT 36"};
+inline constexpr keypad_string pkp_hardware{object::hardware_version, "Rev 1.0\0D\0"sv, 10, true,
+                                            "PKP 20 (E-CORE-5)"};
+inline constexpr keypad_string pkp_software{object::software_version, "Rev 1.0\0R\0"sv, 10, true,
+                                            "PKP 21 (E-CORE-5)"};
+// 6 announced, 8 sent (E-CORE-4)
+inline constexpr keypad_string pkp_serial{object::serial_number_string, "000000\0\0"sv, 6, true,
+                                          "PKP 31 (E-CORE-4)"};
+inline constexpr keypad_string si_hardware{object::hardware_version, "V_01"sv, 4, true,
+                                           "inferred from PKP2600SI 31"};
+inline constexpr keypad_string si_software{object::software_version, "V2.8"sv, 4, true,
+                                           "inferred from PKP2600SI 32"};
+inline constexpr keypad_string si_serial{object::serial_number_string, "FFFFFFFF"sv, 8, true,
+                                         "PKP2600SI 46, MT 57; the others inferred"};
+// The PKP-LI model strings: 7 announced and 8 sent (E-CORE-2); 40h, size not indicated, 08h in
+// byte 4 (E-CORE-3).
+constexpr keypad_string pkp_model_name(std::string_view bytes, std::string_view section) noexcept {
+    return {object::model_name, bytes, 7, true, section};
 }
-static_assert(models_in_enum_order());
+constexpr keypad_string pkp_device_model(std::string_view bytes,
+                                         std::string_view section) noexcept {
+    return {object::device_model, bytes, 8, false, section};
+}
+constexpr keypad_string si_model_name(std::string_view bytes, std::string_view section) noexcept {
+    return {object::model_name, bytes, 9, true, section};
+}
+}  // namespace detail
+
+// Every keypad: X(name, designated initialisers of the rest of its row). Appending keeps the
+// numbers of the models before it. The PKP-2200/2300/2400-SI's stride of 8, and what the SI sizes
+// without a manual report, are inferred (docs/si-family.md).
+// clang-format off
+#define POWERKEY_MODELS(X)                                                                         \
+    X(pk1000, .manual = "PK1000", .dictionary = dict::pk1000,                                      \
+      .keys = 10, .leds = 28, .planes = 2, .stride = 32, .led_mask = 0x0FFF'FFFF,                  \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
+      .replies_from_new_id = true,                                                                 \
+      .strings = {blinkmarine_pk1000,                                                              \
+                  {object::hardware_version, "V_03"sv, 4, true, "PK1000 33"},                      \
+                  {object::software_version, "V2.8"sv, 4, true, "PK1000 34"},                      \
+                  {object::model_name, "PK1000\0"sv, 7, true, "PK1000 35 (E-CORE-5)"},             \
+                  {object::serial_number_string, "FFFFFFFF"sv, 8, true, "PK1000 48 (E-CORE-1)"}})  \
+    X(pkp2200, .manual = "PKP-2200-LI", .dictionary = dict::pkp_li,                                \
+      .keys = 4, .leds = 4, .planes = 3, .stride = 4, .led_mask = 0xF,                             \
+      .strings = {blinkmarine_pkp, pkp_hardware, pkp_software,                                     \
+                  pkp_model_name("PKU2200\0"sv, "inferred from PKP 22"),                           \
+                  pkp_device_model("PKU2200\0"sv, "inferred from PKP 29"), pkp_serial})            \
+    X(pkp2400, .manual = "PKP-2400-LI", .dictionary = dict::pkp_li,                                \
+      .keys = 8, .leds = 8, .planes = 3, .stride = 8, .led_mask = 0xFF,                            \
+      .strings = {blinkmarine_pkp, pkp_hardware, pkp_software,                                     \
+                  pkp_model_name("PKU2400\0"sv, "PKP 22 (E-CORE-2)"),                              \
+                  pkp_device_model("PKU2400\0"sv, "PKP 29 (E-CORE-3)"), pkp_serial})               \
+    X(pkp2600, .manual = "PKP-2600", .dictionary = dict::pkp_li,                                   \
+      .keys = 12, .leds = 12, .planes = 3, .stride = 12, .led_mask = 0xFFF,                        \
+      .strings = {blinkmarine_pkp, pkp_hardware, pkp_software,                                     \
+                  pkp_model_name("PKU2600\0"sv, "inferred from PKP 22"),                           \
+                  pkp_device_model("PKU2600\0"sv, "inferred from PKP 29"), pkp_serial})            \
+    X(pkp2600si, .manual = "PKP-2600-SI", .dictionary = dict::si_packed,                           \
+      .keys = 12, .leds = 12, .planes = 3, .stride = 12, .led_mask = 0xFFF,                        \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
+      .replies_from_new_id = true, .backlight_zero_is_default = true,                              \
+      .strings = {blinkmarine_si,                                                                  \
+                  {object::hardware_version, "V_01"sv, 4, true, "PKP2600SI 31"},                   \
+                  {object::software_version, "V2.8"sv, 4, true, "PKP2600SI 32"},                   \
+                  si_model_name("PKP2600SI"sv, "PKP2600SI 33"), si_serial})                        \
+    X(pkp3500mt, .manual = "PKP-3500-MT", .dictionary = dict::si_mt,                               \
+      .keys = 15, .leds = 15, .planes = 3, .stride = 16, .led_mask = 0x7BFE,                       \
+      .encoder_leds_pdo = true, .backlight_pdo = true, .backlight_colour = true,                   \
+      .encoders = true, .j1939 = true, .replies_from_new_id = true,                                \
+      .strings = {blinkmarine_si,                                                                  \
+                  {object::hardware_version, "V_00"sv, 4, true, "MT 37"},                          \
+                  {object::software_version, "1.00"sv, 4, true, "MT 38"},                          \
+                  si_model_name("PKP3500MT"sv, "MT 39"), si_serial})                               \
+    X(pkp3500si, .manual = "PKP-3500-SI", .dictionary = dict::si_per_colour,                       \
+      .keys = 15, .leds = 15, .planes = 3, .stride = 16, .led_mask = 0x7FFF,                       \
+      .brightness_pdo = true, .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,   \
+      .strings = {blinkmarine_si, si_hardware, si_software,                                        \
+                  si_model_name("PKP3500SI"sv, "docs/si-family.md"), si_serial})                   \
+    X(pkp2500si, .manual = "PKP-2500-SI", .dictionary = dict::si_per_colour,                       \
+      .keys = 10, .leds = 10, .planes = 3, .stride = 16, .led_mask = 0x3FF,                        \
+      .brightness_pdo = true, .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,   \
+      .strings = {blinkmarine_si, si_hardware, si_software,                                        \
+                  si_model_name("PKP2500SI"sv, "inferred from the naming"), si_serial})            \
+    X(pkp1500li, .manual = "PKP-1500-LI", .dictionary = dict::si_per_colour,                       \
+      .keys = 5, .leds = 5, .planes = 3, .stride = 8, .led_mask = 0x1F,                            \
+      .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,                           \
+      .strings = {blinkmarine_si, si_hardware,                                                     \
+                  {object::software_version, "2.10"sv, 4, true, "docs/si-family.md"},              \
+                  si_model_name("PKP1500LI"sv, "docs/si-family.md"), si_serial})                   \
+    X(pkp2200si, .manual = "PKP-2200-SI", .dictionary = dict::si_per_colour,                       \
+      .keys = 4, .leds = 4, .planes = 3, .stride = 8, .led_mask = 0xF,                             \
+      .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,                           \
+      .strings = {blinkmarine_si, si_hardware, si_software,                                        \
+                  si_model_name("PKP2200SI"sv, "inferred from the naming"), si_serial})            \
+    X(pkp2300si, .manual = "PKP-2300-SI", .dictionary = dict::si_per_colour,                       \
+      .keys = 6, .leds = 6, .planes = 3, .stride = 8, .led_mask = 0x3F,                            \
+      .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,                           \
+      .strings = {blinkmarine_si, si_hardware, si_software,                                        \
+                  si_model_name("PKP2300SI"sv, "inferred from the naming"), si_serial})            \
+    X(pkp2400si, .manual = "PKP-2400-SI", .dictionary = dict::si_per_colour,                       \
+      .keys = 8, .leds = 8, .planes = 3, .stride = 8, .led_mask = 0xFF,                            \
+      .backlight_pdo = true, .j1939 = true, .replies_from_new_id = true,                           \
+      .strings = {blinkmarine_si, si_hardware, si_software,                                        \
+                  si_model_name("PKP2400SI"sv, "inferred from the naming"), si_serial})
+// clang-format on
+
+enum class model : std::uint8_t {
+#define POWERKEY_DETAIL_MODEL_ENUM(name, ...) name,
+    POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ENUM)
+#undef POWERKEY_DETAIL_MODEL_ENUM
+};
+
+namespace detail {
+#define POWERKEY_DETAIL_MODEL_ROW(M, ...) model_info{.id = model::M, .name = #M, __VA_ARGS__},
+inline constexpr model_info model_table[] = {POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ROW)};
+#undef POWERKEY_DETAIL_MODEL_ROW
+}  // namespace detail
+
+inline constexpr std::size_t model_count = std::size(detail::model_table);
+
+template <>
+struct enum_names<model> {
+    static constexpr auto entries = [] {
+        std::array<enum_name_entry<model>, model_count> t{};
+        for (std::size_t i = 0; i < t.size(); ++i)
+            t[i] = {detail::model_table[i].id, detail::model_table[i].name};
+        return t;
+    }();
+};
+
+namespace detail {
 // The LED-map rule's planes do not overlap (each fits its stride) and end within 64 bits: what
 // the codec's LED PDO decoder (two shifts by the stride, a test against led_bits) relies on.
 constexpr bool planes_apart() noexcept {
@@ -123,8 +247,6 @@ constexpr bool planes_apart() noexcept {
 static_assert(planes_apart());
 }  // namespace detail
 
-inline constexpr std::size_t model_count = std::size(detail::model_table);
-
 // The row of a model; errc::value_out_of_range for a value outside the enum.
 [[nodiscard]] constexpr result<model_info> info(model m) noexcept {
     const auto i = static_cast<std::size_t>(m);
@@ -133,18 +255,108 @@ inline constexpr std::size_t model_count = std::size(detail::model_table);
 }
 
 namespace detail {
-// The row of a model the caller has checked is one (no copy: the decoders' hot path).
+// The row of a model the caller has checked is one (no copy).
 constexpr const model_info& row_of(model m) noexcept {
     return model_table[static_cast<std::size_t>(m)];
 }
 constexpr bool is_model(model m) noexcept { return static_cast<std::size_t>(m) < model_count; }
+// The row of a model; for a value that is not one, a row of zeros (no keys, no LEDs, no PDOs).
+inline constexpr model_info no_model_row{};
+constexpr const model_info& row_or_none(model m) noexcept {
+    return is_model(m) ? row_of(m) : no_model_row;
+}
+
+// What the decoders need of a row, without the names and strings: copied from model_table at
+// compile time, so that a firmware that only decodes links these 20-odd bytes a model and not
+// the model table (docs/performance.md).
+struct model_layout {
+    powerkey::model id;
+    powerkey::dictionary dictionary;
+    std::uint8_t keys, leds, planes, stride;
+    bool brightness_pdo, encoder_leds_pdo, backlight_pdo, backlight_colour, encoders, j1939;
+    std::uint32_t led_mask, not_keys;
+    // The bits of a 4-byte LED-map object (PKP 6001h/6002h) that name no LED: all but those of
+    // the planes object_planes() keeps (the complement, so that the test is one AND).
+    std::uint32_t object_not_leds;
+    std::uint64_t led_bits;
+    [[nodiscard]] constexpr unsigned object_planes() const noexcept {
+        const unsigned fit = 32u / stride;
+        return fit < planes ? fit : planes;
+    }
+};
+constexpr model_layout layout_of(const model_info& m) noexcept {
+    return {m.id,
+            m.dictionary,
+            m.keys,
+            m.leds,
+            m.planes,
+            m.stride,
+            m.brightness_pdo,
+            m.encoder_leds_pdo,
+            m.backlight_pdo,
+            m.backlight_colour,
+            m.encoders,
+            m.j1939,
+            m.led_mask,
+            m.not_keys,
+            ~static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride)),
+            m.led_bits};
+}
+inline constexpr auto model_layouts = [] {
+    std::array<model_layout, model_count> t{};
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = layout_of(model_table[i]);
+    return t;
+}();
+constexpr const model_layout& layout(model m) noexcept {
+    return model_layouts[static_cast<std::size_t>(m)];
+}
 }  // namespace detail
+
+// A set of models, of any size the table has: the models a test row or a string applies to.
+class model_set {
+public:
+    constexpr model_set() noexcept = default;
+    constexpr model_set(std::initializer_list<model> models) noexcept {
+        for (const model m : models) insert(m);
+    }
+    [[nodiscard]] static constexpr model_set all() noexcept {
+        model_set s;
+        for (std::size_t i = 0; i < model_count; ++i) s.insert(static_cast<model>(i));
+        return s;
+    }
+    [[nodiscard]] constexpr bool contains(model m) const noexcept {
+        const auto i = static_cast<std::size_t>(m);
+        return i < model_count && ((words_[i / 64] >> (i % 64)) & 1u) != 0;
+    }
+    constexpr void insert(model m) noexcept {
+        const auto i = static_cast<std::size_t>(m);
+        if (i < model_count) words_[i / 64] |= std::uint64_t{1} << (i % 64);
+    }
+    [[nodiscard]] constexpr bool empty() const noexcept {
+        for (const auto w : words_)
+            if (w != 0) return false;
+        return true;
+    }
+    friend constexpr model_set operator|(model_set a, const model_set& b) noexcept {
+        for (std::size_t i = 0; i < a.words_.size(); ++i) a.words_[i] |= b.words_[i];
+        return a;
+    }
+    friend constexpr model_set operator-(model_set a, const model_set& b) noexcept {
+        for (std::size_t i = 0; i < a.words_.size(); ++i) a.words_[i] &= ~b.words_[i];
+        return a;
+    }
+    friend constexpr bool operator==(const model_set&, const model_set&) noexcept = default;
+
+private:
+    std::array<std::uint64_t, (model_count + 63) / 64> words_{};
+};
 
 // --- the LED-map and key-map rule ---------------------------------------------------------------
 
 // The first `planes` planes of l as the model's bit string. LEDs the model lacks are dropped:
 // callers that must refuse them compare with unpack_leds (the codec does).
-[[nodiscard]] constexpr std::uint64_t pack_leds(const model_info& m, const leds& l,
+template <class Row>  // model_info, or the codec's detail::model_layout
+[[nodiscard]] constexpr std::uint64_t pack_leds(const Row& m, const leds& l,
                                                 unsigned planes) noexcept {
     std::uint64_t v = 0;
     for (unsigned c = 0; c < planes; ++c)
@@ -154,7 +366,8 @@ constexpr bool is_model(model m) noexcept { return static_cast<std::size_t>(m) <
 
 // The map in a bit string of the model; errc::reserved_not_zero for a set bit that names no LED.
 // The planes written out rather than looped: this runs for every LED PDO (docs/performance.md).
-[[nodiscard]] constexpr result<leds> unpack_leds(const model_info& m, std::uint64_t v,
+template <class Row>
+[[nodiscard]] constexpr result<leds> unpack_leds(const Row& m, std::uint64_t v,
                                                  unsigned planes) noexcept {
     const std::uint64_t one = m.led_mask;
     const unsigned s = m.stride;
@@ -174,48 +387,13 @@ constexpr bool is_model(model m) noexcept { return static_cast<std::size_t>(m) <
 }
 
 // Keys 1..N as bits 0..N-1; errc::reserved_not_zero for a bit above the model's keys.
-[[nodiscard]] constexpr result<key_set> unpack_keys(const model_info& m, std::uint64_t v) noexcept {
+template <class Row>
+[[nodiscard]] constexpr result<key_set> unpack_keys(const Row& m, std::uint64_t v) noexcept {
     if ((v >> m.keys) != 0) return errc::reserved_not_zero;
     return key_set::from_mask(v);
 }
 
 // --- names ----------------------------------------------------------------------------------
-
-template <>
-struct enum_names<model> {
-    static constexpr enum_name_entry<model> entries[] = {
-        {model::pk1000, "pk1000"},       {model::pkp2200, "pkp2200"},
-        {model::pkp2400, "pkp2400"},     {model::pkp2600, "pkp2600"},
-        {model::pkp2600si, "pkp2600si"}, {model::pkp3500mt, "pkp3500mt"},
-        {model::pkp3500si, "pkp3500si"}, {model::pkp2500si, "pkp2500si"},
-        {model::pkp1500li, "pkp1500li"}, {model::pkp2200si, "pkp2200si"},
-        {model::pkp2300si, "pkp2300si"}, {model::pkp2400si, "pkp2400si"},
-    };
-};
-
-// How the manuals name each keypad, and the model string it reports in 100Bh where a manual
-// shows one (PK1000 section 35 "PK1000"; PKP section 22 "PKU2400"; PKP2600SI manual section 33
-// "PKP2600SI"; PKP3500-MT manual section 39 "PKP3500MT"; docs/si-family.md for the others).
-struct model_names {
-    model id;
-    std::string_view manual;    // "PKP-2400-LI"
-    std::string_view reported;  // 100Bh model id, "" where no manual shows it
-};
-
-inline constexpr model_names model_name_table[] = {
-    {model::pk1000, "PK1000", "PK1000"},
-    {model::pkp2200, "PKP-2200-LI", ""},
-    {model::pkp2400, "PKP-2400-LI", "PKU2400"},
-    {model::pkp2600, "PKP-2600", ""},
-    {model::pkp2600si, "PKP-2600-SI", "PKP2600SI"},
-    {model::pkp3500mt, "PKP-3500-MT", "PKP3500MT"},
-    {model::pkp3500si, "PKP-3500-SI", "PKP3500SI"},
-    {model::pkp2500si, "PKP-2500-SI", ""},
-    {model::pkp1500li, "PKP-1500-LI", "PKP1500LI"},
-    {model::pkp2200si, "PKP-2200-SI", ""},
-    {model::pkp2300si, "PKP-2300-SI", ""},
-    {model::pkp2400si, "PKP-2400-SI", ""},
-};
 
 namespace detail {
 // Lower case, without '-', '_' and spaces: "PKP-2400-LI" -> "pkp2400li".
@@ -238,19 +416,19 @@ constexpr bool same_name(std::string_view a, std::string_view b) noexcept {
 // A model from any of its names, case and '-' / '_' ignored: "pkp2400", "PKP-2400",
 // "PKP-2400-LI", the reported "PKU2400". errc::value_out_of_range for any other text.
 [[nodiscard]] constexpr result<model> parse_model(std::string_view text) noexcept {
-    for (const auto& n : enum_names<model>::entries)
-        if (detail::same_name(n.name, text)) return n.value;
-    for (const auto& n : model_name_table)
-        if (detail::same_name(n.manual, text) ||
-            (!n.reported.empty() && detail::same_name(n.reported, text)))
-            return n.id;
+    for (const auto& m : detail::model_table)
+        if (detail::same_name(m.name, text)) return m.id;
+    for (const auto& m : detail::model_table)
+        if (detail::same_name(m.manual, text) ||
+            (!m.reported().empty() && detail::same_name(m.reported(), text)))
+            return m.id;
     return errc::value_out_of_range;
 }
 
 // The model a keypad's reported model string (100Bh, PKP 6100h sub 2) names, if a manual shows it.
 [[nodiscard]] constexpr result<model> model_from_report(std::string_view reported) noexcept {
-    for (const auto& n : model_name_table)
-        if (!n.reported.empty() && n.reported == reported) return n.id;
+    for (const auto& m : detail::model_table)
+        if (!m.reported().empty() && m.reported() == reported) return m.id;
     return errc::value_out_of_range;
 }
 

@@ -6,7 +6,7 @@
 #define POWERKEY_KEYPAD_VALUES_HPP
 
 #include <powerkey/bounded.hpp>
-#include <powerkey/detail/enum_table.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/index_set.hpp>
 
 #include <cstddef>

@@ -1,7 +1,8 @@
-// powerkey detail: the shape of an enum's name table (names.hpp has the functions over it). Kept
+// powerkey: the shape of an enum's name table, which each named enum specialises beside its
+// definition (names.hpp has the functions over it: to_string, from_string, enum_values). Kept
 // apart so that a header can give its enum names without pulling in result<T>.
-#ifndef POWERKEY_DETAIL_ENUM_TABLE_HPP
-#define POWERKEY_DETAIL_ENUM_TABLE_HPP
+#ifndef POWERKEY_ENUM_NAMES_HPP
+#define POWERKEY_ENUM_NAMES_HPP
 
 #include <string_view>
 
@@ -19,4 +20,4 @@ struct enum_names;
 
 }  // namespace powerkey
 
-#endif  // POWERKEY_DETAIL_ENUM_TABLE_HPP
+#endif  // POWERKEY_ENUM_NAMES_HPP

@@ -1,0 +1,38 @@
+// powerkey detail: the library's only macros besides its include guards: how much of a decoder
+// the compiler inlines. The decoders are a dispatch (a front, a switch on the function code, one
+// on an SDO value's kind) whose cases are small; inlined into their switch, the common cases need
+// no frame and no registers saved, the rare ones are called out of line (docs/performance.md).
+// Under -Os (firmware) one shared copy of each is smaller, so only POWERKEY_DETAIL_INLINE, the
+// dispatch itself, stays forced there. Compilers other than g++ and clang get no hints.
+#ifndef POWERKEY_DETAIL_INLINE_HPP
+#define POWERKEY_DETAIL_INLINE_HPP
+
+#if defined(__GNUC__)
+#define POWERKEY_DETAIL_INLINE [[gnu::always_inline]]
+#if defined(__OPTIMIZE_SIZE__)
+#define POWERKEY_DETAIL_HOT
+#define POWERKEY_DETAIL_COLD
+#else
+#define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
+#define POWERKEY_DETAIL_COLD [[gnu::noinline]]
+#endif
+#else
+#define POWERKEY_DETAIL_INLINE
+#define POWERKEY_DETAIL_HOT
+#define POWERKEY_DETAIL_COLD
+#endif
+
+// Tells g++ and clang that `condition` is false here (a row number a key matched is never the
+// sentinel): the callers' tests of it drop out. Nothing elsewhere.
+#if defined(__GNUC__)
+#define POWERKEY_DETAIL_ASSUME_NOT(condition)   \
+    do {                                        \
+        if (condition) __builtin_unreachable(); \
+    } while (false)
+#else
+#define POWERKEY_DETAIL_ASSUME_NOT(condition) \
+    do {                                      \
+    } while (false)
+#endif
+
+#endif  // POWERKEY_DETAIL_INLINE_HPP
