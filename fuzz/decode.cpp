@@ -1,8 +1,10 @@
 // The keypad decoder powerkey::decode(frame, node, model) on arbitrary frames, for every model of
 // the model table (and, one input in five, a value that is no model). Properties: no crash, no
 // read past the dlc, every refusal a listed errc, decode -> encode -> decode a fixed point; and
-// the accessors never answer for a frame that decodes to nothing.
+// the accessors never answer for a frame that decodes to nothing; every SDO entry point agrees
+// with the SDO engine (tests/sdo_agreement.hpp).
 #include "properties.hpp"
+#include "sdo_agreement.hpp"
 
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
@@ -19,6 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         f, [&](const can::frame& x) { return decode(x, node, m); },
         [&](const message& msg) { return encode(node, m, msg); });
     if (!info(m)) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
+    // One SDO parser: the engine, the CiA 301 decoders, every model's decode and the session agree.
+    POWERKEY_FUZZ_CHECK_FRAME(sdo_agreement::disagreement(f, node).empty(), f);
     if (decoded) {
         // The accessors read the decoded message without touching anything else.
         const auto msg = *decode(f, node, m);

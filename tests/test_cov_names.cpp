@@ -197,16 +197,19 @@ constexpr name_row access_rows[] = {
     {"ro", 0, "read_only"}, {"wo", 1, "write_only"}, {"rw", 2, "read_write"}};
 static_assert(table_is<access>(access_rows, 3));
 
-// Table order, not enum order: `none` comes before the SI kinds added after it.
+// The names come from POWERKEY_VALUE_KINDS, in enum order.
 constexpr name_row value_kind_rows[] = {
-    {"", 0, "number"},    {"", 1, "flag"},         {"", 2, "brightness"},
-    {"", 3, "colour"},    {"", 4, "baud"},         {"", 5, "show"},
-    {"", 6, "node"},      {"", 7, "period"},       {"", 8, "keys"},
-    {"", 9, "led_plane"}, {"", 10, "led_map"},     {"", 11, "consumer_heartbeat"},
-    {"", 12, "cob_id"},   {"", 13, "pdo_mapping"}, {"", 14, "device_type"},
-    {"", 15, "string"},   {"", 16, "restore"},     {"", 20, "none"},
-    {"", 17, "led_part"}, {"", 18, "ring"},        {"", 19, "direction_counter"},
-    {"", 21, "commands"},
+    {"", 0, "number"},       {"", 1, "flag"},
+    {"", 2, "brightness"},   {"", 3, "colour"},
+    {"", 4, "baud"},         {"", 5, "show"},
+    {"", 6, "node"},         {"", 7, "period"},
+    {"", 8, "keys"},         {"", 9, "led_plane"},
+    {"", 10, "led_map"},     {"", 11, "consumer_heartbeat"},
+    {"", 12, "cob_id"},      {"", 13, "pdo_mapping"},
+    {"", 14, "device_type"}, {"", 15, "string"},
+    {"", 16, "restore"},     {"", 17, "led_part"},
+    {"", 18, "ring"},        {"", 19, "direction_counter"},
+    {"", 20, "none"},        {"", 21, "commands"},
 };
 static_assert(table_is<value_kind>(value_kind_rows, 22));
 

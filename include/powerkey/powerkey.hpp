@@ -41,6 +41,7 @@
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/value_kinds.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #endif  // POWERKEY_POWERKEY_HPP

@@ -27,11 +27,13 @@
 #include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 namespace powerkey {
@@ -96,11 +98,12 @@ public:
         e.node = node_;
         if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
         e.decoded = decode(f, e.node, model_);
-        if (e.cls.fn == canopen::function::sdo_rx && e.cls.node == e.node.value())
-            on_request(f, e);
-        else if (e.cls.fn == canopen::function::sdo_tx && e.cls.node == e.node.value())
-            on_reply(f, e);
-        else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
+        const bool ours = e.cls.node == e.node.value();
+        if (e.cls.fn == canopen::function::sdo_rx && ours) {
+            if (const auto s = sdo_frame_of(f, e)) on_request(*s, e);
+        } else if (e.cls.fn == canopen::function::sdo_tx && ours) {
+            if (const auto s = sdo_frame_of(f, e)) on_reply(*s, f, e);
+        } else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
             protocol_ = bus_protocol::canopen;
             e.new_protocol = protocol_;
         }
@@ -110,25 +113,81 @@ public:
 private:
     enum class pending_kind : std::uint8_t { none, download, upload, segmented };
 
-    constexpr void on_request(const can::frame& f, session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_request(f, e.node);
-        if (!r) return;
-        e.sdo = sdo_pairing::request;
-        if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) {
-            pending_ = pending_kind::download;
-            pending_address_ = d->address;
-            change_ = std::nullopt;
-            if (e.decoded) on_write(*e.decoded, e);
-        } else if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) {
-            pending_ = pending_kind::upload;
-            pending_address_ = u->address;
-            upload_ = canopen::segmented_upload<TextCapacity>(e.node);
-            (void)upload_.start(u->address);
-        } else if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
-            pending_ = pending_kind::none;
-            pending_address_ = a->address;
+    // Which SDO frame of an exchange a frame is, and the object it names.
+    struct sdo_frame {
+        canopen::sdo_op op;
+        canopen::sdo_address address{};
+    };
+
+    constexpr canopen::sdo_address address_of(object o) const noexcept {
+        return detail::codec_rows[detail::find_codec_row(info_->dictionary, o)].address();
+    }
+
+    // The SDO frame as decode returned it; for a frame decode refused (an object the dictionary
+    // lacks, a value out of range), the SDO engine's reading of its specifier and address, so
+    // that the keypad's abort still answers it.
+    constexpr std::optional<sdo_frame> sdo_frame_of(const can::frame& f,
+                                                    const session_event& e) const noexcept {
+        using op = canopen::sdo_op;
+        if (e.decoded) {
+            return std::visit(
+                [this](const auto& v) -> std::optional<sdo_frame> {
+                    using T = std::remove_cvref_t<decltype(v)>;
+                    if constexpr (std::is_same_v<T, sdo_read>)
+                        return sdo_frame{op::upload, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, sdo_write>)
+                        return sdo_frame{op::expedited_download, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, command>)
+                        return sdo_frame{op::expedited_download,
+                                         address_of(object::command_module)};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_request>)
+                        return sdo_frame{op::segment_request};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_request>)
+                        return sdo_frame{op::abort_request, v.abort.address};
+                    else if constexpr (std::is_same_v<T, sdo_write_reply>)
+                        return sdo_frame{op::download_response, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, sdo_read_reply>)
+                        return sdo_frame{op::expedited_upload, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>)
+                        return sdo_frame{op::upload_initiate, v.address};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_response>)
+                        return sdo_frame{op::segment};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_response>)
+                        return sdo_frame{op::abort_response, v.abort.address};
+                    else
+                        return std::nullopt;
+                },
+                *e.decoded);
         }
-        // A segment request keeps the segmented upload pending.
+        if (f.size() != 8) return std::nullopt;
+        const auto w = canopen::sdo_word::of(f);
+        const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
+                                                             : canopen::sdo_response_op(w);
+        if (!o) return std::nullopt;
+        return sdo_frame{*o, w.address()};
+    }
+
+    constexpr void on_request(const sdo_frame& s, session_event& e) noexcept {
+        e.sdo = sdo_pairing::request;
+        switch (s.op) {
+            case canopen::sdo_op::expedited_download:
+                pending_ = pending_kind::download;
+                pending_address_ = s.address;
+                change_ = std::nullopt;
+                if (e.decoded) on_write(*e.decoded, e);
+                break;
+            case canopen::sdo_op::upload:
+                pending_ = pending_kind::upload;
+                pending_address_ = s.address;
+                upload_ = canopen::segmented_upload<TextCapacity>(e.node);
+                (void)upload_.start(s.address);
+                break;
+            case canopen::sdo_op::abort_request:
+                pending_ = pending_kind::none;
+                pending_address_ = s.address;
+                break;
+            default: break;  // a segment request keeps the segmented upload pending
+        }
     }
 
     // The writes that move the keypad to another node id or protocol.
@@ -149,47 +208,53 @@ private:
         }
     }
 
-    constexpr void on_reply(const can::frame& f, session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_response(f, e.node);
-        if (!r) return;
+    constexpr void on_reply(const sdo_frame& s, const can::frame& f, session_event& e) noexcept {
         e.sdo = sdo_pairing::unanswered;
         const pending_kind was = pending_;
         const canopen::sdo_address asked = pending_address_;
         auto answers = [&](canopen::sdo_address a) {
             return was != pending_kind::none && a == asked;
         };
-        if (const auto* d = std::get_if<canopen::sdo_download_response>(&*r)) {
-            if (was == pending_kind::download && answers(d->address)) pair(e);
-            if (change_ && e.sdo == sdo_pairing::reply) {
-                node_ = *change_;
-                e.new_node = node_;
-            }
-            change_ = std::nullopt;
-        } else if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
-            if (answers(a->address)) pair(e);
-            if (was == pending_kind::upload || was == pending_kind::segmented) step_upload(f, e);
-            if (previous_node_ && e.node == *previous_node_) {  // the node change was refused
-                node_ = *previous_node_;
-                e.new_node = node_;
-            }
-            change_ = std::nullopt;
-        } else if (std::holds_alternative<canopen::sdo_segment_response>(*r)) {
-            if (was == pending_kind::segmented) {
-                pair(e);
-                step_upload(f, e);
-            }
-        } else if (const auto* u = std::get_if<canopen::sdo_upload_response>(&*r)) {
-            if (was == pending_kind::upload && answers(u->address)) {
-                pair(e);
-                // A string of up to four bytes comes in one reply: it ends the upload too.
-                const auto* v = e.decoded ? std::get_if<sdo_read_reply>(&*e.decoded) : nullptr;
-                if (v && info(v->object).kind == value_kind::string) step_upload(f, e);
-            }
-        } else if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
-            if (was == pending_kind::upload && answers(i->address)) {
-                pair(e);
-                step_upload(f, e);
-            }
+        switch (s.op) {
+            case canopen::sdo_op::download_response:
+                if (was == pending_kind::download && answers(s.address)) pair(e);
+                if (change_ && e.sdo == sdo_pairing::reply) {
+                    node_ = *change_;
+                    e.new_node = node_;
+                }
+                change_ = std::nullopt;
+                break;
+            case canopen::sdo_op::abort_response:
+                if (answers(s.address)) pair(e);
+                if (was == pending_kind::upload || was == pending_kind::segmented)
+                    step_upload(f, e);
+                if (previous_node_ && e.node == *previous_node_) {  // the change was refused
+                    node_ = *previous_node_;
+                    e.new_node = node_;
+                }
+                change_ = std::nullopt;
+                break;
+            case canopen::sdo_op::segment:
+                if (was == pending_kind::segmented) {
+                    pair(e);
+                    step_upload(f, e);
+                }
+                break;
+            case canopen::sdo_op::expedited_upload:
+                if (was == pending_kind::upload && answers(s.address)) {
+                    pair(e);
+                    // A string of up to four bytes comes in one reply: it ends the upload too.
+                    const auto* v = e.decoded ? std::get_if<sdo_read_reply>(&*e.decoded) : nullptr;
+                    if (v && info(v->object).kind == value_kind::string) step_upload(f, e);
+                }
+                break;
+            case canopen::sdo_op::upload_initiate:
+                if (was == pending_kind::upload && answers(s.address)) {
+                    pair(e);
+                    step_upload(f, e);
+                }
+                break;
+            default: break;
         }
         if (e.cls.node == node_.value() || (previous_node_ && e.node == *previous_node_))
             previous_node_ = std::nullopt;  // the first reply settles a node change
@@ -201,9 +266,11 @@ private:
         pending_ = pending_kind::none;
     }
 
+    // The upload reader takes the reply as decode returned it; a reply decode refused is read by
+    // the CiA 301 decoder (the same SDO engine).
     constexpr void step_upload(const can::frame& f, session_event& e) noexcept {
         if (upload_.state() != canopen::upload_state::running) return;
-        const auto s = upload_.step(f);
+        const auto s = e.decoded ? upload_.step(as_response(*e.decoded)) : upload_.step(f);
         if (!s) {
             e.upload_error = s.error();
         } else if (upload_.state() == canopen::upload_state::done) {
@@ -212,6 +279,22 @@ private:
             pending_ = pending_kind::segmented;
             pending_address_ = upload_.address();
         }
+    }
+
+    // The CiA 301 view of a decoded reply that belongs to an upload (step_upload's callers made
+    // sure it is one): a string read whole, a segmented upload's start, a segment, an abort.
+    constexpr canopen::sdo_response as_response(const message& m) const noexcept {
+        if (const auto* v = std::get_if<sdo_read_reply>(&m)) {
+            canopen::expedited_data d{
+                canopen::expedited_size::make(v->value.size).value_or(canopen::expedited_size{4}),
+                {}};
+            detail::store_le<4>(d.bytes, 0, v->value.raw);
+            return canopen::sdo_upload_response{address_of(v->object), d};
+        }
+        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&m)) return *i;
+        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&m)) return *s;
+        if (const auto* a = std::get_if<canopen::sdo_abort_response>(&m)) return a->abort;
+        return canopen::sdo_download_response{};  // not an upload's: the reader refuses it
     }
 
     powerkey::model model_;

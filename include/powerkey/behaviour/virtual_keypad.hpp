@@ -263,12 +263,17 @@ private:
         }
     }
 
-    // The expedited size of a row (the SI per-colour planes: the model's stride, as the codec
-    // has it); 0 for a string.
+    // The codec's row of a full row, and the model's layout: what the value kinds read.
+    constexpr const powerkey::detail::codec_row& codec_row_of(const object_row& r) const noexcept {
+        return powerkey::detail::codec_rows[powerkey::detail::find_codec_row(
+            info_->dictionary, powerkey::detail::wire_key(r.address))];
+    }
+    constexpr const powerkey::detail::model_layout& layout() const noexcept {
+        return powerkey::detail::layout(model_);
+    }
+    // The expedited size of a row, as the codec has it (value_kinds.hpp); 0 for a string.
     constexpr unsigned size_of(const object_row& r) const noexcept {
-        if (r.size != 0) return r.size;
-        if (info(r.id).kind == value_kind::led_plane) return info_->stride / 8u;
-        return 0;
+        return powerkey::detail::row_size(layout(), codec_row_of(r), 0);
     }
     // Whether an LED object is of the blink map (by its name: led_blink, led_blink_red, ...).
     static constexpr bool is_blink(object o) noexcept {
@@ -277,25 +282,26 @@ private:
     constexpr leds& map_of(object o) noexcept { return is_blink(o) ? blink_ : on_; }
     constexpr const leds& map_of(object o) const noexcept { return is_blink(o) ? blink_ : on_; }
 
-    // The value a read of row r gives now.
+    // The value a read of row r gives now: an LED object packed from the maps as its kind packs
+    // it (value_kinds.hpp), the keys pressed, a COB-ID with the node in use, the run-time
+    // levels, or the stored value.
     constexpr std::uint32_t current(const object_row& r) const noexcept {
-        const object_info k = info(r.id);
-        switch (k.kind) {
-            case value_kind::keys: return static_cast<std::uint32_t>(keys_.mask());
-            case value_kind::led_map: return map_bits(map_of(r.id));
-            case value_kind::led_plane:
-                return static_cast<std::uint32_t>(map_of(r.id).of(k.holds).mask());
-            case value_kind::led_part:  // SI: bits [offset, offset + width) of the LED string
-                return static_cast<std::uint32_t>(
-                    (pack_leds(*info_, map_of(r.id), info_->planes) >> k.offset) &
-                    powerkey::detail::low_bits(k.width));
-            case value_kind::cob_id:
-                // PK1000 38-41, 46: 4000 0000h + the identifier in use (the rows hold node 15h);
-                // the PKP prints the function base without the node (E-PKP-5), as its rows do.
-                if ((r.initial & 0x7Fu) != 0) return (r.initial & 0xFFFF'FF80u) | node_.value();
-                return r.initial;
-            default: break;
+        const value_kind kind = info(r.id).kind;
+        if (kind == value_kind::keys) return static_cast<std::uint32_t>(keys_.mask());
+        if (kind == value_kind::cob_id) {
+            // PK1000 38-41, 46: 4000 0000h + the identifier in use (the rows hold node 15h);
+            // the PKP prints the function base without the node (E-PKP-5), as its rows do.
+            if ((r.initial & 0x7Fu) != 0) return (r.initial & 0xFFFF'FF80u) | node_.value();
+            return r.initial;
         }
+        std::uint32_t led_value = 0;
+        const bool led = visit_kind(kind, [&](auto k) {
+            using K = decltype(k);
+            if constexpr (K::led)
+                led_value = K::pack(layout(), codec_row_of(r), object_value{0, map_of(r.id), 0});
+            return K::led;
+        });
+        if (led) return led_value;
         switch (r.id) {
             case object::led_brightness: return brightness_.value();
             case object::backlight_level: return backlight_.level.value();
@@ -303,10 +309,6 @@ private:
             case object::node_id: return node_.value();
             default: return value(r.id);
         }
-    }
-    constexpr std::uint32_t map_bits(const leds& l) const noexcept {
-        return static_cast<std::uint32_t>(pack_leds(*info_, l, info_->object_planes()) &
-                                          0xFFFF'FFFFu);
     }
 
     // --- boot and NMT -------------------------------------------------------------------------
@@ -612,62 +614,36 @@ private:
         reply(p, t, then);
     }
 
-    // Checks a written value against its row and applies it; the abort code when refused.
+    // Checks a written value against its row as the codec does (its kind's check,
+    // value_kinds.hpp) and applies it; the abort code when refused. An LED object's value is
+    // merged into its map (the LEDs its kind covers); the command module runs its command.
     constexpr std::optional<canopen::sdo_abort_code> check_and_apply(const object_row& r,
                                                                      const can::frame& f,
                                                                      std::uint32_t v,
                                                                      after_reply& then,
                                                                      millis t) noexcept {
-        using code = canopen::sdo_abort_code;
         const value_kind kind = info(r.id).kind;
-        switch (kind) {
-            case value_kind::led_plane: {  // PK1000 17, 18: one plane, LEDs 1..28
-                if ((v & ~info_->led_mask) != 0) return code::invalid_value;
-                map_of(r.id).of(info(r.id).holds) = led_set::from_mask(v);
-                return std::nullopt;
-            }
-            case value_kind::led_map: {  // PKP 15, 16: the planes that fit 32 bits
-                const auto m = unpack_leds(*info_, v, info_->object_planes());
-                if (!m) return code::invalid_value;
+        if (kind == value_kind::commands) return command(f, then, t);
+        const auto& c = codec_row_of(r);
+        std::optional<canopen::sdo_abort_code> refused;
+        const bool led = visit_kind(kind, [&](auto k) {
+            using K = decltype(k);
+            const auto size = static_cast<std::uint8_t>(size_of(r));
+            if (const errc e = K::check(layout(), c, size, v, true); e != errc{}) {
+                refused = K::abort_for(e, v, c);
+            } else if constexpr (K::led) {
                 leds& l = map_of(r.id);
-                for (unsigned c = 0; c < info_->object_planes(); ++c)
-                    l.of(static_cast<plane>(c)) = m->of(static_cast<plane>(c));
-                return std::nullopt;
+                l = merged(l, K::value(layout(), c, size, v).map, K::covered(layout(), c));
             }
-            case value_kind::led_part: {  // SI: bits [offset, offset + width) of the string
-                const object_info k = info(r.id);
-                if ((v & ~powerkey::detail::low_bits(k.width)) != 0) return code::invalid_value;
-                leds& l = map_of(r.id);
-                const std::uint64_t keep = ~(powerkey::detail::low_bits(k.width) << k.offset);
-                const auto m = unpack_leds(
-                    *info_,
-                    (pack_leds(*info_, l, info_->planes) & keep) | (std::uint64_t{v} << k.offset),
-                    info_->planes);
-                if (!m) return code::invalid_value;
-                l = *m;
-                return std::nullopt;
-            }
-            case value_kind::consumer_heartbeat: {  // PK1000 28: period 0 (off) or >= 10 ms
-                const std::uint32_t period = v & 0xFFFFu, producer = (v >> 16) & 0xFFu;
-                if ((v >> 24) != 0 || producer < 1 || producer > 0x7F) return code::invalid_value;
-                if (period != 0 && period < 10) return code::value_too_low;
-                value_[idx(r.id)] = v;
-                monitoring_ = false;  // starts again with the next heartbeat
-                return std::nullopt;
-            }
-            case value_kind::restore:  // PK1000 36: only "load"; effective after the reset
-                if (v != load_signature) return code::cannot_store;
-                restore_pending_ = true;
-                return std::nullopt;
-            case value_kind::commands: return command(f, then, t);
-            case value_kind::period:  // 0 = off, else the row's range (E-PK-8, E-PKP-7)
-                if (v != 0 && v < r.min) return code::value_too_low;
-                if (v > r.max) return code::value_too_high;
-                break;
-            default:
-                if (!r.in_range(v)) return v < r.min ? code::value_too_low : code::value_too_high;
-                break;
+            return K::led;
+        });
+        if (refused || led) return refused;
+        if (kind == value_kind::restore) {  // PK1000 36: effective after the reset
+            restore_pending_ = true;
+            return std::nullopt;
         }
+        if (kind == value_kind::consumer_heartbeat)
+            monitoring_ = false;  // starts again with the next heartbeat
         value_[idx(r.id)] = v;
         switch (r.id) {
             // the run-time levels (PK1000 19 a-c, PKP 30)

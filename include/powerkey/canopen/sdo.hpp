@@ -14,7 +14,10 @@
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/bytes.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/enum_names.hpp>
+#include <powerkey/error.hpp>
+#include <powerkey/result.hpp>
 
 #include <array>
 #include <cstdint>
@@ -409,122 +412,202 @@ enum class sdo_direction : std::uint8_t { request, response };
         m);
 }
 
-// --- decoding -----------------------------------------------------------------------------------
+// --- the SDO engine -----------------------------------------------------------------------------
+// Every SDO frame is read here, once and one way: its 8 bytes as one little-endian word (byte 0
+// the specifier, bytes 1..2 the index, 3 the sub-index, 4..7 the data), and the specifier says
+// which frame of the protocol it is, checked for what the keypads' subset reserves. The CiA 301
+// decoders below and the keypad codec (keypad/codec.hpp, which then looks the address up in the
+// keypad's dictionary) both run on it. The frames a bus carries most are tested first; the rest
+// is out of line.
 
-namespace detail {
-constexpr sdo_address address_of(const can::frame& f) noexcept {
-    return {static_cast<std::uint16_t>(powerkey::detail::load_le<2>(f.bytes(), 1)), f[3]};
-}
-constexpr std::array<std::uint8_t, 4> data_of(const can::frame& f) noexcept {
-    return {f[4], f[5], f[6], f[7]};
-}
-constexpr expedited_data expedited_of(const can::frame& f) noexcept {
-    return {expedited_size::make(4 - ((f[0] >> 2) & 3)).value(), data_of(f)};
-}
-constexpr sdo_abort abort_of(const can::frame& f) noexcept {
-    return {address_of(f), static_cast<sdo_abort_code>(static_cast<std::uint32_t>(
-                               powerkey::detail::load_le<4>(f.bytes(), 4)))};
-}
-}  // namespace detail
+// Which SDO frame a word is.
+enum class sdo_op : std::uint8_t {
+    // client -> server (600h + node)
+    expedited_download,  // 23h 27h 2Bh 2Fh: write 4, 3, 2, 1 bytes
+    upload,              // 40h, bytes 4..7 zero: read
+    segment_request,     // 60h / 70h, bytes 1..7 zero
+    abort_request,       // 80h
+    // server -> client (580h + node)
+    download_response,  // 60h, bytes 4..7 zero
+    expedited_upload,   // 43h 47h 4Bh 4Fh: the value read, 4, 3, 2, 1 bytes
+    upload_initiate,    // 41h (size in bytes 4..7), 40h (no size)
+    segment,            // 000t nnnc: toggle, unused bytes, last
+    abort_response,     // 80h
+};
 
-// A frame from the client to the keypad `node`, handed to `on` as the struct it is
-// (sdo_download_request, sdo_upload_request, sdo_segment_request or sdo_abort); `on` returns
-// an R, and so does every refusal. decode_sdo_request below is this with R a variant; the
-// keypad codec uses it to build its own message with no variant in between. Errors:
-// wrong_id_format, wrong_id (not 600h + node), wrong_length (not 8 bytes), unknown_command (a
-// specifier the keypads do not use: segmented or block download, expedited download without
-// size), reserved_not_zero (an upload or segment request with reserved bits or bytes set, e.g.
-// 41h for 40h).
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_request_data(const can::frame& f, F&& on) noexcept;
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_request(const can::frame& f, node_id node, F&& on) noexcept {
-    if (const auto e = detail::check_frame(f, cob_id(function::sdo_rx, node), 8); e != errc{})
-        return e;
-    return visit_sdo_request_data<R>(f, on);
-}
+// An SDO frame's 8 bytes, read once, and its parts.
+struct sdo_word {
+    std::uint64_t bits = 0;
 
-// The same for a frame whose identifier the caller has already checked (the keypad codec
-// classifies every frame first): only the length and the data are checked here.
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_request_data(const can::frame& f, F&& on) noexcept {
-    if (f.size() != 8) return errc::wrong_length;
-    const std::uint8_t c = f[0];
+    [[nodiscard]] static constexpr sdo_word of(const can::frame& f) noexcept {
+        return {powerkey::detail::load_le<8>(f.bytes(), 0)};
+    }
+    [[nodiscard]] constexpr std::uint8_t specifier() const noexcept {
+        return static_cast<std::uint8_t>(bits);
+    }
+    // Bytes 1..3, index | sub-index << 16: the key of the keypad dictionaries' lookup.
+    [[nodiscard]] constexpr std::uint32_t key() const noexcept {
+        return static_cast<std::uint32_t>(bits >> 8) & 0xFF'FFFF;
+    }
+    [[nodiscard]] constexpr sdo_address address() const noexcept {
+        return {static_cast<std::uint16_t>(bits >> 8), static_cast<std::uint8_t>(bits >> 24)};
+    }
+    // Bytes 4..7, little endian.
+    [[nodiscard]] constexpr std::uint32_t data() const noexcept {
+        return static_cast<std::uint32_t>(bits >> 32);
+    }
+    // The bytes an expedited transfer carries (bits 2..3 of the specifier: 4 - n).
+    [[nodiscard]] constexpr std::uint8_t size() const noexcept {
+        return static_cast<std::uint8_t>(4 - ((specifier() >> 2) & 3));
+    }
+    [[nodiscard]] constexpr expedited_data expedited() const noexcept {
+        expedited_data d{expedited_size::make(size()).value(), {}};
+        powerkey::detail::store_le<4>(d.bytes, 0, data());
+        return d;
+    }
+    [[nodiscard]] constexpr sdo_abort abort() const noexcept {
+        return {address(), static_cast<sdo_abort_code>(data())};
+    }
+    [[nodiscard]] constexpr sdo_segment_request segment_request() const noexcept {
+        return {(specifier() & 0x10) != 0};
+    }
+    [[nodiscard]] constexpr sdo_segment_response segment() const noexcept {
+        const std::uint8_t c = specifier();
+        sdo_segment_response s{
+            (c & 0x10) != 0, segment_unused::make((c >> 1) & 7).value(), (c & 1) != 0, {}};
+        powerkey::detail::store_le<7>(s.bytes, 0, bits >> 8);
+        return s;
+    }
+    [[nodiscard]] constexpr sdo_upload_initiate_response upload_initiate() const noexcept {
+        return {address(), (specifier() & 0x01) != 0, data()};
+    }
+};
+
+// The requests visit_sdo_request does not take first: segment requests, aborts and the refusals.
+POWERKEY_DETAIL_INLINE constexpr result<sdo_op> other_request_op(sdo_word w) noexcept {
+    const std::uint8_t c = w.specifier();
     switch (c >> 5) {
-        case 1:  // initiate download: only expedited with size indicated (e = s = 1)
-            if ((c & 0x13) != 0x03) return errc::unknown_command;
-            return on(sdo_download_request{detail::address_of(f), detail::expedited_of(f)});
-        case 2:  // initiate upload
-            if (c != 0x40 || !powerkey::detail::all_zero(f.bytes(), 4, 8))
-                return errc::reserved_not_zero;
-            return on(sdo_upload_request{detail::address_of(f)});
-        case 3:  // upload segment
-            if ((c & 0x0F) != 0 || !powerkey::detail::all_zero(f.bytes(), 1, 8))
-                return errc::reserved_not_zero;
-            return on(sdo_segment_request{(c & 0x10) != 0});
+        case 1: return errc::unknown_command;    // download: only expedited with size (e = s = 1)
+        case 2: return errc::reserved_not_zero;  // upload: only 40h with bytes 4..7 zero
+        case 3:                                  // upload segment
+            if ((c & 0x0F) != 0 || (w.bits >> 8) != 0) return errc::reserved_not_zero;
+            return sdo_op::segment_request;
         case 4:  // abort
             if (c != 0x80) return errc::reserved_not_zero;
-            return on(detail::abort_of(f));
+            return sdo_op::abort_request;
         default: return errc::unknown_command;
     }
 }
-
-// A frame from the keypad `node` to the client, handed to `on` as sdo_segment_response,
-// sdo_upload_response, sdo_upload_initiate_response, sdo_download_response or sdo_abort.
-// Errors: wrong_id_format, wrong_id (not 580h + node), wrong_length (not 8 bytes),
-// unknown_command (download segment, block transfer, expedited upload without size),
-// reserved_not_zero (reserved bits or bytes set in a download response or abort).
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_response_data(const can::frame& f, F&& on) noexcept;
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_response(const can::frame& f, node_id node, F&& on) noexcept {
-    if (const auto e = detail::check_frame(f, cob_id(function::sdo_tx, node), 8); e != errc{})
-        return e;
-    return visit_sdo_response_data<R>(f, on);
-}
-
-// The same for a frame whose identifier the caller has already checked.
-template <class R, class F>
-[[nodiscard]] constexpr R visit_sdo_response_data(const can::frame& f, F&& on) noexcept {
-    if (f.size() != 8) return errc::wrong_length;
-    const std::uint8_t c = f[0];
+// The responses visit_sdo_response does not take first: segments, segmented-upload initiations,
+// aborts and the refusals.
+POWERKEY_DETAIL_INLINE constexpr result<sdo_op> other_response_op(sdo_word w) noexcept {
+    const std::uint8_t c = w.specifier();
     switch (c >> 5) {
-        case 0:  // upload segment
-            return on(sdo_segment_response{(c & 0x10) != 0,
-                                           segment_unused::make((c >> 1) & 7).value(),
-                                           (c & 1) != 0,
-                                           {f[1], f[2], f[3], f[4], f[5], f[6], f[7]}});
+        case 0: return sdo_op::segment;
         case 2:  // initiate upload
             if ((c & 0x10) != 0) return errc::reserved_not_zero;
-            if ((c & 0x02) != 0) {  // expedited
-                if ((c & 0x01) == 0) return errc::unknown_command;
-                return on(sdo_upload_response{detail::address_of(f), detail::expedited_of(f)});
-            }
+            if ((c & 0x02) != 0) return errc::unknown_command;    // expedited without size
             if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
-            return on(sdo_upload_initiate_response{
-                detail::address_of(f), (c & 0x01) != 0,
-                static_cast<std::uint32_t>(powerkey::detail::load_le<4>(f.bytes(), 4))});
-        case 3:  // initiate download response
-            if (c != 0x60 || !powerkey::detail::all_zero(f.bytes(), 4, 8))
-                return errc::reserved_not_zero;
-            return on(sdo_download_response{detail::address_of(f)});
-        case 4:  // abort
+            return sdo_op::upload_initiate;
+        case 3: return errc::reserved_not_zero;  // download response: only 60h, bytes 4..7 zero
+        case 4:                                  // abort
             if (c != 0x80) return errc::reserved_not_zero;
-            return on(detail::abort_of(f));
+            return sdo_op::abort_response;
         default: return errc::unknown_command;
     }
 }
 
-// The same as a variant of the structs.
+// The frame a client sends (600h + node), handed to the handler of its kind: download() for an
+// expedited download (23h 27h 2Bh 2Fh), upload() for a read (40h), other() for anything else,
+// which other_request_op(w) tells apart: a segment request, an abort, or a refusal (errors:
+// unknown_command, a specifier the keypads do not use: segmented or block download, expedited
+// download without size; reserved_not_zero, an upload or segment request with reserved bits or
+// bytes set, e.g. 41h for 40h). The handlers are called in place, so that a caller's common cases
+// are inlined as if written here, and its other() can be one call out of line.
+template <class R, class Download, class Upload, class Other>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr R visit_sdo_request(sdo_word w, Download&& download,
+                                                                   Upload&& upload,
+                                                                   Other&& other) noexcept {
+    const std::uint8_t c = w.specifier();
+    if ((c & 0xF3) == 0x23) return download();
+    if (c == 0x40 && w.data() == 0) return upload();
+    return other();
+}
+
+// The frame a server sends (580h + node): download_response() for 60h, expedited_upload() for
+// 43h 47h 4Bh 4Fh, other() for anything else, which other_response_op(w) tells apart: a segment,
+// a segmented-upload initiation, an abort, or a refusal (unknown_command: download segment, block
+// transfer, expedited upload without size; reserved_not_zero: reserved bits or bytes set in a
+// download response, an initiation or an abort).
+template <class R, class DownloadResponse, class ExpeditedUpload, class Other>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr R visit_sdo_response(
+    sdo_word w, DownloadResponse&& download_response, ExpeditedUpload&& expedited_upload,
+    Other&& other) noexcept {
+    const std::uint8_t c = w.specifier();
+    if (c == 0x60 && w.data() == 0) return download_response();
+    if ((c & 0xF3) == 0x43) return expedited_upload();
+    return other();
+}
+
+// Which frame a word is, or why it is none.
+[[nodiscard]] constexpr result<sdo_op> sdo_request_op(sdo_word w) noexcept {
+    using r = result<sdo_op>;
+    return visit_sdo_request<r>(
+        w, []() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_op::expedited_download}; },
+        []() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_op::upload}; },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_request_op(w); });
+}
+[[nodiscard]] constexpr result<sdo_op> sdo_response_op(sdo_word w) noexcept {
+    using r = result<sdo_op>;
+    return visit_sdo_response<r>(
+        w, []() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_op::download_response}; },
+        []() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_op::expedited_upload}; },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_response_op(w); });
+}
+
+// --- decoding -----------------------------------------------------------------------------------
+// The CiA 301 structs of a frame to or from the keypad `node`, read by the engine above. Errors:
+// wrong_id_format, wrong_id (not 600h / 580h + node), wrong_length (not 8 bytes), then the
+// engine's (sdo_request_op, sdo_response_op).
+
 [[nodiscard]] constexpr result<sdo_request> decode_sdo_request(const can::frame& f,
                                                                node_id node) noexcept {
-    return visit_sdo_request<result<sdo_request>>(
-        f, node, [](const auto& m) -> result<sdo_request> { return sdo_request{m}; });
+    using r = result<sdo_request>;
+    if (const auto e = detail::check_frame(f, cob_id(function::sdo_rx, node), 8); e != errc{})
+        return e;
+    const sdo_word w = sdo_word::of(f);
+    return visit_sdo_request<r>(
+        w,
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA {
+            return r{sdo_download_request{w.address(), w.expedited()}};
+        },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_upload_request{w.address()}}; },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA {
+            const auto op = other_request_op(w);
+            if (!op) return r{op.error()};
+            if (*op == sdo_op::segment_request) return r{w.segment_request()};
+            return r{w.abort()};
+        });
 }
+
 [[nodiscard]] constexpr result<sdo_response> decode_sdo_response(const can::frame& f,
                                                                  node_id node) noexcept {
-    return visit_sdo_response<result<sdo_response>>(
-        f, node, [](const auto& m) -> result<sdo_response> { return sdo_response{m}; });
+    using r = result<sdo_response>;
+    if (const auto e = detail::check_frame(f, cob_id(function::sdo_tx, node), 8); e != errc{})
+        return e;
+    const sdo_word w = sdo_word::of(f);
+    return visit_sdo_response<r>(
+        w, [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return r{sdo_download_response{w.address()}}; },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA {
+            return r{sdo_upload_response{w.address(), w.expedited()}};
+        },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA {
+            const auto op = other_response_op(w);
+            if (!op) return r{op.error()};
+            if (*op == sdo_op::segment) return r{w.segment()};
+            if (*op == sdo_op::upload_initiate) return r{w.upload_initiate()};
+            return r{w.abort()};
+        });
 }
 
 }  // namespace powerkey::canopen

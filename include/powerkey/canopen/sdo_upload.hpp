@@ -105,13 +105,20 @@ public:
                 return decoded.error();
             return fail(decoded.error());
         }
-        if (const auto* a = std::get_if<sdo_abort>(&*decoded)) {
+        return step(*decoded);
+    }
+
+    // The same for a response already decoded (a session hands over what its decoder returned,
+    // so the frame is read once).
+    [[nodiscard]] constexpr result<upload_step> step(const sdo_response& reply) noexcept {
+        if (state_ != upload_state::running) return errc::unexpected_frame;
+        if (const auto* a = std::get_if<sdo_abort>(&reply)) {
             aborted_ = true;
             abort_code_ = a->code;
             return fail(errc::sdo_aborted);
         }
-        if (!initiated_) return on_initiate(*decoded);
-        if (const auto* s = std::get_if<sdo_segment_response>(&*decoded)) return on_segment(*s);
+        if (!initiated_) return on_initiate(reply);
+        if (const auto* s = std::get_if<sdo_segment_response>(&reply)) return on_segment(*s);
         return fail(errc::unexpected_frame);
     }
 

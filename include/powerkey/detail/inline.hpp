@@ -7,8 +7,11 @@
 #ifndef POWERKEY_DETAIL_INLINE_HPP
 #define POWERKEY_DETAIL_INLINE_HPP
 
+// POWERKEY_DETAIL_INLINE_LAMBDA, after a lambda's parameter list: a handler a dispatch calls in
+// place (canopen::visit_sdo_request), forced inline like the dispatch.
 #if defined(__GNUC__)
 #define POWERKEY_DETAIL_INLINE [[gnu::always_inline]]
+#define POWERKEY_DETAIL_INLINE_LAMBDA __attribute__((always_inline))
 #if defined(__OPTIMIZE_SIZE__)
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
@@ -18,6 +21,7 @@
 #endif
 #else
 #define POWERKEY_DETAIL_INLINE
+#define POWERKEY_DETAIL_INLINE_LAMBDA
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
 #endif

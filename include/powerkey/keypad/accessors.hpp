@@ -70,18 +70,16 @@ inline constexpr led_objects blink_objects{
 constexpr std::optional<led_map_update> map_of_object(const model_info& mi, object id,
                                                       const object_value& v,
                                                       const led_objects& o) noexcept {
-    leds c;
-    if (id == o.whole) {
-        c = planes_covered(mi, mi.object_planes());
-    } else if (id == o.red || id == o.green || id == o.blue) {
-        c.of(info(id).holds) = led_set::from_mask(mi.led_mask);
-    } else if (id == o.part1 || id == o.part2 || id == o.part3) {
-        const auto k = info(id);
-        c = unpack_leds(mi, detail::low_bits(k.width) << k.offset, mi.planes).value_or(leds{});
-    } else {
+    if (id != o.whole && id != o.red && id != o.green && id != o.blue && id != o.part1 &&
+        id != o.part2 && id != o.part3)
         return std::nullopt;
-    }
-    return led_map_update{v.map, c};
+    const auto row = detail::find_codec_row(mi.dictionary, id);
+    if (row == 0) return std::nullopt;
+    const auto& r = detail::codec_rows[row];
+    const auto& m = detail::layout(mi.id);
+    return visit_kind(r.kind, [&](auto k) -> std::optional<led_map_update> {
+        return led_map_update{v.map, decltype(k)::covered(m, r)};
+    });
 }
 template <class Pdo>
 constexpr std::optional<led_map_update> led_map_of(const message& m, model md,

@@ -28,6 +28,7 @@
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/value_kinds.hpp>
 #include <powerkey/result.hpp>
 
 #include <array>
@@ -51,23 +52,27 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 }
 
 // --- SDO values ---------------------------------------------------------------------------------
+// What each kind checks and reads is its own (value_kinds.hpp); here is only the dispatch.
 
-// The expedited size of row r's value: its own, the model's plane bytes for a per-colour LED
-// plane of size 0, or what a string piece carries (`carried`).
+// The expedited size of row r's value: its own, or what its kind says when the row leaves it 0
+// (a per-colour SI plane: the model's stride / 8; a string piece: what it carries). The two
+// kinds of size 0 are tested here rather than through visit_kind: a jump on every SDO value cost
+// 4 instructions a frame (docs/performance.md); the static_assert keeps the shortcut honest.
 constexpr std::uint8_t row_size(const model_layout& m, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();
-    if (r.kind == value_kind::led_plane) return static_cast<std::uint8_t>(m.stride / 8);
-    return carried;
+    if (r.kind == value_kind::led_plane) return value_kinds::led_plane::size(m, r, carried);
+    return value_kinds::string::size(m, r, carried);
 }
-
-// Bits [offset, offset + width) of the model's LED string, as a map; errc::reserved_not_zero for
-// a bit that names no LED.
-constexpr result<leds> unpack_part(const model_layout& m, std::uint32_t raw,
-                                   const codec_row& r) noexcept {
-    if ((raw & ~low_bits(r.part_width())) != 0) return errc::reserved_not_zero;
-    return unpack_leds(m, std::uint64_t{raw} << r.a, m.planes);
+// Every row of size 0 is a string or a per-colour plane.
+constexpr bool sized_rows_known() noexcept {
+    for (const codec_row& r : codec_rows)
+        if (r.size() == 0 && r.key != no_codec_row.key && r.kind != value_kind::led_plane &&
+            r.kind != value_kind::string)
+            return false;
+    return true;
 }
+static_assert(sized_rows_known());
 
 // The largest value of each expedited size (a table: no 64-bit shift by a variable on a 32-bit
 // core).
@@ -83,50 +88,39 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
     return answer(sdo_read_reply{r.id, v});
 }
 
-// value_message's kinds that decoders meet rarely: out of line, so that the common ones need no
-// frame (no registers to save) in decode_request and decode_response.
+// Kind K's value of row r, checked, as its message.
+template <class K>
+POWERKEY_DETAIL_HOT constexpr result<message> kind_message(const model_layout& m,
+                                                           const codec_row& r, std::uint8_t size,
+                                                           std::uint32_t data,
+                                                           bool write) noexcept {
+    if (const errc e = K::check(m, r, size, data, write); e != errc{}) return e;
+    return value_answer(r, K::value(m, r, size, data), write);
+}
+
+// The kinds that decoders meet rarely: out of line, so that the common ones need no frame (no
+// registers to save) in decode_request and decode_reply.
 POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& m, const codec_row& r,
                                                           std::uint8_t size, std::uint32_t data,
                                                           bool write) noexcept {
-    const auto number = [&r, data, write] { return value_answer(r, {data, {}, 0}, write); };
     switch (r.kind) {
-        case value_kind::led_part: {
-            const auto l = unpack_part(m, data, r);
-            if (!l) return l.error();
-            return value_answer(r, {0, *l, 0}, write);
-        }
-        case value_kind::ring:
-        case value_kind::direction_counter:
-        case value_kind::pdo_mapping: return number();
-        case value_kind::consumer_heartbeat: {
-            if ((data >> 24) != 0) return errc::reserved_not_zero;
-            const auto time = data & 0xFFFF;
-            if (!canopen::node_id::make((data >> 16) & 0xFF) ||
-                (time != 0 && !value_ranges[r.a].contains(time)))
-                return errc::value_out_of_range;
-            return number();
-        }
-        case value_kind::cob_id:
-            if ((data & 0x3FFF'F800u) != 0) return errc::reserved_not_zero;
-            return number();
-        case value_kind::device_type:
-            if ((data >> 20) != 0) return errc::reserved_not_zero;
-            return number();
-        case value_kind::string: return value_answer(r, {data, {}, size}, write);
-        case value_kind::restore:
-            if (write && data != load_signature) return errc::value_out_of_range;
-            return number();
-        default: break;  // none, commands: no value
+#define POWERKEY_DETAIL_RARE_CASE(name)                                      \
+    case value_kind::name:                                                   \
+        if constexpr (!value_kinds::name::common)                            \
+            return kind_message<value_kinds::name>(m, r, size, data, write); \
+        break;
+        POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_RARE_CASE)
+#undef POWERKEY_DETAIL_RARE_CASE
     }
     return errc::unknown_object;
 }
 
-// The sdo_write (`write`: a download; a restore must carry "load") or sdo_read_reply of row r's
-// value in the `size` (1..4) little-endian bytes of `data`. Errors: size_mismatch (not the row's
-// size), reserved_not_zero (bytes past the size, bits that name no key or LED, reserved bits of a
-// COB-ID, device type or consumer heartbeat), value_out_of_range (outside the row's range),
-// unknown_object (an object without a value). One switch on the row's kind (the rare kinds in
-// rare_value), each case returning its message: nothing is staged and copied.
+// The sdo_write (`write`: a download) or sdo_read_reply of row r's value in the `size` (1..4)
+// little-endian bytes of `data`. Errors: size_mismatch (not the row's size), reserved_not_zero
+// (bytes past the size), then the kind's (value_kinds.hpp: reserved_not_zero for bits that name no
+// key or LED and reserved bits, value_out_of_range outside the row's range, unknown_object for an
+// object without a value). One switch on the row's kind, the common kinds inlined, each case
+// returning its message: nothing is staged and copied.
 POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& m,
                                                             const codec_row& r, std::uint8_t size,
                                                             std::uint32_t data,
@@ -134,54 +128,29 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& 
     if (size != row_size(m, r, size)) return errc::size_mismatch;
     if (data > largest_of_size[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
     switch (r.kind) {
-        case value_kind::number:
-        case value_kind::flag:
-        case value_kind::brightness:
-        case value_kind::colour:
-        case value_kind::baud:
-        case value_kind::show:
-        case value_kind::node:
-            if (!value_ranges[r.a].contains(data)) return errc::value_out_of_range;
-            return value_answer(r, {data, {}, 0}, write);
-        case value_kind::period:
-            if (data != 0 && !value_ranges[r.a].contains(data)) return errc::value_out_of_range;
-            return value_answer(r, {data, {}, 0}, write);
-        case value_kind::keys: {
-            const auto keys = unpack_keys(m, data);
-            if (!keys) return keys.error();
-            return value_answer(r, {data, {}, 0}, write);
-        }
-        case value_kind::led_plane: {  // the one plane r.a (no leds::of: its address is taken)
-            if ((data & ~m.led_mask) != 0) return errc::reserved_not_zero;
-            const auto in = [data, &r](plane p) {
-                return led_set::from_mask(static_cast<plane>(r.a) == p ? data : 0);
-            };
-            return value_answer(r, {0, {in(plane::red), in(plane::green), in(plane::blue)}, 0},
-                                write);
-        }
-        case value_kind::led_map: {  // unpack_leds(m, data, m.object_planes()), as decode_pdo
-            if ((data & m.object_not_leds) != 0) return errc::reserved_not_zero;
-            const std::uint64_t up = std::uint64_t{data} >> m.stride;
-            const leds l{led_set::from_mask(data & m.led_mask), led_set::from_mask(up & m.led_mask),
-                         led_set::from_mask((up >> m.stride) & m.led_mask)};
-            return value_answer(r, {0, l, 0}, write);
-        }
-        default: return rare_value(m, r, size, data, write);
+#define POWERKEY_DETAIL_COMMON_CASE(name)                                    \
+    case value_kind::name:                                                   \
+        if constexpr (value_kinds::name::common)                             \
+            return kind_message<value_kinds::name>(m, r, size, data, write); \
+        break;
+        POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_COMMON_CASE)
+#undef POWERKEY_DETAIL_COMMON_CASE
     }
+    return rare_value(m, r, size, data, write);
 }
 
 // The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
 constexpr canopen::expedited_data write_value(const model_layout& m, const codec_row& r,
                                               const object_value& v) noexcept {
-    std::uint64_t raw = v.raw;
-    if (r.kind == value_kind::led_plane) raw = v.map.of(static_cast<plane>(r.a)).mask();
-    if (r.kind == value_kind::led_map) raw = pack_leds(m, v.map, m.object_planes());
-    if (r.kind == value_kind::led_part)
-        raw = (pack_leds(m, v.map, m.planes) >> r.a) & low_bits(r.part_width());
-    const std::uint8_t size = row_size(m, r, v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4});
-    canopen::expedited_data d{canopen::expedited_size::make(size).value(), {}};
-    store_le<4>(d.bytes, 0, raw);
-    return d;
+    const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
+    return visit_kind(r.kind, [&](auto k) {
+        using K = decltype(k);
+        const std::uint8_t size = r.size() != 0 ? r.size() : K::size(m, r, carried);
+        canopen::expedited_data d{
+            canopen::expedited_size::make(size).value_or(canopen::expedited_size{4}), {}};
+        store_le<4>(d.bytes, 0, K::pack(m, r, v));
+        return d;
+    });
 }
 
 // --- the command module -------------------------------------------------------------------------
@@ -330,28 +299,11 @@ constexpr canopen::expedited_data write_command(const command& c) noexcept {
 }
 
 // --- SDO frames ---------------------------------------------------------------------------------
-// The frame read with one 64-bit load: byte 0 the specifier, bytes 1..3 the address as the
-// dictionaries' hash key (wire_key), bytes 4..7 the data. The checks and their order are those of
-// canopen::visit_sdo_request_data / visit_sdo_response_data; this is them without building the
-// CiA 301 structs first (docs/performance.md).
-
-namespace sdo_wire {
-constexpr std::uint8_t specifier(std::uint64_t w) noexcept { return static_cast<std::uint8_t>(w); }
-constexpr std::uint32_t key(std::uint64_t w) noexcept {
-    return static_cast<std::uint32_t>(w >> 8) & 0xFF'FFFF;
-}
-constexpr std::uint32_t data(std::uint64_t w) noexcept {
-    return static_cast<std::uint32_t>(w >> 32);
-}
-// An expedited transfer's size from its specifier (bits 2..3: 4 - n).
-constexpr std::uint8_t size(std::uint8_t c) noexcept {
-    return static_cast<std::uint8_t>(4 - ((c >> 2) & 3));
-}
-constexpr canopen::sdo_abort abort(std::uint64_t w) noexcept {
-    return {{static_cast<std::uint16_t>(w >> 8), static_cast<std::uint8_t>(w >> 24)},
-            static_cast<canopen::sdo_abort_code>(data(w))};
-}
-}  // namespace sdo_wire
+// The CiA 301 SDO engine (canopen/sdo.hpp: sdo_word, sdo_request_op, sdo_response_op) reads the
+// frame with one 64-bit load and says which frame of the protocol it is; the keypad codec then
+// looks the address up in the model's dictionary and checks the value against the row. The frames
+// a bus carries most (an expedited write, a read, a write acknowledgement, a read reply) are
+// answered inline, the rest out of line.
 
 // The command module is writable wherever it is: decode_request tests its kind before the access.
 constexpr bool commands_writable() noexcept {
@@ -361,104 +313,80 @@ constexpr bool commands_writable() noexcept {
 }
 static_assert(commands_writable());
 
-// The requests decode_request does not take first: segment requests, aborts and the refusals.
-POWERKEY_DETAIL_COLD constexpr result<message> other_request(std::uint64_t w) noexcept {
-    const std::uint8_t c = sdo_wire::specifier(w);
-    switch (c >> 5) {
-        case 1: return errc::unknown_command;    // download: only expedited with size (e = s = 1)
-        case 2: return errc::reserved_not_zero;  // upload: only 40h with bytes 4..7 zero
-        case 3:                                  // upload segment
-            if ((c & 0x0F) != 0 || (w >> 8) != 0) return errc::reserved_not_zero;
-            return message{canopen::sdo_segment_request{(c & 0x10) != 0}};
-        case 4:  // abort
-            if (c != 0x80) return errc::reserved_not_zero;
-            return message{canopen::sdo_abort_request{sdo_wire::abort(w)}};
-        default: return errc::unknown_command;
-    }
+// A segment request or an abort from the client, or a refusal.
+POWERKEY_DETAIL_COLD constexpr result<message> other_request(canopen::sdo_word w) noexcept {
+    const auto op = canopen::other_request_op(w);
+    if (!op) return op.error();
+    if (*op == canopen::sdo_op::segment_request) return message{w.segment_request()};
+    return message{canopen::sdo_abort_request{w.abort()}};
 }
 
-// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_request_data);
-// unknown_object (no such address); unknown_command (an access the row lacks); then value_message's
-// or read_command's. The two frames a host sends most, an expedited write and a read, first.
+// Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
+// such address); unknown_command (an access the row lacks); then value_message's or
+// read_command's.
 constexpr result<message> decode_request(const model_layout& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
-    const std::uint64_t w = load_le<8>(f.bytes(), 0);
-    const std::uint8_t c = sdo_wire::specifier(w);
-    if ((c & 0xF3) == 0x23) {  // initiate download, expedited with size: 23h, 27h, 2Bh, 2Fh
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i];
-        if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
-            return read_command(m, sdo_wire::size(c), sdo_wire::data(w));
-        if (!r.writable()) return errc::unknown_command;
-        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), true);
-    }
-    if (c == 0x40 && sdo_wire::data(w) == 0) {  // initiate upload
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i];
-        if (!r.readable()) return errc::unknown_command;
-        return answer(sdo_read{r.id});
-    }
-    return other_request(w);
-}
-
-// The responses decode_response does not take first: segments, segmented-upload initiations,
-// aborts and the refusals.
-POWERKEY_DETAIL_COLD constexpr result<message> other_response(const model_layout& m,
-                                                              std::uint64_t w) noexcept {
-    const std::uint8_t c = sdo_wire::specifier(w);
-    switch (c >> 5) {
-        case 0: {  // upload segment
-            canopen::sdo_segment_response s{(c & 0x10) != 0,
-                                            canopen::segment_unused::make((c >> 1) & 7).value(),
-                                            (c & 1) != 0,
-                                            {}};
-            store_le<7>(s.bytes, 0, w >> 8);
-            return message{s};
-        }
-        case 2: {  // initiate upload
-            if ((c & 0x10) != 0) return errc::reserved_not_zero;
-            if ((c & 0x02) != 0) return errc::unknown_command;    // expedited without size
-            if ((c & 0x0C) != 0) return errc::reserved_not_zero;  // n is only for expedited
-            const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
+    const auto w = canopen::sdo_word::of(f);
+    return canopen::visit_sdo_request<result<message>>(
+        w,
+        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // an expedited write
+            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i];
-            if (r.kind != value_kind::string) return errc::unknown_object;
-            return message{canopen::sdo_upload_initiate_response{r.address(), (c & 0x01) != 0,
-                                                                 sdo_wire::data(w)}};
-        }
-        case 3: return errc::reserved_not_zero;  // download response: only 60h, bytes 4..7 zero
-        case 4:                                  // abort
-            if (c != 0x80) return errc::reserved_not_zero;
-            return message{canopen::sdo_abort_response{sdo_wire::abort(w)}};
-        default: return errc::unknown_command;
-    }
+            if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
+                return read_command(m, w.size(), w.data());
+            if (!r.writable()) return errc::unknown_command;
+            return value_message(m, r, w.size(), w.data(), true);
+        },
+        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a read
+            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+            if (i == 0) return errc::unknown_object;
+            const codec_row& r = codec_rows[i];
+            if (!r.readable()) return errc::unknown_command;
+            return answer(sdo_read{r.id});
+        },
+        [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_request(w); });
 }
 
-// Errors: wrong_length, unknown_command, reserved_not_zero (as visit_sdo_response_data);
-// unknown_object (no such address, or a segmented upload of an object that is not a string);
-// unknown_command (an access the row lacks); then value_message's. The two frames a keypad answers
-// most, an expedited read reply and a write acknowledgement, first.
-constexpr result<message> decode_response(const model_layout& m, const can::frame& f) noexcept {
+// A segment, the initiation of a segmented upload (of a string object only) or an abort from the
+// keypad, or a refusal.
+POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& m,
+                                                           canopen::sdo_word w) noexcept {
+    const auto op = canopen::other_response_op(w);
+    if (!op) return op.error();
+    if (*op == canopen::sdo_op::segment) return message{w.segment()};
+    if (*op == canopen::sdo_op::upload_initiate) {
+        const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        if (i == 0) return errc::unknown_object;
+        if (codec_rows[i].kind != value_kind::string) return errc::unknown_object;
+        return message{w.upload_initiate()};
+    }
+    return message{canopen::sdo_abort_response{w.abort()}};
+}
+
+// Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
+// such address, or a segmented upload of an object that is not a string); unknown_command (an
+// access the row lacks); then value_message's.
+constexpr result<message> decode_reply(const model_layout& m, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
-    const std::uint64_t w = load_le<8>(f.bytes(), 0);
-    const std::uint8_t c = sdo_wire::specifier(w);
-    if (c == 0x60 && sdo_wire::data(w) == 0) {  // initiate download response
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i];
-        if (!r.writable()) return errc::unknown_command;
-        return answer(sdo_write_reply{r.id});
-    }
-    if ((c & 0xF3) == 0x43) {  // initiate upload, expedited with size: 43h, 47h, 4Bh, 4Fh
-        const std::uint8_t i = find_codec_row(m.dictionary, sdo_wire::key(w));
-        if (i == 0) return errc::unknown_object;
-        const codec_row& r = codec_rows[i];
-        if (!r.readable()) return errc::unknown_command;
-        return value_message(m, r, sdo_wire::size(c), sdo_wire::data(w), false);
-    }
-    return other_response(m, w);
+    const auto w = canopen::sdo_word::of(f);
+    return canopen::visit_sdo_response<result<message>>(
+        w,
+        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a write acknowledged
+            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+            if (i == 0) return errc::unknown_object;
+            const codec_row& r = codec_rows[i];
+            if (!r.writable()) return errc::unknown_command;
+            return answer(sdo_write_reply{r.id});
+        },
+        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // the value read
+            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+            if (i == 0) return errc::unknown_object;
+            const codec_row& r = codec_rows[i];
+            if (!r.readable()) return errc::unknown_command;
+            return value_message(m, r, w.size(), w.data(), false);
+        },
+        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_reply(m, w); });
 }
 
 // --- PDO frames ---------------------------------------------------------------------------------
@@ -676,7 +604,7 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
         case 0x8: return detail::decode_pdo(mi, 0x8, f);
         case 0x9: return detail::decode_pdo(mi, 0x9, f);
         case 0xA: return detail::decode_pdo(mi, 0xA, f);
-        case 0xB: return detail::decode_response(mi, f);
+        case 0xB: return detail::decode_reply(mi, f);
         case 0xC: return detail::decode_request(mi, f);
         case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
             if (f.size() != 1) return errc::wrong_length;

@@ -10,14 +10,7 @@
 // Each struct follows the kind/fields convention (fields.hpp): a stable `kind` and `fields(self,
 // f)`, which names every field the frame carries. The names are the same for every model: the
 // key-state PDO's "keys" and "tick", an LED map's "red", "green", "blue", a level's "level".
-// An SDO value's fields depend on its object's value kind (objects.hpp):
-//   number, restore "value"        flag "enabled"          brightness "level"  colour "colour"
-//   baud "baud_rate"               show "startup_show"     node "node_id"    period "period_ms"
-//   keys "keys"                    led_plane "red" | "green" | "blue"        led_map all three
-//   consumer_heartbeat "period_ms", "producer"     cob_id "invalid", "no_rtr", "can_id"
-//   pdo_mapping "index", "subindex", "bits"        device_type "profile", "digital_input", ...
-//   string "size", "bytes"          led_part "red", "green", "blue"   ring "leds"
-//   direction_counter "counterclockwise", "ticks"
+// An SDO value's fields depend on its object's value kind (value_kinds.hpp).
 #ifndef POWERKEY_KEYPAD_MESSAGES_HPP
 #define POWERKEY_KEYPAD_MESSAGES_HPP
 
@@ -26,10 +19,10 @@
 #include <powerkey/canopen/nmt.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
-#include <powerkey/detail/proxy.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/objects.hpp>
+#include <powerkey/keypad/value_kinds.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>
@@ -54,15 +47,6 @@ struct key_state {
     std::uint8_t tick = 0;
     friend constexpr bool operator==(const key_state&, const key_state&) noexcept = default;
 };
-
-namespace detail {
-template <class Self, class F>
-constexpr void map_fields(Self& map, F& f) {
-    f("red", map.red);
-    f("green", map.green);
-    f("blue", map.blue);
-}
-}  // namespace detail
 
 // RPDO1 200h + node, host -> keypad: which LEDs are on (PK1000 section 12, PKP section 11).
 struct led_on {
@@ -162,127 +146,6 @@ struct encoder_leds {
 
 // --- SDO reads and writes of the object dictionary ----------------------------------------------
 
-// The value of an object, stored as it travels: `raw` the little-endian number of the expedited
-// bytes, `map` for the LED kinds, `size` for a string piece (1..4 bytes, 0 for other kinds).
-// Members a kind does not use stay zero. fields() shows it typed by the object's kind.
-struct object_value {
-    std::uint32_t raw = 0;
-    leds map{};
-    std::uint8_t size = 0;
-    friend constexpr bool operator==(const object_value&, const object_value&) noexcept = default;
-};
-
-namespace detail {
-
-template <class T, class V, class F, class Get, class Set>
-constexpr void raw_field(V& v, F& f, std::string_view name, Get get, Set set) {
-    proxy_field<T>(v, f, name, get, set);
-}
-
-// The fields of v as the kind of object o shows them.
-template <class V, class F>
-constexpr void value_fields(object id, V& v, F& f) {
-    using u32 = std::uint32_t;
-    const auto k = info(id);
-    // Bits [at, at + n) of raw as a T, and back.
-    auto bits = [&v, &f](std::string_view name, unsigned at, unsigned n, auto tag) {
-        using T = typename decltype(tag)::type;
-        const u32 mask = n >= 32 ? ~u32{0} : (u32{1} << n) - 1;
-        raw_field<T>(
-            v, f, name, [at, mask](const auto& s) { return static_cast<T>((s.raw >> at) & mask); },
-            [at, mask](auto& s, T x) {
-                s.raw = (s.raw & ~(mask << at)) | ((static_cast<u32>(x) & mask) << at);
-            });
-    };
-    auto checked = [&v, &f](std::string_view name, unsigned at, unsigned n, auto tag) {
-        using T = typename decltype(tag)::type;
-        const u32 mask = (u32{1} << n) - 1;
-        raw_field<T>(
-            v, f, name,
-            [at, mask](const auto& s) { return T::make((s.raw >> at) & mask).value_or(T{}); },
-            [at, mask](auto& s, T x) {
-                s.raw = (s.raw & ~(mask << at)) | ((u32{x.value()} & mask) << at);
-            });
-    };
-    switch (k.kind) {
-        case value_kind::number:
-        case value_kind::restore: f("value", v.raw); break;
-        case value_kind::period: f("period_ms", v.raw); break;
-        case value_kind::flag: bits("enabled", 0, 32, std::type_identity<bool>{}); break;
-        case value_kind::brightness: checked("level", 0, 8, std::type_identity<level>{}); break;
-        case value_kind::colour:
-            bits("colour", 0, 8, std::type_identity<backlight_colour>{});
-            break;
-        case value_kind::baud: bits("baud_rate", 0, 8, std::type_identity<baud_rate>{}); break;
-        case value_kind::show:
-            bits("startup_show", 0, 8, std::type_identity<startup_show>{});
-            break;
-        case value_kind::node:
-            checked("node_id", 0, 8, std::type_identity<canopen::node_id>{});
-            break;
-        case value_kind::keys:
-            raw_field<key_set>(
-                v, f, "keys", [](const auto& s) { return key_set::from_mask(s.raw); },
-                [](auto& s, key_set x) { s.raw = static_cast<u32>(x.mask()); });
-            break;
-        case value_kind::led_plane:
-            f(k.holds == plane::red     ? "red"
-              : k.holds == plane::green ? "green"
-                                        : "blue",
-              v.map.of(k.holds));
-            break;
-        case value_kind::led_map:
-        case value_kind::led_part: map_fields(v.map, f); break;
-        case value_kind::ring:
-            raw_field<led_set>(
-                v, f, "leds", [](const auto& s) { return led_set::from_mask(s.raw); },
-                [](auto& s, led_set x) { s.raw = static_cast<u32>(x.mask()); });
-            break;
-        case value_kind::direction_counter:
-            bits("counterclockwise", 7, 1, std::type_identity<bool>{});
-            bits("ticks", 0, 7, std::type_identity<std::uint8_t>{});
-            break;
-        case value_kind::consumer_heartbeat:
-            bits("period_ms", 0, 16, std::type_identity<std::uint16_t>{});
-            checked("producer", 16, 8, std::type_identity<canopen::node_id>{});
-            break;
-        case value_kind::cob_id:
-            bits("invalid", 31, 1, std::type_identity<bool>{});
-            bits("no_rtr", 30, 1, std::type_identity<bool>{});
-            checked("can_id", 0, 11, std::type_identity<can::standard_id>{});
-            break;
-        case value_kind::pdo_mapping:
-            bits("index", 16, 16, std::type_identity<std::uint16_t>{});
-            bits("subindex", 8, 8, std::type_identity<std::uint8_t>{});
-            bits("bits", 0, 8, std::type_identity<std::uint8_t>{});
-            break;
-        case value_kind::device_type:
-            bits("profile", 0, 16, std::type_identity<std::uint16_t>{});
-            bits("digital_input", 16, 1, std::type_identity<bool>{});
-            bits("digital_output", 17, 1, std::type_identity<bool>{});
-            bits("analogue_input", 18, 1, std::type_identity<bool>{});
-            bits("analogue_output", 19, 1, std::type_identity<bool>{});
-            break;
-        case value_kind::string:
-            f("size", v.size);
-            raw_field<std::array<std::uint8_t, 4>>(
-                v, f, "bytes",
-                [](const auto& s) {
-                    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(s.raw),
-                                                       static_cast<std::uint8_t>(s.raw >> 8),
-                                                       static_cast<std::uint8_t>(s.raw >> 16),
-                                                       static_cast<std::uint8_t>(s.raw >> 24)};
-                },
-                [](auto& s, const std::array<std::uint8_t, 4>& b) {
-                    s.raw = u32{b[0]} | (u32{b[1]} << 8) | (u32{b[2]} << 16) | (u32{b[3]} << 24);
-                });
-            break;
-        case value_kind::none:
-        case value_kind::commands: break;
-    }
-}
-}  // namespace detail
-
 // Host -> keypad, 600h + node: read an object (upload request 40h).
 struct sdo_read {
     static constexpr std::string_view kind = "sdo_read";
@@ -300,7 +163,7 @@ struct sdo_read_reply {
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
-        detail::value_fields(self.object, self.value, f);
+        value_fields(self.object, self.value, f);
     }
     powerkey::object object = powerkey::object::keys;
     object_value value;
@@ -314,7 +177,7 @@ struct sdo_write {
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
-        detail::value_fields(self.object, self.value, f);
+        value_fields(self.object, self.value, f);
     }
     powerkey::object object = powerkey::object::led_brightness;
     object_value value;
@@ -341,41 +204,6 @@ using message =
                  canopen::sdo_upload_initiate_response, canopen::sdo_segment_request,
                  canopen::sdo_segment_response, canopen::sdo_abort_request,
                  canopen::sdo_abort_response, encoder_state, analog_inputs, encoder_leds>;
-
-// --- building values ----------------------------------------------------------------------------
-// The value of an object of each kind, for code that writes one: sdo_write{object::node_id,
-// node_value(canopen::node_id{0x3A})}. Kinds of several fields are set through fields().
-
-[[nodiscard]] constexpr object_value number_value(std::uint32_t v) noexcept { return {v, {}, 0}; }
-[[nodiscard]] constexpr object_value flag_value(bool on) noexcept { return {on ? 1u : 0u, {}, 0}; }
-[[nodiscard]] constexpr object_value level_value(level l) noexcept { return {l.value(), {}, 0}; }
-[[nodiscard]] constexpr object_value colour_value(backlight_colour c) noexcept {
-    return {static_cast<std::uint32_t>(c), {}, 0};
-}
-[[nodiscard]] constexpr object_value baud_value(baud_rate b) noexcept {
-    return {static_cast<std::uint32_t>(b), {}, 0};
-}
-[[nodiscard]] constexpr object_value show_value(startup_show s) noexcept {
-    return {static_cast<std::uint32_t>(s), {}, 0};
-}
-[[nodiscard]] constexpr object_value node_value(canopen::node_id n) noexcept {
-    return {n.value(), {}, 0};
-}
-[[nodiscard]] constexpr object_value keys_value(key_set k) noexcept {
-    return {static_cast<std::uint32_t>(k.mask()), {}, 0};
-}
-[[nodiscard]] constexpr object_value leds_value(const leds& l) noexcept { return {0, l, 0}; }
-[[nodiscard]] constexpr object_value consumer_heartbeat_value(std::uint16_t period_ms,
-                                                              canopen::node_id producer) noexcept {
-    return {period_ms | (std::uint32_t{producer.value()} << 16), {}, 0};
-}
-[[nodiscard]] constexpr object_value string_value(std::uint8_t size,
-                                                  std::array<std::uint8_t, 4> b) noexcept {
-    return {std::uint32_t{b[0]} | (std::uint32_t{b[1]} << 8) | (std::uint32_t{b[2]} << 16) |
-                (std::uint32_t{b[3]} << 24),
-            {},
-            size};
-}
 
 }  // namespace powerkey
 

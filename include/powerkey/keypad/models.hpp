@@ -210,15 +210,23 @@ constexpr keypad_string si_model_name(std::string_view bytes, std::string_view s
                   si_model_name("PKP2400SI"sv, "inferred from the naming"), si_serial})
 // clang-format on
 
+// A program may append keypads of its own, rows of the same form, by defining
+// POWERKEY_EXTRA_MODELS(X) before it includes any powerkey header (in every translation unit
+// alike: the tables are inline variables). tests/test_extra_model.cpp adds one this way.
+#ifndef POWERKEY_EXTRA_MODELS
+#define POWERKEY_EXTRA_MODELS(X)
+#endif
+
 enum class model : std::uint8_t {
 #define POWERKEY_DETAIL_MODEL_ENUM(name, ...) name,
-    POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ENUM)
+    POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ENUM) POWERKEY_EXTRA_MODELS(POWERKEY_DETAIL_MODEL_ENUM)
 #undef POWERKEY_DETAIL_MODEL_ENUM
 };
 
 namespace detail {
 #define POWERKEY_DETAIL_MODEL_ROW(M, ...) model_info{.id = model::M, .name = #M, __VA_ARGS__},
-inline constexpr model_info model_table[] = {POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ROW)};
+inline constexpr model_info model_table[] = {POWERKEY_MODELS(POWERKEY_DETAIL_MODEL_ROW)
+                                                 POWERKEY_EXTRA_MODELS(POWERKEY_DETAIL_MODEL_ROW)};
 #undef POWERKEY_DETAIL_MODEL_ROW
 }  // namespace detail
 

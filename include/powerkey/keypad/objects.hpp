@@ -18,30 +18,27 @@
 
 namespace powerkey {
 
-// What an object's value is: its C++ type and the field names it shows (messages.hpp).
+// What an object's value is: its fields, checks and packing, each kind's in value_kinds.hpp. The
+// list of kinds, in the order of the enum.
+// clang-format off
+#define POWERKEY_VALUE_KINDS(X)                                                                   \
+    X(number) X(flag) X(brightness) X(colour) X(baud) X(show) X(node) X(period) X(keys)          \
+    X(led_plane) X(led_map) X(consumer_heartbeat) X(cob_id) X(pdo_mapping) X(device_type)       \
+    X(string) X(restore) X(led_part) X(ring) X(direction_counter) X(none) X(commands)
+// clang-format on
+
 enum class value_kind : std::uint8_t {
-    number,              // "value": an unsigned number (counts, identity words, times, types)
-    flag,                // "enabled": 00h off, 01h on
-    brightness,          // "level": 00h..3Fh
-    colour,              // "colour": backlight_colour
-    baud,                // "baud_rate": baud_rate
-    show,                // "startup_show": startup_show
-    node,                // "node_id": 01h..7Fh
-    period,              // "period_ms": 0 = off, else the row's range
-    keys,                // "keys": key bits 0..N-1
-    led_plane,           // "red" / "green" / "blue": one plane of an LED map
-    led_map,             // "red", "green", "blue": the planes of the model's rule that fit
-    consumer_heartbeat,  // "period_ms", "producer": 1016h sub 1
-    cob_id,              // "invalid", "no_rtr", "can_id": a PDO COB-ID (CiA 301 7.5.2.35)
-    pdo_mapping,         // "index", "subindex", "bits": a PDO mapping entry
-    device_type,         // "profile", "digital_input" ..: 1000h (CiA 401 I/O functionality)
-    string,              // "size", "bytes": up to 4 bytes expedited, more by segments
-    restore,             // "value": writes carry "load", reads the restore flags
-    led_part,            // "red", "green", "blue": bits [offset, offset + width) of the LED string
-    ring,                // "leds": the encoder ring LEDs 1..32
-    direction_counter,   // "counterclockwise", "ticks": an encoder's ticks since its last TPDO
-    none,                // no value: the keypad aborts a read (1001h)
-    commands,            // the command module: commands.hpp
+#define POWERKEY_DETAIL_KIND_ENUM(name) name,
+    POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_KIND_ENUM)
+#undef POWERKEY_DETAIL_KIND_ENUM
+};
+
+template <>
+struct enum_names<value_kind> {
+#define POWERKEY_DETAIL_KIND_NAME(name) {value_kind::name, #name},
+    static constexpr enum_name_entry<value_kind> entries[] = {
+        POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_KIND_NAME)};
+#undef POWERKEY_DETAIL_KIND_NAME
 };
 
 // Every object of every dictionary: X(name, value kind) and, for an LED plane, the plane it holds
@@ -231,9 +228,6 @@ struct enum_names<object> {
 
 enum class access : std::uint8_t { read_only, write_only, read_write };
 
-// The "load" signature of a restore (1011h sub 1, PK1000 section 36), little endian.
-inline constexpr std::uint32_t load_signature = 0x6461'6F6C;
-
 // One entry of a dictionary.
 struct object_row {
     object id;
@@ -283,35 +277,6 @@ struct enum_names<access> {
     static constexpr enum_name_entry<access> entries[] = {{access::read_only, "read_only"},
                                                           {access::write_only, "write_only"},
                                                           {access::read_write, "read_write"}};
-};
-
-template <>
-struct enum_names<value_kind> {
-    using k = value_kind;
-    static constexpr enum_name_entry<k> entries[] = {
-        {k::number, "number"},
-        {k::flag, "flag"},
-        {k::brightness, "brightness"},
-        {k::colour, "colour"},
-        {k::baud, "baud"},
-        {k::show, "show"},
-        {k::node, "node"},
-        {k::period, "period"},
-        {k::keys, "keys"},
-        {k::led_plane, "led_plane"},
-        {k::led_map, "led_map"},
-        {k::consumer_heartbeat, "consumer_heartbeat"},
-        {k::cob_id, "cob_id"},
-        {k::pdo_mapping, "pdo_mapping"},
-        {k::device_type, "device_type"},
-        {k::string, "string"},
-        {k::restore, "restore"},
-        {k::none, "none"},
-        {k::led_part, "led_part"},
-        {k::ring, "ring"},
-        {k::direction_counter, "direction_counter"},
-        {k::commands, "commands"},
-    };
 };
 
 }  // namespace powerkey

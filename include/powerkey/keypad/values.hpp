@@ -147,6 +147,19 @@ struct leds {
     friend constexpr bool operator==(const leds&, const leds&) noexcept = default;
 };
 
+// `base` with the LEDs of `covered` taken from `value`: how a keypad takes a value that states
+// some of its LEDs (one plane, a piece of the bit string).
+[[nodiscard]] constexpr leds merged(const leds& base, const leds& value,
+                                    const leds& covered) noexcept {
+    leds out;
+    for (unsigned p = 0; p < 3; ++p) {
+        const auto c = static_cast<plane>(p);
+        out.of(c) = led_set::from_mask((base.of(c).mask() & ~covered.of(c).mask()) |
+                                       (value.of(c).mask() & covered.of(c).mask()));
+    }
+    return out;
+}
+
 [[nodiscard]] constexpr led_mode mode_of(const leds& on, const leds& blink, plane c,
                                          unsigned k) noexcept {
     const bool o = on.of(c).contains(k);
