@@ -217,6 +217,8 @@ void fill_value(input& in, sdo_read_reply& m);
 void fill_value(input& in, sdo_write& m);
 void fill_value(input& in, led_on& m);
 void fill_value(input& in, led_blink& m);
+void fill_value(input& in, j1939::command& c);
+void fill_value(input& in, j1939::multiple_leds& m);
 
 template <class T>
 void fill_value(input& in, T& v) {
@@ -298,6 +300,50 @@ inline void fill_value(input& in, sdo_write& m) {
 inline void fill_value(input& in, led_on& m) { fill_value(in, m.map); }
 inline void fill_value(input& in, led_blink& m) { fill_value(in, m.map); }
 
+// A J1939 command: as the CANopen command, flag bit 0 clear fills the members its row names,
+// set fills every member (a member the command does not use makes it one encode refuses).
+inline void fill_value(input& in, j1939::command& c) {
+    const std::uint8_t flags = in.u8();
+    c = j1939::command{};
+    if ((flags & 1) == 0) {
+        c.code = static_cast<j1939::command_code>(in.u8());
+        j1939::command::fields(c, [&in](std::string_view name, auto& field) {
+            if (name != "command") fill_value(in, field);
+        });
+        return;
+    }
+    fill_value(in, c.priority);
+    fill_value(in, c.destination);
+    fill_value(in, c.source);
+    fill_value(in, c.code);
+    fill_value(in, c.level);
+    fill_value(in, c.enabled);
+    fill_value(in, c.show);
+    fill_value(in, c.multiple_leds);
+    fill_value(in, c.address);
+    fill_value(in, c.identifier);
+    fill_value(in, c.baud);
+    fill_value(in, c.period_10ms);
+    fill_value(in, c.colour);
+}
+
+// A multiple-LED frame: flag bit 0 clear fills it through its fields (one LED set per code),
+// set fills the stored nibbles raw (codes Ah..Eh, LEDs past the model's).
+inline void fill_value(input& in, j1939::multiple_leds& m) {
+    const std::uint8_t flags = in.u8();
+    m = j1939::multiple_leds{};
+    if ((flags & 1) == 0) {
+        j1939::multiple_leds::fields(
+            m, [&in](std::string_view, auto& field) { fill_value(in, field); });
+        return;
+    }
+    fill_value(in, m.priority);
+    fill_value(in, m.destination);
+    fill_value(in, m.source);
+    fill_value(in, m.frame);
+    m.nibbles = in.integer<std::uint64_t>();
+}
+
 template <class T>
 struct is_variant : std::false_type {};
 template <class... T>
@@ -342,6 +388,8 @@ void put_value(std::vector<std::uint8_t>& out, const sdo_read_reply& m);
 void put_value(std::vector<std::uint8_t>& out, const sdo_write& m);
 void put_value(std::vector<std::uint8_t>& out, const led_on& m);
 void put_value(std::vector<std::uint8_t>& out, const led_blink& m);
+void put_value(std::vector<std::uint8_t>& out, const j1939::command& c);
+void put_value(std::vector<std::uint8_t>& out, const j1939::multiple_leds& m);
 
 template <class T>
 void put_value(std::vector<std::uint8_t>& out, const T& v) {
@@ -402,6 +450,30 @@ inline void put_value(std::vector<std::uint8_t>& out, const sdo_write& m) {
 }
 inline void put_value(std::vector<std::uint8_t>& out, const led_on& m) { put_value(out, m.map); }
 inline void put_value(std::vector<std::uint8_t>& out, const led_blink& m) { put_value(out, m.map); }
+inline void put_value(std::vector<std::uint8_t>& out, const j1939::command& c) {
+    out.push_back(1);
+    put_value(out, c.priority);
+    put_value(out, c.destination);
+    put_value(out, c.source);
+    put_value(out, c.code);
+    put_value(out, c.level);
+    put_value(out, c.enabled);
+    put_value(out, c.show);
+    put_value(out, c.multiple_leds);
+    put_value(out, c.address);
+    put_value(out, c.identifier);
+    put_value(out, c.baud);
+    put_value(out, c.period_10ms);
+    put_value(out, c.colour);
+}
+inline void put_value(std::vector<std::uint8_t>& out, const j1939::multiple_leds& m) {
+    out.push_back(1);
+    put_value(out, m.priority);
+    put_value(out, m.destination);
+    put_value(out, m.source);
+    put_value(out, m.frame);
+    put_integer(out, m.nibbles);
+}
 
 template <class M>
 void put_any(std::vector<std::uint8_t>& out, const M& m) {

@@ -8,6 +8,7 @@
 // encode_error_rows seed the encoder with refused messages.
 #include "decoder_rows.hpp"
 #include "fuzz.hpp"
+#include "j1939_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "si_reference_rows.hpp"
@@ -181,6 +182,54 @@ int main(int argc, char** argv) {
     w.add("session", pk1000_log);
     w.add("session", pkp_log);
     w.add("session", mt_log);
+
+    // The J1939 rows: the decoder (model byte, keypad selector, frame) with any keypad and
+    // narrowed to the row's, the encoder (model byte, selector, the row's message), both for
+    // every model the row applies to; the refusals likewise.
+    auto j1939_models = [](j1939_rows::model_mask models, auto f) {
+        for (std::size_t i = 0; i < j1939::model_row_count; ++i)
+            if (j1939_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+    };
+    auto j1939_seed = [](model m, j1939::keypad_address keypad) {
+        std::vector<std::uint8_t> v{static_cast<std::uint8_t>(m)};
+        if (keypad) {
+            v.push_back(1);
+            v.push_back(*keypad);
+        } else {
+            v.push_back(0);
+        }
+        return v;
+    };
+    auto j1939_frame = [&](std::string_view text, j1939_rows::model_mask models,
+                           j1939::keypad_address keypad) {
+        const auto f = can::parse_candump(text).value();
+        w.add_text("candump", text);
+        j1939_models(models, [&](model m) {
+            auto d = j1939_seed(m, keypad);
+            put_frame(d, f);
+            w.add("j1939_decode", d);
+        });
+    };
+    auto j1939_message = [&](const j1939::message& msg, j1939_rows::model_mask models,
+                             j1939::keypad_address keypad) {
+        j1939_models(models, [&](model m) {
+            auto e = j1939_seed(m, keypad);
+            put_any(e, msg);
+            w.add("j1939_encode", e);
+        });
+    };
+    auto j1939_table = [&](const auto& rows) {
+        for (const auto& r : rows) {
+            j1939_frame(r.frame, r.models, std::nullopt);
+            j1939_frame(r.frame, r.models, r.keypad);
+            j1939_message(r.expected, r.models, std::nullopt);
+        }
+    };
+    j1939_table(j1939_rows::pkp1600si_rows);
+    j1939_table(j1939_rows::pkp2600si_rows);
+    j1939_table(j1939_rows::other_rows);
+    for (const auto& r : j1939_rows::error_rows) j1939_frame(r.frame, r.models, r.keypad);
+    for (const auto& r : j1939_rows::encode_error_rows) j1939_message(r.msg, r.models, r.keypad);
 
     // One seed per core message kind: the selector, a node, zero fields.
     for (std::uint8_t which = 0; which < 13; ++which)

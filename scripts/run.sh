@@ -2,11 +2,11 @@
 # README command 1: installs what is missing (g++, cmake, make) on Debian 12, builds the powerkey
 # tool and decodes a sample log made of the manual's example frames.
 #   bash scripts/run.sh              the PK1000 log
-#   bash scripts/run.sh pkp3500mt    another model: any of the twelve of examples/logs/
+#   bash scripts/run.sh pkp3500mt    another model: any of the thirteen of examples/logs/
 set -euo pipefail
 cd "$(dirname "$0")/.."
 model=${1:-pk1000}
-models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si"
+models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si"
 case " $models " in
   *" $model "*) ;;
   *) echo "run.sh: unknown model '$model' (${models// /, })" >&2; exit 2 ;;

@@ -36,13 +36,14 @@ using canopen::nmt_state;
 
 // The models a row applies to: bit m for model m (models.hpp order); `all` = the four keypads of
 // the first manuals. The SI family (tests/si_rows.hpp, tests/si_reference_rows.hpp): `si` all
-// eight, `si_s16` the per-colour sizes of stride 16, `si_s8` those of stride 8.
+// nine, `si_s16` the per-colour sizes of stride 16, `si_s8` those of stride 8 (the PKP-1600-SI's
+// CANopen side is the SI rule for six keys, inferred as the PKP-2300-SI's: docs/si-family.md).
 inline constexpr std::uint16_t m1000 = 1, m2200 = 2, m2400 = 4, m2600 = 8, pkp = 14, all = 15;
 inline constexpr std::uint16_t m2600si = 1u << 4, m3500mt = 1u << 5, m3500si = 1u << 6,
                                m2500si = 1u << 7, m1500li = 1u << 8, m2200si = 1u << 9,
-                               m2300si = 1u << 10, m2400si = 1u << 11, si = 0xFF0,
-                               si_s16 = m3500si | m2500si,
-                               si_s8 = m1500li | m2200si | m2300si | m2400si;
+                               m2300si = 1u << 10, m2400si = 1u << 11, m1600si = 1u << 12,
+                               si = 0x1FF0, si_s16 = m3500si | m2500si,
+                               si_s8 = m1500li | m2200si | m2300si | m2400si | m1600si;
 
 constexpr bool applies(std::uint16_t models, model m) noexcept {
     return ((static_cast<unsigned>(models) >> static_cast<unsigned>(m)) & 1u) != 0;

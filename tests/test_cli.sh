@@ -16,7 +16,7 @@ fail() { echo "FAIL: $*"; failed=1; }
 frames_of() { grep -v '^#' "$1" | awk 'NF { print $NF }'; }
 
 # Every model of the table (docs/models.md, docs/si-family.md) has its sample log.
-models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si"
+models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si"
 for m in $models; do
   log=$logs/$m.log
   [ -s "$log" ] || { fail "$m: no sample log $log"; continue; }
@@ -194,7 +194,7 @@ usage() {
 usage "powerkey: The following argument was not expected: --modle (powerkey help shows the usage)" decode "$tmp/b" --modle pkp2400
 usage "powerkey: The following argument was not expected: -model (powerkey help shows the usage)" decode "$tmp/b" -model pkp2400
 usage "powerkey: The following argument was not expected: extra (powerkey help shows the usage)" list extra
-usage "powerkey: --model: unknown model 'pkp3000' (pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, auto) (powerkey help shows the usage)" decode --model pkp3000 "$tmp/b"
+usage "powerkey: --model: unknown model 'pkp3000' (pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, pkp1600si, auto) (powerkey help shows the usage)" decode --model pkp3000 "$tmp/b"
 usage "powerkey: --node: expected a node id 1..127 (0x15, 15h or 21), got '128' (powerkey help shows the usage)" decode --node 128 "$tmp/b"
 usage "powerkey: The following argument was not expected: frobnicate (powerkey help shows the usage)" frobnicate
 # Options before the subcommand work as after it.
@@ -271,7 +271,7 @@ diff "$tmp/want" "$tmp/moved" > /dev/null || fail "encode --json --node 0x3A: $(
 
 # Every decode ends with a summary; a log that decodes badly under the model ends with a hint.
 "$pk" decode "$logs/pkp2400.log" > /dev/null 2> "$tmp/err"
-tail -1 "$tmp/err" | grep -qx "powerkey: hint: [0-9]* of [0-9]* keypad frames refused as pk1000 frames; if the keypad is another model, try --model auto (or --model pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si)" ||
+tail -1 "$tmp/err" | grep -qx "powerkey: hint: [0-9]* of [0-9]* keypad frames refused as pk1000 frames; if the keypad is another model, try --model auto (or --model pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, pkp1600si)" ||
   fail "no hint for a PKP log decoded as pk1000: $(cat "$tmp/err")"
 # --model auto finds the model from the keypad's own name, or from what decodes.
 "$pk" decode --model auto "$logs/pkp2400.log" > "$tmp/auto" 2> "$tmp/err" || fail "--model auto exit status"
@@ -280,7 +280,7 @@ head -1 "$tmp/err" | grep -qx 'powerkey: --model auto: pkp2400: the keypad names
 "$pk" decode --model pkp2400 "$logs/pkp2400.log" 2> /dev/null | cmp -s - "$tmp/auto" || fail "--model auto output differs from --model pkp2400"
 printf '%s\n' '000#0115' '080#' > "$tmp/plain.log"
 "$pk" decode --model auto "$tmp/plain.log" > /dev/null 2> "$tmp/err"
-head -1 "$tmp/err" | grep -qx "powerkey: --model auto: cannot tell the model: no frame of the log decodes differently under the 12 models (no model string, no key or LED map); decoding as pk1000, give --model" ||
+head -1 "$tmp/err" | grep -qx "powerkey: --model auto: cannot tell the model: no frame of the log decodes differently under the 13 models (no model string, no key or LED map); decoding as pk1000, give --model" ||
   fail "--model auto without clues: $(cat "$tmp/err")"
 
 # A file that is not a log gets one message saying what it looks like and what to do.

@@ -59,6 +59,9 @@ constexpr info_row info_rows[] = {
      false, true, false, false, true, true, false, 3},
     {"SI generic (inferred S = 8)", "pkp2400si", model::pkp2400si, per, 8, 8, 3, 8, 0xFF, false,
      false, true, false, false, true, true, false, 3},
+    // Its CANopen side inferred: the SI rule for six keys, as the PKP-2300-SI (docs/si-family.md)
+    {"PKP1600SI J1939, SI generic", "pkp1600si", model::pkp1600si, per, 6, 6, 3, 8, 0x3F, false,
+     false, true, false, false, true, true, false, 3},
 };
 static_assert(std::size(info_rows) == model_count);
 

@@ -179,12 +179,21 @@ static_assert(!is_named(static_cast<command_code>(0x05)) &&
 // --- the model table and the dictionaries (models.hpp, objects.hpp) ------------------------------
 
 constexpr name_row model_rows[] = {
-    {"PK1000", 0, "pk1000"},       {"PKP-2200-LI", 1, "pkp2200"},  {"PKP-2400-LI", 2, "pkp2400"},
-    {"docs/pkp.md", 3, "pkp2600"}, {"PKP2600SI", 4, "pkp2600si"},  {"PKP3500-MT", 5, "pkp3500mt"},
-    {"si-family", 6, "pkp3500si"}, {"si-family", 7, "pkp2500si"},  {"si-family", 8, "pkp1500li"},
-    {"si-family", 9, "pkp2200si"}, {"si-family", 10, "pkp2300si"}, {"si-family", 11, "pkp2400si"},
+    {"PK1000", 0, "pk1000"},
+    {"PKP-2200-LI", 1, "pkp2200"},
+    {"PKP-2400-LI", 2, "pkp2400"},
+    {"docs/pkp.md", 3, "pkp2600"},
+    {"PKP2600SI", 4, "pkp2600si"},
+    {"PKP3500-MT", 5, "pkp3500mt"},
+    {"si-family", 6, "pkp3500si"},
+    {"si-family", 7, "pkp2500si"},
+    {"si-family", 8, "pkp1500li"},
+    {"si-family", 9, "pkp2200si"},
+    {"si-family", 10, "pkp2300si"},
+    {"si-family", 11, "pkp2400si"},
+    {"PKP1600SI J1939", 12, "pkp1600si"},
 };
-static_assert(table_is<model>(model_rows, 12));
+static_assert(table_is<model>(model_rows, 13));
 
 constexpr name_row dictionary_rows[] = {{"PK1000 16-49", 0, "pk1000"},
                                         {"PKP 13-32", 1, "pkp_li"},
@@ -254,9 +263,10 @@ constexpr name_row errc_rows[] = {
     {"errors.md", 9, "size_mismatch"},     {"errors.md", 10, "buffer_too_small"},
     {"errors.md", 11, "sdo_aborted"},      {"errors.md", 12, "unexpected_frame"},
     {"errors.md", 13, "syntax_error"},     {"errors.md", 14, "unknown_object"},
+    {"errors.md", 15, "reserved_not_ff"},  {"errors.md", 16, "undocumented"},
 };
 static_assert(table_is<errc>(errc_rows, 0));
-static_assert(!is_named(static_cast<errc>(15)));
+static_assert(!is_named(static_cast<errc>(17)));
 
 constexpr name_row bus_protocol_rows[] = {{"PK1000 49", 0, "canopen"}, {"PK1000 49", 1, "j1939"}};
 static_assert(table_is<bus_protocol>(bus_protocol_rows, 2));
@@ -315,7 +325,7 @@ TEST_CASE("bits per second of every PK1000 baud-rate code, reserved codes forced
 }
 
 TEST_CASE("the name tables of models, dictionaries, objects and value kinds") {
-    CHECK(table_is<model>(model_rows, 12));
+    CHECK(table_is<model>(model_rows, 13));
     CHECK(table_is<dictionary>(dictionary_rows, 5));
     CHECK(table_is<access>(access_rows, 3));
     CHECK(table_is<value_kind>(value_kind_rows, 22));

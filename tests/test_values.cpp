@@ -172,7 +172,7 @@ static_assert(to_string(startup_show::fast_flash) == "fast_flash");
 static_assert(enum_values<backlight_colour>().size() == 10);
 static_assert(enum_values<baud_rate>().size() == 8);
 static_assert(enum_values<startup_show>().size() == 3);
-static_assert(enum_values<errc>().size() == 14);
+static_assert(enum_values<errc>().size() == 16);
 // Unnamed values print "".
 static_assert(to_string(static_cast<errc>(0)).empty());
 static_assert(to_string(static_cast<backlight_colour>(0x0A)).empty());

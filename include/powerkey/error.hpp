@@ -24,6 +24,8 @@ enum class errc : std::uint8_t {
     unexpected_frame,     // a valid frame that does not fit the current state of a transfer
     syntax_error,         // malformed text (candump form, numbers)
     unknown_object,       // an SDO index or sub-index the keypad's dictionary does not define
+    reserved_not_ff,      // a byte or bit J1939 sends as all 1's ("not used", FFh) is not
+    undocumented,         // a frame whose layout on this model no public source shows
 };
 
 template <>
@@ -43,6 +45,8 @@ struct enum_names<errc> {
         {errc::unexpected_frame, "unexpected_frame"},
         {errc::syntax_error, "syntax_error"},
         {errc::unknown_object, "unknown_object"},
+        {errc::reserved_not_ff, "reserved_not_ff"},
+        {errc::undocumented, "undocumented"},
     };
 };
 

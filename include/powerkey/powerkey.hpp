@@ -31,7 +31,11 @@
 #include <powerkey/canopen/sync.hpp>
 
 #include <powerkey/j1939/id.hpp>
+#include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>

@@ -1,0 +1,545 @@
+// powerkey: every J1939 frame of the keypads behind two calls, driven by the J1939 model table:
+//
+//   j1939::decode(frame, model, keypad)    -> result<j1939::message>
+//   j1939::encode(model, message, keypad)  -> result<can::frame>    encode(decode(f)) == f
+//
+// Addresses come from the identifier: the keypad's frames decode whatever its source address,
+// commands whatever their destination and sender. `keypad` (optional) narrows to the keypad at
+// one address: its own frames must come from it, commands must go to it. A frame on a PGN the
+// keypads do not use (anything but EF00h, A700h, A600h, EE00h) is not a keypad frame
+// (errc::wrong_id). The same PGN and command byte carry both directions (01h is a key contact
+// state from the keypad and an LED command to it; 2Ah a request and its answer): the direction
+// comes from the data and the identifier, as docs/j1939.md says. encode builds the frame, decodes
+// it back with the same arguments and returns it only when the meaning comes back unchanged.
+#ifndef POWERKEY_KEYPAD_J1939_CODEC_HPP
+#define POWERKEY_KEYPAD_J1939_CODEC_HPP
+
+#include <powerkey/can/frame.hpp>
+#include <powerkey/detail/bytes.hpp>
+#include <powerkey/j1939/id.hpp>
+#include <powerkey/j1939/name.hpp>
+#include <powerkey/j1939/protocol_switch.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
+#include <powerkey/keypad/models.hpp>
+#include <powerkey/keypad/values.hpp>
+#include <powerkey/result.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+namespace powerkey::j1939 {
+
+// The PGNs of the keypads besides proprietary A (EF00h, protocol_switch.hpp): the two frames of
+// the multiple-LED command (section 7b) and the address claim (section 20). All PDU1.
+inline constexpr pgn multiple_leds_1_pgn = 0xA700;  // "AUXILIARY I/O #2", "color 1"
+inline constexpr pgn multiple_leds_2_pgn = 0xA600;  // "AUXILIARY I/O #3", "color 2"
+inline constexpr pgn address_claim_pgn = 0xEE00;
+// Bytes 0..1 of every proprietary-A keypad frame but the LED acknowledgement (section 4).
+inline constexpr std::uint8_t header_0 = 0x04;
+inline constexpr std::uint8_t header_1 = 0x1B;
+
+// The keypad whose frames decode: nullopt for any (the default), or its source address.
+using keypad_address = std::optional<std::uint8_t>;
+
+// --- the multiple-LED codes and TABLE 3 (section 7b) ---------------------------------------------
+
+// What one LED shows, as a single-LED command says it. `defined` is false for the code pairs
+// TABLE 3 does not give (Fh with 0h or Fh, and codes Ah..Eh).
+struct led_look {
+    led_mode mode = led_mode::off;
+    led_colour colour = led_colour::off;
+    led_colour secondary = led_colour::off;
+    bool defined = true;
+    friend constexpr bool operator==(const led_look&, const led_look&) noexcept = default;
+};
+
+// TABLE 3: the LED of code c1 in the "color 1" frame and c2 in the "color 2" frame. Same colour
+// in both alternates that colour with itself ("LED ALT BLINKS with the chosen color").
+[[nodiscard]] constexpr led_look combine(std::uint8_t c1, std::uint8_t c2) noexcept {
+    const auto colour = [](std::uint8_t c) { return c >= 1 && c <= 9; };
+    const auto as = [](std::uint8_t c) { return static_cast<led_colour>(c); };
+    if (c1 == 0 && c2 == 0) return {};
+    if (colour(c1) && c2 == 0) return {led_mode::on, as(c1), led_colour::off, true};
+    if (c1 == 0 && colour(c2)) return {led_mode::on, as(c2), led_colour::off, true};
+    if (colour(c1) && colour(c2)) return {led_mode::alternate_blink, as(c1), as(c2), true};
+    if (colour(c1) && c2 == 0xF) return {led_mode::blink, as(c1), led_colour::off, true};
+    if (c1 == 0xF && colour(c2)) return {led_mode::blink, as(c2), led_colour::off, true};
+    return {led_mode::off, led_colour::off, led_colour::off, false};
+}
+
+// The LED of k as the two frames say it.
+[[nodiscard]] constexpr led_look combine(const multiple_leds& colour_1,
+                                         const multiple_leds& colour_2, unsigned k) noexcept {
+    return combine(colour_1.code_of(k), colour_2.code_of(k));
+}
+
+// The two codes that make an LED show `look` (the inverse of combine): off 0h/0h, on c/0h, blink
+// c/Fh, alternate blink c/s. nullopt for a look TABLE 3 cannot give (a colour outside 1h..9h,
+// where it shows one).
+struct code_pair {
+    std::uint8_t colour_1 = 0;
+    std::uint8_t colour_2 = 0;
+    friend constexpr bool operator==(const code_pair&, const code_pair&) noexcept = default;
+};
+[[nodiscard]] constexpr std::optional<code_pair> codes_for(led_mode mode, led_colour colour,
+                                                           led_colour secondary) noexcept {
+    const auto c = static_cast<std::uint8_t>(colour);
+    const auto s = static_cast<std::uint8_t>(secondary);
+    if (mode == led_mode::off) return code_pair{};
+    if (c < 1 || c > 9) return std::nullopt;
+    switch (mode) {
+        case led_mode::on: return code_pair{c, 0};
+        case led_mode::blink: return code_pair{c, 0xF};
+        case led_mode::alternate_blink:
+            if (s < 1 || s > 9) return std::nullopt;
+            return code_pair{c, s};
+        default: return std::nullopt;
+    }
+}
+
+namespace detail {
+
+template <class T>
+constexpr result<message> answer(const T& v) noexcept {
+    return result<message>(std::in_place, std::in_place_type<T>, v);
+}
+
+// Bytes [from, 8) of the data word w are FFh.
+constexpr bool ff_from(std::uint64_t w, unsigned from) noexcept {
+    return (w >> (8 * from)) == (~std::uint64_t{0} >> (8 * from));
+}
+
+constexpr std::uint8_t byte_of(std::uint64_t w, unsigned i) noexcept {
+    return static_cast<std::uint8_t>(w >> (8 * i));
+}
+
+// The identifier of a frame the keypad sends: from the narrowed keypad, if any.
+constexpr errc from_keypad(std::uint8_t source, keypad_address keypad) noexcept {
+    return keypad && source != *keypad ? errc::wrong_id : errc{};
+}
+// The identifier of a command: to the narrowed keypad, if any; and not to the global address,
+// which no source shows a keypad taking commands on.
+constexpr errc to_keypad(std::uint8_t destination, keypad_address keypad) noexcept {
+    if (keypad && destination != *keypad) return errc::wrong_id;
+    if (destination == global_address) return errc::undocumented;
+    return errc{};
+}
+
+// The model's word on a frame: absent is unknown_command, unknown is undocumented.
+constexpr errc covered(const model_row& r, feature f) noexcept {
+    switch (r.frames.of(f)) {
+        case coverage::absent: return errc::unknown_command;
+        case coverage::unknown: return errc::undocumented;
+        default: return errc{};
+    }
+}
+
+// An LED number the model's LED commands address.
+constexpr bool has_led(const model_row& r, std::uint8_t k) noexcept {
+    return k >= 1 && k <= 16 && ((r.leds >> (k - 1)) & 1u) != 0;
+}
+constexpr bool is_colour(std::uint8_t c) noexcept { return c <= 0x09; }
+constexpr bool is_secondary(std::uint8_t c) noexcept { return c <= 0x09 || c == 0xFF; }
+
+// The identifier fields every message starts with.
+struct route {
+    j1939::priority priority;
+    std::uint8_t destination;
+    std::uint8_t source;
+};
+
+// The checks of a frame the keypad sends (`sent`) or is sent (`received`) before its data's:
+// the identifier, then the model's word on the frame.
+constexpr errc sent(const model_row& r, feature f, const route& at,
+                    keypad_address keypad) noexcept {
+    const errc e = from_keypad(at.source, keypad);
+    return e != errc{} ? e : covered(r, f);
+}
+constexpr errc received(const model_row& r, feature f, const route& at,
+                        keypad_address keypad) noexcept {
+    const errc e = to_keypad(at.destination, keypad);
+    return e != errc{} ? e : covered(r, f);
+}
+
+// --- proprietary A (EF00h): the frames of the keypad ---------------------------------------------
+
+// Errors after the route: reserved_not_ff, value_out_of_range.
+constexpr result<message> key_contact_of(const route& at, std::uint64_t w) noexcept {
+    if (!ff_from(w, 6)) return errc::reserved_not_ff;
+    const std::uint8_t key = byte_of(w, 3), state = byte_of(w, 4), id = byte_of(w, 5);
+    if (key < 1 || key > 16 || state > 1 || id == 0xFF) return errc::value_out_of_range;
+    return answer(key_contact{at.priority, at.destination, at.source, key, state == 1, id});
+}
+
+constexpr result<message> heartbeat_of(const model_row& r, const route& at,
+                                       std::uint64_t w) noexcept {
+    if (byte_of(w, 6) != 0xFF) return errc::reserved_not_ff;
+    const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
+    if ((keys >> r.keys) != 0) return errc::reserved_not_zero;
+    return answer(heartbeat{at.priority, at.destination, at.source, byte_of(w, 3),
+                            key_set::from_mask(keys), byte_of(w, 7)});
+}
+
+constexpr result<message> revision_of(const route& at, std::uint64_t w) noexcept {
+    software_revision v{at.priority, at.destination, at.source, {}};
+    bool ended = false;
+    for (unsigned i = 0; i < 5; ++i) {
+        const std::uint8_t b = byte_of(w, 3 + i);
+        if (b == 0)
+            ended = true;
+        else if (ended || b < 0x20 || b > 0x7E)
+            return errc::value_out_of_range;
+        v.bytes[i] = b;
+    }
+    return answer(v);
+}
+
+constexpr result<message> led_ack_of(const model_row& r, const route& at,
+                                     std::uint64_t w) noexcept {
+    const std::uint8_t b1 = byte_of(w, 1), key = byte_of(w, 2), b3 = byte_of(w, 3),
+                       b4 = byte_of(w, 4);
+    if (r.form == led_form::code) {
+        if (b1 != 0xFF || !ff_from(w, 4)) return errc::reserved_not_ff;
+        if (!has_led(r, key)) return errc::value_out_of_range;
+        return answer(led_ack_code{at.priority, at.destination, at.source, key, b3});
+    }
+    if (!ff_from(w, 5)) return errc::reserved_not_ff;
+    if (b1 > 3 || !has_led(r, key) || !is_colour(b3) || !is_secondary(b4))
+        return errc::value_out_of_range;
+    return answer(led_ack{at.priority, at.destination, at.source, key, static_cast<led_mode>(b1),
+                          static_cast<led_colour>(b3), static_cast<led_colour>(b4)});
+}
+
+// --- proprietary A (EF00h): the frames to the keypad ---------------------------------------------
+
+constexpr result<message> set_led_of(const model_row& r, const route& at,
+                                     std::uint64_t w) noexcept {
+    const std::uint8_t key = byte_of(w, 3), b4 = byte_of(w, 4), b5 = byte_of(w, 5),
+                       b6 = byte_of(w, 6);
+    if (r.form == led_form::code) {
+        if (!ff_from(w, 5)) return errc::reserved_not_ff;
+        if (!has_led(r, key)) return errc::value_out_of_range;
+        return answer(set_led_code{at.priority, at.destination, at.source, key, b4});
+    }
+    if (byte_of(w, 7) != 0xFF) return errc::reserved_not_ff;
+    if (!has_led(r, key) || !is_colour(b4) || b5 > 3 || !is_secondary(b6))
+        return errc::value_out_of_range;
+    return answer(set_led{at.priority, at.destination, at.source, key, static_cast<led_colour>(b4),
+                          static_cast<led_mode>(b5), static_cast<led_colour>(b6)});
+}
+
+// Errors: value_out_of_range for a byte outside the parameter's range.
+constexpr errc read_param(command_param p, std::uint8_t b, command& c) noexcept {
+    switch (p) {
+        case command_param::none: return errc{};
+        case command_param::level:
+            if (b > level::max) return errc::value_out_of_range;
+            c.level = level::make(b).value();
+            return errc{};
+        case command_param::flag:
+            if (b > 1) return errc::value_out_of_range;
+            c.enabled = b == 1;
+            return errc{};
+        case command_param::show:
+            if (b > 2) return errc::value_out_of_range;
+            c.show = static_cast<startup_show>(b);
+            return errc{};
+        case command_param::management:
+            if (b != 0 && b != 2) return errc::value_out_of_range;
+            c.multiple_leds = b == 2;
+            return errc{};
+        case command_param::destination:
+            if (b == 0xFE) return errc::value_out_of_range;
+            c.address = b;
+            return errc{};
+        case command_param::baud:
+            if (b != 2 && b != 3) return errc::value_out_of_range;
+            c.baud = static_cast<baud_rate>(b);  // the PK1000 codes: 02h 500k, 03h 250k
+            return errc{};
+        case command_param::source:
+            if (b == 0 || b == 0xFE) return errc::value_out_of_range;
+            c.address = b;
+            return errc{};
+        case command_param::identifier:
+            if (b == 0xFE) return errc::value_out_of_range;
+            c.identifier = b;
+            return errc{};
+        case command_param::heartbeat_time:
+            if (b == 0xFF && !c.enabled) {
+                c.period_10ms = b;
+                return errc{};
+            }
+            [[fallthrough]];
+        case command_param::period:
+            if (b < 0x05 || b > 0xFE) return errc::value_out_of_range;
+            c.period_10ms = b;
+            return errc{};
+        case command_param::colour:
+            if (b < 1 || b > 9) return errc::value_out_of_range;
+            c.colour = static_cast<backlight_colour>(b);
+            return errc{};
+    }
+    return errc::value_out_of_range;
+}
+
+constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
+    switch (p) {
+        case command_param::level: return c.level.value();
+        case command_param::flag: return c.enabled ? 1 : 0;
+        case command_param::show: return static_cast<std::uint8_t>(c.show);
+        case command_param::management: return c.multiple_leds ? 2 : 0;
+        case command_param::destination:
+        case command_param::source: return c.address;
+        case command_param::identifier: return c.identifier;
+        case command_param::baud: return static_cast<std::uint8_t>(c.baud);
+        case command_param::period:
+        case command_param::heartbeat_time: return c.period_10ms;
+        case command_param::colour: return static_cast<std::uint8_t>(c.colour);
+        case command_param::none: break;
+    }
+    return 0xFF;
+}
+
+// Errors: reserved_not_ff (a byte after the parameters), value_out_of_range.
+constexpr result<message> command_of(const command_row& row, const route& at,
+                                     std::uint64_t w) noexcept {
+    const unsigned used = row.p1 == command_param::none ? 3 : row.p2 == command_param::none ? 4 : 5;
+    if (!ff_from(w, used)) return errc::reserved_not_ff;
+    command c{};
+    c.priority = at.priority;
+    c.destination = at.destination;
+    c.source = at.source;
+    c.code = row.code;
+    if (const errc e = read_param(row.p1, byte_of(w, 3), c); e != errc{}) return e;
+    if (const errc e = read_param(row.p2, byte_of(w, 4), c); e != errc{}) return e;
+    return answer(c);
+}
+
+constexpr result<message> switch_of(const route& at, std::uint64_t w) noexcept {
+    if (!ff_from(w, 4)) return errc::reserved_not_ff;
+    if (byte_of(w, 3) != 0x00) return errc::value_out_of_range;
+    return answer(switch_to_canopen{at.priority, at.destination, at.source});
+}
+
+// Command 01h: the keypad's key contact state or an LED command to it. Narrowed, the keypad's
+// own frame is its key state. Otherwise a frame to the global address is a key state (commands
+// go to the keypad's address); an addressed frame is an LED command when its bytes can only be
+// one (LI form: byte 5 FFh, which no keypad identifier is; SI form: byte 6 not FFh), or when
+// they can be either (SI: byte 4 00h/01h, byte 5 00h..03h, byte 6 FFh).
+constexpr bool is_led_command(const model_row& r, const route& at, std::uint64_t w,
+                              keypad_address keypad) noexcept {
+    if (keypad) return at.source != *keypad;
+    if (at.destination == global_address) return false;
+    if (r.form == led_form::code) return byte_of(w, 5) == 0xFF;
+    if (byte_of(w, 6) != 0xFF) return true;
+    return byte_of(w, 4) <= 1 && byte_of(w, 5) <= 3;
+}
+
+constexpr result<message> decode_proprietary_a(const model_row& r, const route& at, std::uint64_t w,
+                                               keypad_address keypad) noexcept {
+    const std::uint8_t b0 = byte_of(w, 0);
+    if (b0 == 0x00) {  // the LED acknowledgement has no header
+        if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
+        return led_ack_of(r, at, w);
+    }
+    if (b0 != header_0 || byte_of(w, 1) != header_1) return errc::unknown_command;
+    const std::uint8_t code = byte_of(w, 2);
+    switch (code) {
+        case 0x01:
+            if (is_led_command(r, at, w, keypad)) {
+                if (const errc e = received(r, feature::led_command, at, keypad); e != errc{})
+                    return e;
+                return set_led_of(r, at, w);
+            }
+            if (const errc e = sent(r, feature::key_contact, at, keypad); e != errc{}) return e;
+            return key_contact_of(at, w);
+        case 0xF9:
+            if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
+            return heartbeat_of(r, at, w);
+        case 0x80:
+            if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{})
+                return e;
+            return switch_of(at, w);
+        case 0x2A:
+            if (!ff_from(w, 3)) {  // the answer; the request's bytes 3..7 are FFh
+                if (const errc e = sent(r, feature::software_revision, at, keypad); e != errc{})
+                    return e;
+                return revision_of(at, w);
+            }
+            break;
+        default: break;
+    }
+    const command_row* row = find_command(code);
+    if (row == nullptr) return errc::unknown_command;
+    if (const errc e = received(r, row->what, at, keypad); e != errc{}) return e;
+    return command_of(*row, at, w);
+}
+
+// --- the multiple-LED frames (A700h, A600h) and the address claim (EE00h) -----------------------
+
+constexpr result<message> multiple_leds_of(const model_row& r, const route& at, colour_frame frame,
+                                           std::uint64_t w, keypad_address keypad) noexcept {
+    if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
+    const unsigned bits = 4u * r.plane_leds;
+    const std::uint64_t used = powerkey::detail::low_bits(bits);
+    if ((w | used) != ~std::uint64_t{0}) return errc::reserved_not_ff;
+    for (unsigned k = 0; k < r.plane_leds; ++k) {
+        const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
+        if (c >= 0xA && c <= 0xE) return errc::value_out_of_range;
+    }
+    return answer(multiple_leds{at.priority, at.destination, at.source, frame, w & used});
+}
+
+constexpr result<message> address_claimed_of(const model_row& r, const route& at, std::uint64_t w,
+                                             keypad_address keypad) noexcept {
+    if (const errc e = sent(r, feature::address_claim, at, keypad); e != errc{}) return e;
+    const auto n = unpack_name(w);
+    if (!n) return n.error();
+    return answer(address_claimed{at.priority, at.destination, at.source, *n});
+}
+
+// --- encoding
+// -------------------------------------------------------------------------------------
+
+constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t destination,
+                              std::uint8_t source, std::uint64_t data) noexcept {
+    // Every PGN here is PDU1 with a zero low byte: make_id cannot fail.
+    const auto id = make_id({priority, p, destination, source}).value();
+    can::payload bytes{};
+    powerkey::detail::store_le<8>(bytes, 0, data);
+    return can::frame(id, can::dlc::make(8).value(), bytes);
+}
+
+constexpr std::uint64_t header(std::uint8_t code) noexcept {
+    return header_0 | (std::uint64_t{header_1} << 8) | (std::uint64_t{code} << 16);
+}
+// Bytes [from, 8) FFh.
+constexpr std::uint64_t ff_past(unsigned from) noexcept {
+    return ~powerkey::detail::low_bits(8 * from);
+}
+constexpr std::uint64_t at_byte(std::uint8_t v, unsigned i) noexcept {
+    return std::uint64_t{v} << (8 * i);
+}
+template <class E>
+constexpr std::uint8_t raw(E e) noexcept {
+    return static_cast<std::uint8_t>(e);
+}
+
+// The frame of one message, field by field (encode checks it by decoding).
+template <class T>
+constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noexcept {
+    const auto ef = [&v](std::uint64_t data) {
+        return frame_of(proprietary_a_pgn, v.priority, v.destination, v.source, data);
+    };
+    if constexpr (std::is_same_v<T, key_contact>) {
+        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(v.pressed ? 1 : 0, 4) |
+                  at_byte(v.identifier, 5) | ff_past(6));
+    } else if constexpr (std::is_same_v<T, heartbeat>) {
+        const auto keys = static_cast<std::uint16_t>(v.keys.mask());
+        return ef(header(0xF9) | at_byte(v.counter, 3) | (std::uint64_t{keys} << 32) |
+                  at_byte(0xFF, 6) | at_byte(v.identifier, 7));
+    } else if constexpr (std::is_same_v<T, software_revision>) {
+        std::uint64_t d = header(0x2A);
+        for (unsigned i = 0; i < 5; ++i) d |= at_byte(v.bytes[i], 3 + i);
+        return ef(d);
+    } else if constexpr (std::is_same_v<T, led_ack>) {
+        return ef(at_byte(raw(v.mode), 1) | at_byte(v.key, 2) | at_byte(raw(v.colour), 3) |
+                  at_byte(raw(v.secondary), 4) | ff_past(5));
+    } else if constexpr (std::is_same_v<T, led_ack_code>) {
+        return ef(at_byte(0xFF, 1) | at_byte(v.key, 2) | at_byte(v.code, 3) | ff_past(4));
+    } else if constexpr (std::is_same_v<T, address_claimed>) {
+        return frame_of(address_claim_pgn, v.priority, v.destination, v.source, pack_name(v.name));
+    } else if constexpr (std::is_same_v<T, set_led>) {
+        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(raw(v.colour), 4) |
+                  at_byte(raw(v.mode), 5) | at_byte(raw(v.secondary), 6) | ff_past(7));
+    } else if constexpr (std::is_same_v<T, set_led_code>) {
+        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(v.code, 4) | ff_past(5));
+    } else if constexpr (std::is_same_v<T, multiple_leds>) {
+        const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
+        return frame_of(v.frame.value() == 1 ? multiple_leds_1_pgn : multiple_leds_2_pgn,
+                        v.priority, v.destination, v.source, (v.nibbles & used) | ~used);
+    } else if constexpr (std::is_same_v<T, command>) {
+        const command_row* row = find_command(raw(v.code));
+        if (row == nullptr) return ef(header(raw(v.code)) | ff_past(3));
+        return ef(header(raw(v.code)) | at_byte(write_param(row->p1, v), 3) |
+                  at_byte(write_param(row->p2, v), 4) | ff_past(5));
+    } else {
+        static_assert(std::is_same_v<T, switch_to_canopen>);
+        return encode(v);
+    }
+}
+
+}  // namespace detail
+
+// Any frame of a keypad of model m, in J1939. Checks in this order, and errors:
+//   value_out_of_range  m is not a model
+//   wrong_id_format     an 11-bit frame
+//   wrong_id            a PGN other than EF00h, A700h, A600h, EE00h (not a keypad frame); with
+//                       `keypad`, a frame neither from nor to it, a keypad frame not from it or a
+//                       command not to it
+//   wrong_length        not 8 data bytes
+//   unknown_command     EF00h data without the 04 1B header (and not the acknowledgement's 00h),
+//                       a command byte no manual has; a frame the model's manual does not have
+//   undocumented        a frame whose layout on this model no source shows; a command to the
+//                       global address FFh
+//   reserved_not_ff     a "not used" byte that is not FFh
+//   reserved_not_zero   a heartbeat key bit above the model's keys; the NAME's reserved bit
+//   value_out_of_range  a field outside its range (key 00h or above 10h, an LED the model lacks,
+//                       a colour above 09h, a state above 03h, a level above 3Fh, a baud code
+//                       other than 02h/03h, a reserved address FEh, a period below 05h, a
+//                       multiple-LED code Ah..Eh, revision bytes that are not ASCII, ...)
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, model m,
+                                               keypad_address keypad = std::nullopt) noexcept {
+    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
+    if (!f.is_extended()) return errc::wrong_id_format;
+    const model_row& r = detail::j1939_row_of(m);
+    const std::uint32_t id = f.raw_id();
+    const detail::route at{priority::make((id >> 26) & 7u).value(),
+                           static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)};
+    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
+    if (pf != 0xEF && pf != 0xA7 && pf != 0xA6 && pf != 0xEE) return errc::wrong_id;
+    if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = f.data_le();
+    switch (pf) {
+        case 0xEF: return detail::decode_proprietary_a(r, at, w, keypad);
+        case 0xA7: return detail::multiple_leds_of(r, at, 1, w, keypad);
+        case 0xA6: return detail::multiple_leds_of(r, at, 2, w, keypad);
+        default: return detail::address_claimed_of(r, at, w, keypad);
+    }
+}
+
+// The frame of msg for a keypad of model m, such that decode(frame, m, keypad) == msg. A message
+// decode could never return is refused with the error decode gives its frame, or with
+// value_out_of_range when the frame decodes to another meaning (a member the command does not
+// use set, an LED past the model's multiple-LED frame, an addressed key state whose bytes read
+// as an LED command: narrow to the keypad to send it).
+// One alternative of j1939::message: encode(m, set_led{...}) needs no visit of the variant.
+template <class T>
+concept message_alternative = []<class... A>(std::type_identity<std::variant<A...>>) {
+    return (std::is_same_v<T, A> || ...);
+}(std::type_identity<message>{});
+
+template <message_alternative T>
+[[nodiscard]] constexpr result<can::frame> encode(model m, const T& msg,
+                                                  keypad_address keypad = std::nullopt) noexcept {
+    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
+    const can::frame f = detail::build(detail::j1939_row_of(m), msg);
+    const auto back = decode(f, m, keypad);
+    if (!back) return back.error();
+    const T* same = std::get_if<T>(&*back);
+    if (same == nullptr || !(*same == msg)) return errc::value_out_of_range;
+    return f;
+}
+
+[[nodiscard]] constexpr result<can::frame> encode(model m, const message& msg,
+                                                  keypad_address keypad = std::nullopt) noexcept {
+    return std::visit([m, keypad](const auto& v) { return encode(m, v, keypad); }, msg);
+}
+
+}  // namespace powerkey::j1939
+
+#endif  // POWERKEY_KEYPAD_J1939_CODEC_HPP
