@@ -11,7 +11,8 @@ python3-canmatrix), and checked against the library (tests/test_dbc.sh runs this
 2. Every frame of every sample log (examples/logs/MODEL.log) that `powerkey decode --json` reads
    as a frame of the keypad's node decodes in canmatrix to the same values: every key, every LED of
    every colour, level, colour, state, encoder, input, and the SDO objects' values. A frame the DBC
-   does not describe (SDO segments, aborts, strings) must decode to no named SDO request or reply.
+   does not describe (SDO segments, aborts, strings) must decode to no named SDO request or reply;
+   J1939 frames, not in the files yet (docs/dbc.md), are counted.
 3. Every key, LED and ring LED: the frame `powerkey encode` builds for that one key or LED decodes
    in canmatrix to exactly that one signal, and every key or LED the library refuses has no signal.
 4. Another node id moves every per-node identifier.
@@ -215,11 +216,12 @@ def check_sdo(label, decoded, kind, fields, mux):
 
 def check_frame(model, db, j):
     label = f"{model}.log {j['id']}#{j['data']}"
-    frame = frame_of(db, int(j["id"], 16), j["ext"])
     kind, fields = j["kind"], j["fields"]
+    if j["ext"]:
+        return "j1939 (not described)"  # no J1939 frame is in the files yet (docs/dbc.md)
+    frame = frame_of(db, int(j["id"], 16), j["ext"])
     if frame is None:
-        if kind != "j1939_switch_to_canopen":  # J1939 is not in the DBC yet (docs/dbc.md)
-            fail(f"{label}: {kind} has no message in the DBC")
+        fail(f"{label}: {kind} has no message in the DBC")
         return None
     decoded = frame.decode(bytes.fromhex(j["data"]))
     name = frame.name

@@ -44,7 +44,9 @@ usage() {
   [ ! -s "$tmp/out" ] || fail "$*: wrote to standard output"
   [ "$(cat "$tmp/err")" = "$want" ] || fail "$*: '$(cat "$tmp/err")', want '$want'"
 }
-models="pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si"
+# Every model of the table, as decode lists them for an unknown model (without its "auto").
+models=$("$pk" decode --model none /dev/null 2>&1 | sed -n 's/.*unknown model .none. (\(.*\), auto).*/\1/p')
+[ -n "$models" ] || fail "decode --model none lists no models"
 usage "powerkey: export dbc: --model is required ($models) (powerkey help shows the usage)" export dbc
 usage "powerkey: export: say what to export (dbc) (powerkey help shows the usage)" export
 usage "powerkey: The following argument was not expected: csv (powerkey help shows the usage)" export csv --model pkp2400

@@ -138,6 +138,13 @@ constexpr sources source_table[] = {
      .led_on = "inferred: plane stride 8 (docs/si-family.md)",
      .led_blink = "inferred: plane stride 8 (docs/si-family.md)",
      .backlight = "inferred: level only (docs/si-family.md, The other sizes)"},
+    // Only a J1939 manual exists: its CANopen side is the PKP-2300-SI's, inferred.
+    {.id = model::pkp1600si,
+     .manual = "SI generic pages",
+     .key_state = "inferred: as the PKP-2300-SI (docs/si-family.md)",
+     .led_on = "inferred: plane stride 8 (docs/si-family.md)",
+     .led_blink = "inferred: plane stride 8 (docs/si-family.md)",
+     .backlight = "inferred: level only (docs/si-family.md)"},
 };
 
 constexpr bool sources_once() {
