@@ -29,10 +29,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)pressed_keys(msg);
         (void)led_on_map(msg, m);
         (void)led_blink_map(msg, m);
-        (void)brightness(msg);
-        (void)backlight_of(msg);
+        (void)led_brightness_level(msg);
+        (void)backlight_change(msg);
         (void)node_id_change(msg);
-        (void)nmt_state_of(msg);
+        (void)reported_nmt_state(msg);
     }
     return 0;
 }

@@ -151,7 +151,7 @@ constexpr carrier<level> brightness_rows[] = {
      std::nullopt},
     {"command 03h is the backlight", "615#2300650103100000", model::pkp2400, std::nullopt},
 };
-static_assert(first_wrong(brightness_rows, brightness) == std::size(brightness_rows));
+static_assert(first_wrong(brightness_rows, led_brightness_level) == std::size(brightness_rows));
 
 // --- backlight
 // ------------------------------------------------------------------------------------
@@ -174,7 +174,7 @@ constexpr carrier<backlight_update> backlight_rows[] = {
      backlight_update{std::nullopt, backlight_colour::white}},
     {"the LED brightness is no backlight", "415#2000000000000000", model::pk1000, std::nullopt},
 };
-static_assert(first_wrong(backlight_rows, backlight_of) == std::size(backlight_rows));
+static_assert(first_wrong(backlight_rows, backlight_change) == std::size(backlight_rows));
 
 // --- node id, NMT state
 // -------------------------------------------------------------------------------
@@ -194,7 +194,7 @@ constexpr carrier<canopen::nmt_state> nmt_rows[] = {
     {"PKP 9: pre-operational", "715#7F", model::pkp2400, canopen::nmt_state::pre_operational},
     {"an NMT command is not the keypad's state", "000#0115", model::pk1000, std::nullopt},
 };
-static_assert(first_wrong(nmt_rows, nmt_state_of) == std::size(nmt_rows));
+static_assert(first_wrong(nmt_rows, reported_nmt_state) == std::size(nmt_rows));
 
 template <std::size_t N>
 constexpr bool none_answers(model m, const std::string_view (&frames)[N]) {
@@ -202,7 +202,8 @@ constexpr bool none_answers(model m, const std::string_view (&frames)[N]) {
         const auto msg = decode(frame_of(text), keypad, m);
         if (!msg) return false;
         if (pressed_keys(*msg) || led_on_map(*msg, m) || led_blink_map(*msg, m) ||
-            brightness(*msg) || backlight_of(*msg) || node_id_change(*msg) || nmt_state_of(*msg))
+            led_brightness_level(*msg) || backlight_change(*msg) || node_id_change(*msg) ||
+            reported_nmt_state(*msg))
             return false;
     }
     return true;
@@ -245,16 +246,16 @@ TEST_CASE("LED maps from the PDOs and from the LED objects, with the planes each
 
 TEST_CASE(
     "brightness from the PDO, SDO writes and read replies of both dictionaries, command 02h") {
-    check_carriers(brightness_rows, brightness);
+    check_carriers(brightness_rows, led_brightness_level);
 }
 
 TEST_CASE("backlight from the PDO, the SDO objects and commands 03h/04h") {
-    check_carriers(backlight_rows, backlight_of);
+    check_carriers(backlight_rows, backlight_change);
 }
 
 TEST_CASE("node id changes and NMT states") {
     check_carriers(node_rows, node_id_change);
-    check_carriers(nmt_rows, nmt_state_of);
+    check_carriers(nmt_rows, reported_nmt_state);
 }
 
 TEST_CASE("every other message answers none of the questions") {

@@ -50,7 +50,7 @@ static_assert(canopen::classify(can::candump("00000615#00")) ==
 static_assert(parse_model("pkp2400") == model::pkp2400);
 static_assert(parse_model("PKP-2400-LI") == model::pkp2400);
 static_assert(parse_model("pkp2500") == errc::value_out_of_range);
-static_assert(kind_of(message{canopen::sync_message{}}) == "sync");
+static_assert(kind_of(message{canopen::sync_message{}}) == "sync_message");
 
 // --- the accessors against the rows
 // ---------------------------------------------------------------

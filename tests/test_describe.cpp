@@ -49,10 +49,11 @@ struct describe_row {
     std::string_view text;
 };
 constexpr describe_row rows[] = {
-    {"PK1000 4", model::pk1000, "000#0115", "node 15h  NMT  command: start  target: 15h"},
-    {"PK1000 7", model::pk1000, "000#0015", "node 15h  NMT  command: legacy_stop  target: 15h"},
-    {"PK1000 8", model::pk1000, "715#00", "node 15h  heartbeat  state: boot_up"},
-    {"PK1000 10", model::pk1000, "080#", "node 15h  sync"},
+    {"PK1000 4", model::pk1000, "000#0115", "node 15h  NMT message  command: start  target: 15h"},
+    {"PK1000 7", model::pk1000, "000#0015",
+     "node 15h  NMT message  command: legacy_stop  target: 15h"},
+    {"PK1000 8", model::pk1000, "715#00", "node 15h  heartbeat message  state: boot_up"},
+    {"PK1000 10", model::pk1000, "080#", "node 15h  sync message"},
     {"PK1000 32", model::pk1000, "615#4008100000000000", "node 15h  SDO read  object: device_name"},
     {"PK1000 32", model::pk1000, "595#410810000B000000",
      "node 15h  SDO upload initiate response  index: 1008h  subindex: 0  size_indicated: yes  "
@@ -143,10 +144,10 @@ TEST_CASE("a buffer too small is an error, and nothing is written past it") {
                             std::span<char>(buf.data(), buf.size() - 1));
     CHECK(r == errc::buffer_too_small);
     CHECK(buf.back() == '!');
-    std::array<char, 14> exact{};  // "node 15h  sync": no terminator needed
+    std::array<char, 22> exact{};  // "node 15h  sync message": no terminator needed
     const auto fits = describe(message{canopen::sync_message{}}, keypad, exact);
     REQUIRE(fits.has_value());
-    CHECK(*fits == "node 15h  sync");
+    CHECK(*fits == "node 15h  sync message");
 }
 
 TEST_CASE("every frame of the table has a description that fits 160 characters") {

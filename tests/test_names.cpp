@@ -22,7 +22,7 @@ int check_enum_names() {
     std::array<std::string_view, 256> names{};
     int named = 0;
     for (unsigned v = 0; v < 256; ++v) {
-        names[v] = enum_name(static_cast<E>(v));
+        names[v] = to_string(static_cast<E>(v));
         if (names[v].empty()) continue;
         ++named;
         for (unsigned w = 0; w < v; ++w)
@@ -81,9 +81,9 @@ TEST_CASE("enumerator names of every message field are unique") {
     // 00h, the legacy stop, has a name of its own now: no alias is printed for two values.
     CHECK(check_enum_names<canopen::nmt_command>() == 6);
     // A few names pinned, as the tool prints them.
-    CHECK(enum_name(canopen::nmt_command::enter_pre_operational) == "pre_operational");
-    CHECK(enum_name(canopen::nmt_state::stopped) == "stopped");
-    CHECK(enum_name(static_cast<canopen::nmt_state>(0x01)).empty());
+    CHECK(to_string(canopen::nmt_command::enter_pre_operational) == "pre_operational");
+    CHECK(to_string(canopen::nmt_state::stopped) == "stopped");
+    CHECK(to_string(static_cast<canopen::nmt_state>(0x01)).empty());
 }
 
 TEST_CASE("message kinds are unique in the one message type") {

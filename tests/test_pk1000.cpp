@@ -175,7 +175,7 @@ TEST_CASE("pk1000: node change, E-PK-3 and E-PK-2 decisions") {
     // E-PK-2: the reply labelled cyan carries 04h, yellow; the bytes win.
     const auto colour = pk1000("595#4F03200304000000");
     REQUIRE(colour.has_value());
-    const auto b = backlight_of(*colour);
+    const auto b = backlight_change(*colour);
     REQUIRE(b.has_value());
     CHECK(b->colour == backlight_colour::yellow);
 }

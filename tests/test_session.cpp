@@ -193,7 +193,7 @@ TEST_CASE("the PKP node change: the reply from the old id, the boot-up from the 
     const auto boot = s.step(can::candump("718#00"));
     CHECK(boot.cls == canopen::cob_info{canopen::function::heartbeat, 0x18});
     REQUIRE(boot.decoded.has_value());
-    CHECK(nmt_state_of(*boot.decoded) == canopen::nmt_state::boot_up);
+    CHECK(reported_nmt_state(*boot.decoded) == canopen::nmt_state::boot_up);
     // The old id is gone.
     CHECK(s.step(can::candump("715#05")).decoded == errc::wrong_id);
 }

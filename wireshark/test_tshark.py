@@ -70,7 +70,7 @@ class runner:
         r = subprocess.run([self.args.tool, "decode", "--json", "-"], input="000#0115\n",
                            capture_output=True, text=True)
         try:
-            return r.returncode == 0 and json.loads(r.stdout).get("kind") == "nmt"
+            return r.returncode == 0 and json.loads(r.stdout).get("kind") == "nmt_message"
         except ValueError:
             return False
 
@@ -243,7 +243,7 @@ def compare_log(run, log, model):
         if f["title"] is None:
             # Only another node's frame (the keypad has moved away from its COB-ID) or an NMT
             # command for another node stays with the generic dissectors.
-            other_nmt = j.get("kind") == "nmt" and j["fields"]["target"] not in (0, j["node"])
+            other_nmt = j.get("kind") == "nmt_message" and j["fields"]["target"] not in (0, j["node"])
             if j.get("error") != "wrong_id" and not other_nmt:
                 fail(at, f"not dissected by powerkey (protocols {f['protocols']}), the tool "
                          f"says {j.get('kind') or j.get('error')}")
@@ -297,7 +297,7 @@ def check_other_frames(run):
     rows = [
         # frame, what powerkey shows (kind or error:code) or None, protocols in the frame,
         # protocols with "Decode As CANopen"
-        ("000#0115", "nmt", "can:powerkey", "can:powerkey"),
+        ("000#0115", "nmt_message", "can:powerkey", "can:powerkey"),
         ("000#0116", None, "can:autosar-nm", "can:canopen"),  # NMT for node 16h
         ("616#4008100000000000", None, "can:data", "can:canopen"),  # an SDO of node 16h
         ("196#0100000010", None, "can:data", "can:canopen"),  # a PDO of node 16h
@@ -305,7 +305,7 @@ def check_other_frames(run):
         ("18EF2100#041B8000FFFFFFFF", "j1939_switch_to_canopen", "can:powerkey",
          "can:powerkey"),
         ("18FEF100#0000000000000000", None, "can:data", "can:data"),  # PGN FEF1h
-        ("715#7F", "heartbeat", "can:powerkey", "can:powerkey"),
+        ("715#7F", "heartbeat_message", "can:powerkey", "can:powerkey"),
     ]
     with open(log, "w") as out:
         out.write("".join(r[0] + "\n" for r in rows))
@@ -401,7 +401,7 @@ def check_filters(run):
     cases = [
         ('powerkey.kind == "led_on"', lambda j: j.get("kind") == "led_on"),
         ('powerkey.command == "start"',
-         lambda j: j.get("kind") == "nmt" and j["fields"]["command"] == "start"),
+         lambda j: j.get("kind") == "nmt_message" and j["fields"]["command"] == "start"),
         ('powerkey.red == "1 4 5 7"', lambda j: j.get("fields", {}).get("red") == [1, 4, 5, 7]),
         ("powerkey.sdo.pairing == \"unanswered\"", lambda j: j.get("sdo") == "unanswered"),
     ]

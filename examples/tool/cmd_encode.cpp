@@ -27,7 +27,7 @@ template <class Get>
 bool build_any(model, std::string_view kind, const options& o, Get&& get, message& out,
                std::string& error) {
     return for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
-        if (S::kind != kind) return false;
+        if (S::kind != current_kind(kind)) return false;
         S s{};
         apply_defaults(s, o);
         S::fields(s, [&](std::string_view name, auto& value) {

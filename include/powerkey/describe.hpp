@@ -121,7 +121,7 @@ constexpr void put_value(text_writer& w, std::string_view name, const T& v) noex
     if constexpr (std::is_same_v<T, bool>) {
         w.put(v ? "yes" : "no");
     } else if constexpr (std::is_enum_v<T>) {
-        const auto n = enum_name(v);
+        const auto n = to_string(v);
         if (n.empty()) {
             w.put_hex(static_cast<std::uint64_t>(v), 2 * static_cast<int>(sizeof(T)));
             w.put('h');

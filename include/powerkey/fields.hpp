@@ -50,6 +50,23 @@ template <class M>
     return visit_message(m, [](const auto& s) { return std::string_view{s.kind}; });
 }
 
+// A message's kind is its struct's name (a J1939 message's with `j1939_` before it: several share a
+// name with a CANopen message). A reader of text written before the names were made so (the tool's
+// JSON and encode input, Python) maps the former spellings with current_kind; CHANGELOG.md lists
+// them.
+inline constexpr std::string_view former_kinds[][2] = {
+    {"nmt", "nmt_message"},
+    {"sync", "sync_message"},
+    {"heartbeat", "heartbeat_message"},
+    {"sdo_download", "sdo_download_request"},
+    {"sdo_upload", "sdo_upload_request"},
+};
+[[nodiscard]] constexpr std::string_view current_kind(std::string_view kind) noexcept {
+    for (const auto& f : former_kinds)
+        if (f[0] == kind) return f[1];
+    return kind;
+}
+
 // Calls f(name, value) for every field of the struct that m holds.
 template <class M, class F>
 constexpr void for_each_field(const M& m, F&& f) {
@@ -116,12 +133,6 @@ template <class T>
 struct is_byte_array : std::false_type {};
 template <std::size_t N>
 struct is_byte_array<std::array<std::uint8_t, N>> : std::true_type {};
-
-// The name of an enumerator from its table (names.hpp), "" when the value has no name.
-template <named_enum E>
-[[nodiscard]] constexpr std::string_view enum_name(E e) noexcept {
-    return to_string(e);
-}
 
 }  // namespace powerkey
 

@@ -30,9 +30,9 @@ from ._powerkey import Message, Model, kinds, model_info, names, parse_model  # 
 __all__ = [
     "ArgumentError", "BacklightUpdate", "Controller", "ControllerEvent", "DecodeError",
     "EncodeError", "Error", "Frame", "LedMapUpdate", "Message", "Model", "Session",
-    "SessionEvent", "VirtualKeypad", "backlight", "brightness", "decode", "encode",
+    "SessionEvent", "VirtualKeypad", "backlight_change", "led_brightness_level", "decode", "encode",
     "encode_frame", "kinds", "led_blink_map", "led_on_map", "message", "model_info", "names",
-    "nmt_state", "node_id_change", "parse_model", "pressed_keys",
+    "reported_nmt_state", "node_id_change", "parse_model", "pressed_keys",
 ]
 if _can is not None:
     __all__.append("Listener")
@@ -97,14 +97,14 @@ def led_blink_map(m, model=None):
     return m.led_blink_map(model)
 
 
-def brightness(m):
+def led_brightness_level(m):
     """The key LED level 0..63 a message sets, else None."""
-    return m.brightness()
+    return m.led_brightness_level()
 
 
-def backlight(m):
+def backlight_change(m):
     """What a message sets of the backlight (BacklightUpdate of level and colour), else None."""
-    return m.backlight()
+    return m.backlight_change()
 
 
 def node_id_change(m):
@@ -112,9 +112,9 @@ def node_id_change(m):
     return m.node_id_change()
 
 
-def nmt_state(m):
+def reported_nmt_state(m):
     """The NMT state a heartbeat or boot-up reports ("operational", ...), else None."""
-    return m.nmt_state()
+    return m.reported_nmt_state()
 
 
 # --- the roles, stepped with frames and a time in ms --------------------------------------------

@@ -275,7 +275,7 @@ message build_message(const std::string& kind, const py::dict& fields,
     message out;
     std::vector<std::string> used;
     const bool found = for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
-        if (S::kind != kind) return false;
+        if (S::kind != current_kind(kind)) return false;
         S s{};
         S::fields(s, [&](std::string_view name, auto& value) {
             const py::str key{std::string(name)};
@@ -573,7 +573,8 @@ PYBIND11_MODULE(_powerkey, mod) {
                  py::list l;
                  for (const char* a :
                       {"kind", "model", "node", "to_dict", "describe", "pressed_keys", "led_on_map",
-                       "led_blink_map", "brightness", "backlight", "node_id_change", "nmt_state"})
+                       "led_blink_map", "led_brightness_level", "backlight_change",
+                       "node_id_change", "reported_nmt_state"})
                      l.append(a);
                  for_each_field(
                      m.m, [&l](std::string_view n, const auto&) { l.append(std::string(n)); });
@@ -622,14 +623,14 @@ PYBIND11_MODULE(_powerkey, mod) {
                 return led_map_to_py(led_blink_map(m.m, message_model(m, md)));
             },
             py::arg("model") = py::none())
-        .def("brightness",
+        .def("led_brightness_level",
              [](const py_message& m) -> py::object {
-                 const auto l = brightness(m.m);
+                 const auto l = led_brightness_level(m.m);
                  return l ? py::object(py::int_(l->value())) : py::object(py::none());
              })
-        .def("backlight",
+        .def("backlight_change",
              [](const py_message& m) -> py::object {
-                 const auto u = backlight_of(m.m);
+                 const auto u = backlight_change(m.m);
                  if (!u) return py::none();
                  return types().backlight_update(
                      u->level ? py::object(py::int_(u->level->value())) : py::object(py::none()),
@@ -640,8 +641,8 @@ PYBIND11_MODULE(_powerkey, mod) {
                  const auto n = node_id_change(m.m);
                  return n ? py::object(py::int_(n->value())) : py::object(py::none());
              })
-        .def("nmt_state", [](const py_message& m) -> py::object {
-            const auto s = nmt_state_of(m.m);
+        .def("reported_nmt_state", [](const py_message& m) -> py::object {
+            const auto s = reported_nmt_state(m.m);
             return s ? enum_to_py(*s) : py::object(py::none());
         });
 
@@ -745,7 +746,7 @@ PYBIND11_MODULE(_powerkey, mod) {
         .def("transmit", [](keypad_type& k) { return optional_frame(k.transmit()); })
         .def_property_readonly(
             "state", [](const keypad_type& k) { return std::string(to_string(k.state())); })
-        .def_property_readonly("model", [](const keypad_type& k) { return k.which(); })
+        .def_property_readonly("model", [](const keypad_type& k) { return k.model(); })
         .def_property_readonly("node", [](const keypad_type& k) { return k.node().value(); })
         .def_property_readonly("keys", [](const keypad_type& k) { return index_list(k.keys()); })
         .def_property_readonly("led_on",
@@ -858,10 +859,10 @@ PYBIND11_MODULE(_powerkey, mod) {
                                })
         .def_property_readonly("keys",
                                [](const py_controller& c) { return index_list(c.c.keys()); })
-        .def_property_readonly("leds_on",
-                               [](const py_controller& c) { return leds_to_py(c.c.leds_on()); })
-        .def_property_readonly("leds_blink",
-                               [](const py_controller& c) { return leds_to_py(c.c.leds_blink()); })
+        .def_property_readonly("led_on",
+                               [](const py_controller& c) { return leds_to_py(c.c.led_on()); })
+        .def_property_readonly("led_blink",
+                               [](const py_controller& c) { return leds_to_py(c.c.led_blink()); })
         .def_property_readonly("text", [](const py_controller& c) { return latin1(c.c.text()); })
         .def_property_readonly("sdo_outstanding",
                                [](const py_controller& c) { return c.c.sdo_outstanding(); })

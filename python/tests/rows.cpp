@@ -110,13 +110,13 @@ void put_accessors(tool::json::object_writer& w, std::string& out, const message
         out += "null";
     put_map(aw, out, "led_on_map", led_on_map(m, md));
     put_map(aw, out, "led_blink_map", led_blink_map(m, md));
-    aw.key("brightness");
-    if (const auto b = brightness(m))
+    aw.key("led_brightness_level");
+    if (const auto b = led_brightness_level(m))
         aw.number(b->value());
     else
         out += "null";
-    aw.key("backlight");
-    if (const auto b = backlight_of(m)) {
+    aw.key("backlight_change");
+    if (const auto b = backlight_change(m)) {
         tool::json::object_writer bw(out);
         bw.key("level");
         if (b->level)
@@ -137,8 +137,8 @@ void put_accessors(tool::json::object_writer& w, std::string& out, const message
         aw.number(n->value());
     else
         out += "null";
-    aw.key("nmt_state");
-    if (const auto st = nmt_state_of(m))
+    aw.key("reported_nmt_state");
+    if (const auto st = reported_nmt_state(m))
         tool::write_json_value(aw, *st);
     else
         out += "null";

@@ -64,7 +64,7 @@ def test_controller_sets_up_the_keypad_and_lights_a_pressed_key(model):
     assert keypad.press(3, t)
     events, t = run(t + 1, 500, keypad, controller, lambda ev: 3 in keypad.led_on["green"])
     assert [e.key for e in events if e.kind == "key_pressed"] == [3]
-    assert keypad.led_on["green"] == [3] and controller.leds_on["green"] == [3]
+    assert keypad.led_on["green"] == [3] and controller.led_on["green"] == [3]
 
 
 def test_keypad_alone():
@@ -72,7 +72,7 @@ def test_keypad_alone():
     assert k.state == "off"
     k.power_on(0)
     boot = k.transmit_all()
-    assert boot and powerkey.decode(boot[0], model="pkp2400", node=0x20).nmt_state() == "boot_up"
+    assert boot and powerkey.decode(boot[0], model="pkp2400", node=0x20).reported_nmt_state() == "boot_up"
     assert k.state == "pre_operational" and k.node == 0x20
     k.receive(powerkey.encode("nmt", model="pkp2400", node=0x20, command="start"), 1)
     assert k.state == "operational"

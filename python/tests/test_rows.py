@@ -51,15 +51,15 @@ def _accessors(m, model):
     def update(u):
         return None if u is None else {"map": u.map, "covered": u.covered}
 
-    b = powerkey.backlight(m)
+    b = powerkey.backlight_change(m)
     return {
         "pressed_keys": powerkey.pressed_keys(m),
         "led_on_map": update(powerkey.led_on_map(m)),
         "led_blink_map": update(powerkey.led_blink_map(m, model)),
-        "brightness": powerkey.brightness(m),
-        "backlight": None if b is None else {"level": b.level, "colour": b.colour},
+        "led_brightness_level": powerkey.led_brightness_level(m),
+        "backlight_change": None if b is None else {"level": b.level, "colour": b.colour},
         "node_id_change": powerkey.node_id_change(m),
-        "nmt_state": powerkey.nmt_state(m),
+        "reported_nmt_state": powerkey.reported_nmt_state(m),
     }
 
 

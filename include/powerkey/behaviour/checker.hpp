@@ -494,7 +494,7 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
             w.put("PDO ");
             w.put_hex(d[0], 3);
             w.put("h sent while the keypad is ");
-            const auto s = enum_name(static_cast<canopen::nmt_state>(d[1]));
+            const auto s = to_string(static_cast<canopen::nmt_state>(d[1]));
             w.put(s.empty() ? std::string_view{"not operational"} : s);
             w.put(": it ignores PDOs until an NMT start");
             break;

@@ -217,8 +217,8 @@ public:
         return keypad_state_;
     }
     [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
-    [[nodiscard]] constexpr const leds& leds_on() const noexcept { return on_; }
-    [[nodiscard]] constexpr const leds& leds_blink() const noexcept { return blink_; }
+    [[nodiscard]] constexpr const leds& led_on() const noexcept { return on_; }
+    [[nodiscard]] constexpr const leds& led_blink() const noexcept { return blink_; }
     // The text of the last string read (100Bh ...), up to 16 bytes.
     [[nodiscard]] constexpr std::string_view text() const noexcept { return upload_.text(); }
     // Whether an SDO request is waiting for its reply (the controller never sends a second one).
@@ -678,9 +678,9 @@ private:
             dirty_ |= dirty_on | dirty_blink;
             next_refresh_ = now_ + cfg_.refresh_period;
         }
-        if ((dirty_ & dirty_on) != 0 && send_message(led_on{on_}))
+        if ((dirty_ & dirty_on) != 0 && send_message(powerkey::led_on{on_}))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_on);
-        if ((dirty_ & dirty_blink) != 0 && send_message(led_blink{blink_}))
+        if ((dirty_ & dirty_blink) != 0 && send_message(powerkey::led_blink{blink_}))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_blink);
         if (info_->brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
             (!has_brightness_ || send_message(led_brightness{brightness_})))

@@ -70,9 +70,10 @@ class virtual_keypad {
 public:
     // A keypad of model m, unpowered, with the manual's default settings (PK1000 3, PKP 3) and
     // node id `node` (default 15h) as its stored node id.
-    constexpr explicit virtual_keypad(model m, canopen::node_id node = canopen::default_node_id,
+    constexpr explicit virtual_keypad(powerkey::model m,
+                                      canopen::node_id node = canopen::default_node_id,
                                       keypad_options options = {}) noexcept
-        : model_(powerkey::detail::is_model(m) ? m : model::pk1000),
+        : model_(powerkey::detail::is_model(m) ? m : powerkey::model::pk1000),
           info_(&powerkey::detail::row_of(model_)),
           options_(options) {
         factory_defaults();
@@ -207,7 +208,7 @@ public:
     // --- what it shows ----------------------------------------------------------------------
 
     [[nodiscard]] constexpr run_state state() const noexcept { return state_; }
-    [[nodiscard]] constexpr model which() const noexcept { return model_; }
+    [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     // The node id it answers on now (changes with 2013h at once on the PK1000, section 23; with
     // PKP command 70h at the reboot that follows, PKP 13 h).
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
@@ -258,7 +259,7 @@ private:
             // with no external LEDs.
             value_[idx(object::total_keys)] = info_->keys;
             value_[idx(object::total_leds)] = std::uint32_t{info_->leds} * info_->planes;
-            value_[idx(object::external_leds)] = model_ == model::pkp2200 ? 6u : 0u;
+            value_[idx(object::external_leds)] = model_ == powerkey::model::pkp2200 ? 6u : 0u;
             value_[idx(object::tpdo1_event_timer)] = 0;  // PKP 3: periodic transmission off
         }
     }
@@ -809,7 +810,7 @@ private:
         canopen::node_id from;
     };
 
-    model model_;
+    powerkey::model model_;
     const model_info* info_;  // the model's row
     keypad_options options_;
     std::array<std::uint32_t, object_count> value_{};

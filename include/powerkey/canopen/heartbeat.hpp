@@ -36,7 +36,7 @@ struct powerkey::enum_names<powerkey::canopen::nmt_state> {
 namespace powerkey::canopen {
 
 struct heartbeat_message {
-    static constexpr std::string_view kind = "heartbeat";
+    static constexpr std::string_view kind = "heartbeat_message";
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("state", self.state);

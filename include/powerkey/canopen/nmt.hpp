@@ -41,7 +41,7 @@ struct powerkey::enum_names<powerkey::canopen::nmt_command> {
 namespace powerkey::canopen {
 
 struct nmt_message {
-    static constexpr std::string_view kind = "nmt";
+    static constexpr std::string_view kind = "nmt_message";
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("command", self.command);

@@ -76,7 +76,7 @@ struct expedited_data {
 
 // Write 1..4 bytes (command 2Fh, 2Bh, 27h, 23h).
 struct sdo_download_request {
-    static constexpr std::string_view kind = "sdo_download";
+    static constexpr std::string_view kind = "sdo_download_request";
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
@@ -92,7 +92,7 @@ struct sdo_download_request {
 
 // Read an entry (command 40h).
 struct sdo_upload_request {
-    static constexpr std::string_view kind = "sdo_upload";
+    static constexpr std::string_view kind = "sdo_upload_request";
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);

@@ -11,7 +11,7 @@
 namespace powerkey::canopen {
 
 struct sync_message {
-    static constexpr std::string_view kind = "sync";
+    static constexpr std::string_view kind = "sync_message";
     template <class Self, class F>
     static constexpr void fields(Self&, F&&) {}
     friend constexpr bool operator==(const sync_message&, const sync_message&) noexcept = default;

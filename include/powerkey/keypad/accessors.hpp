@@ -1,18 +1,20 @@
-// powerkey: the common questions, answered from whichever frame carries the answer. Each takes
-// any decoded message and returns the fact when this message states it, nullopt otherwise:
+// powerkey: the common questions, answered from whichever frame carries the answer. Each is named
+// by the fact it answers (never by a message type), takes any decoded message and returns the
+// fact when this message states it, nullopt otherwise:
 //
-//   if (const auto m = decode(f, node, model::pkp2400))
-//       if (const auto keys = pressed_keys(*m); keys && keys->contains(3)) ...
+//   if (const auto msg = decode(f, node, model::pkp2400))
+//       if (const auto keys = pressed_keys(*msg); keys && keys->contains(3)) ...
 //
-//   pressed_keys     key-state PDO, or a read reply of `keys` (2000h sub 1, 6000h)
-//   led_on_map       LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h, PK1000
-//   led_blink_map    and SI 2001h per colour or in pieces): the map, and the LEDs it covers; these
-//                    two take the model, which says which LEDs a frame covers
-//   brightness       LED brightness PDO, a write or read reply of `led_brightness`, command 02h
-//   backlight_of     backlight PDO, writes and read replies of the backlight objects, commands
-//                    03h and 04h: the level and/or the colour the frame sets
-//   node_id_change   a write of `node_id` (2013h) or command 70h
-//   nmt_state_of     a heartbeat or boot-up message
+//   pressed_keys          key-state PDO, or a read reply of `keys` (2000h sub 1, 6000h)
+//   led_on_map            LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h,
+//   led_blink_map         PK1000 and SI 2001h per colour or in pieces): the map, and the LEDs it
+//                         covers; these two take the model, which says which LEDs a frame covers
+//   led_brightness_level  LED brightness PDO, a write or read reply of `led_brightness`, command
+//                         02h
+//   backlight_change      backlight PDO, writes and read replies of the backlight objects,
+//                         commands 03h and 04h: the level and/or the colour the frame sets
+//   node_id_change        a write of `node_id` (2013h) or command 70h
+//   reported_nmt_state    a heartbeat or boot-up message
 // The "default_..." objects and commands set what the keypad shows after the next power on, not
 // now, so they answer none of these.
 #ifndef POWERKEY_KEYPAD_ACCESSORS_HPP
@@ -106,7 +108,7 @@ constexpr std::optional<led_map_update> led_map_of(const message& m, model md,
     return detail::led_map_of<led_blink>(m, md, detail::blink_objects);
 }
 
-[[nodiscard]] constexpr std::optional<level> brightness(const message& m) noexcept {
+[[nodiscard]] constexpr std::optional<level> led_brightness_level(const message& m) noexcept {
     if (const auto* p = std::get_if<led_brightness>(&m)) return p->level;
     auto of = [](object o, const object_value& v) -> std::optional<level> {
         if (o != object::led_brightness) return std::nullopt;
@@ -127,7 +129,8 @@ struct backlight_update {
                                      const backlight_update&) noexcept = default;
 };
 
-[[nodiscard]] constexpr std::optional<backlight_update> backlight_of(const message& m) noexcept {
+[[nodiscard]] constexpr std::optional<backlight_update> backlight_change(
+    const message& m) noexcept {
     if (const auto* p = std::get_if<backlight>(&m)) {
         backlight_update u{p->level, std::nullopt};
         if (p->colour != backlight_colour::keep) u.colour = p->colour;
@@ -160,7 +163,8 @@ struct backlight_update {
     return std::nullopt;
 }
 
-[[nodiscard]] constexpr std::optional<canopen::nmt_state> nmt_state_of(const message& m) noexcept {
+[[nodiscard]] constexpr std::optional<canopen::nmt_state> reported_nmt_state(
+    const message& m) noexcept {
     if (const auto* h = std::get_if<canopen::heartbeat_message>(&m)) return h->state;
     return std::nullopt;
 }
