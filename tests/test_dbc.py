@@ -275,10 +275,11 @@ for model in models:
         checked[k] = checked.get(k, 0) + n
     print(f"{model}.log: " + ", ".join(f"{k} {n}" for k, n in sorted(kinds.items())))
 # ... and together the logs have every kind of frame the DBC describes, and those it does not.
-for k in ("nmt", "sync", "heartbeat", "key_state", "led_on", "led_blink", "led_brightness",
-          "backlight", "encoder_state", "analog_inputs", "encoder_leds", "sdo_read", "sdo_write",
-          "sdo_read_reply", "sdo_write_reply", "command", "sdo_upload_initiate_response",
-          "sdo_segment_request", "sdo_segment_response", "sdo_abort_response"):
+for k in ("nmt_message", "sync_message", "heartbeat_message", "key_state", "led_on", "led_blink",
+          "led_brightness", "backlight", "encoder_state", "analog_inputs", "encoder_leds",
+          "sdo_read", "sdo_write", "sdo_read_reply", "sdo_write_reply", "command",
+          "sdo_upload_initiate_response", "sdo_segment_request", "sdo_segment_response",
+          "sdo_abort_response"):
     if not checked.get(k):
         fail(f"no {k} frame in the sample logs was checked")
 

@@ -202,6 +202,12 @@ std::string hex_h(std::uint64_t v, int digits) {
 
 std::uint32_t cob(function f, node_id node) { return canopen::cob_id(f, node).value(); }
 
+// A message's name in the file: its kind, the name decode --json gives it.
+template <class T>
+std::string name_of() {
+    return std::string(T::kind);
+}
+
 // The bits the frame of `with` has that the frame of `without` lacks: the codec's place for one
 // key, LED or ring LED. 0 when the model refuses either message (a key or LED it lacks).
 std::uint64_t bits_added(const context& c, const keypad_message& with,
@@ -285,7 +291,7 @@ message new_message(std::uint32_t id, std::string name, unsigned dlc, std::strin
 
 void add_nmt(const context& c, database& db) {
     auto m = new_message(
-        canopen::nmt_cob_id.value(), "nmt", 2, controller_node,
+        canopen::nmt_cob_id.value(), name_of<canopen::nmt_message>(), 2, controller_node,
         with_source("NMT node control, 000h, controller to every node: a command and its target "
                     "node (00h: every node); CiA 301 7.2.8.3.1",
                     cite(c, c.src.nmt)));
@@ -304,7 +310,7 @@ void add_nmt(const context& c, database& db) {
 
 void add_sync(const context& c, database& db) {
     db.messages.push_back(new_message(
-        canopen::sync_cob_id.value(), "sync", 0, controller_node,
+        canopen::sync_cob_id.value(), name_of<canopen::sync_message>(), 0, controller_node,
         with_source("SYNC, 080h, no data: the keypad latches the PDOs whose transmission type is "
                     "synchronous (objects 1400h, 1401h, 1800h); CiA 301 7.2.5",
                     cite(c, c.src.sync))));
@@ -312,7 +318,7 @@ void add_sync(const context& c, database& db) {
 
 void add_heartbeat(const context& c, database& db) {
     auto m = new_message(
-        cob(function::heartbeat, c.node), "heartbeat", 1, keypad_node,
+        cob(function::heartbeat, c.node), name_of<canopen::heartbeat_message>(), 1, keypad_node,
         with_source("Boot-up and heartbeat, 700h + node: the keypad's NMT state, every producer "
                     "heartbeat time (object 1017h); the boot-up is state 00h; CiA 301 7.2.8.3.2",
                     cite(c, c.src.heartbeat)));
@@ -329,7 +335,8 @@ void add_heartbeat(const context& c, database& db) {
 void add_key_state(const context& c, database& db) {
     const keypad_message none{key_state{}};
     const auto source = cite(c, c.src.key_state);
-    auto m = new_message(cob(function::tpdo1, c.node), "key_state", dlc_of(c, none), keypad_node,
+    auto m = new_message(cob(function::tpdo1, c.node), name_of<key_state>(), dlc_of(c, none),
+                         keypad_node,
                          with_source("TPDO1, 180h + node, keypad to controller: the pressed keys "
                                      "and the tick timer, sent on a change or as object 1800h "
                                      "sets",
@@ -356,8 +363,8 @@ void add_led_map(const context& c, database& db, bool blink) {
     };
     const keypad_message none = make(leds{});
     auto m = new_message(
-        cob(blink ? function::rpdo2 : function::rpdo1, c.node), blink ? "led_blink" : "led_on",
-        dlc_of(c, none), controller_node,
+        cob(blink ? function::rpdo2 : function::rpdo1, c.node),
+        blink ? name_of<led_blink>() : name_of<led_on>(), dlc_of(c, none), controller_node,
         with_source(blink ? "RPDO2, 300h + node, controller to keypad: which LEDs blink; an LED "
                             "both on (RPDO1) and blinking blinks in alternate mode"
                           : "RPDO1, 200h + node, controller to keypad: which LEDs are on",
@@ -384,7 +391,7 @@ constexpr std::int64_t level_max = level::max;
 
 void add_brightness(const context& c, database& db) {
     const auto source = cite(c, c.src.rpdo3);
-    auto m = new_message(cob(function::rpdo3, c.node), "led_brightness",
+    auto m = new_message(cob(function::rpdo3, c.node), name_of<led_brightness>(),
                          dlc_of(c, keypad_message{led_brightness{}}), controller_node,
                          with_source("RPDO3, 400h + node, controller to keypad: the LED "
                                      "brightness until the next start-up",
@@ -399,11 +406,11 @@ void add_brightness(const context& c, database& db) {
 void add_encoder_leds(const context& c, database& db) {
     const auto source = cite(c, c.src.rpdo3);
     const keypad_message none{encoder_leds{}};
-    auto m =
-        new_message(cob(function::rpdo3, c.node), "encoder_leds", dlc_of(c, none), controller_node,
-                    with_source("RPDO3, 400h + node, controller to keypad: the LEDs of the "
-                                "encoder rings that are on, 1..16 encoder 1, 17..32 encoder 2",
-                                source));
+    auto m = new_message(cob(function::rpdo3, c.node), name_of<encoder_leds>(), dlc_of(c, none),
+                         controller_node,
+                         with_source("RPDO3, 400h + node, controller to keypad: the LEDs of the "
+                                     "encoder rings that are on, 1..16 encoder 1, 17..32 encoder 2",
+                                     source));
     for (unsigned k = 1; k <= 32; ++k) {
         const auto bit = one_bit(bits_added(c, keypad_message{encoder_leds{led_set{k}}}, none));
         if (!bit) continue;
@@ -419,7 +426,7 @@ void add_encoder_leds(const context& c, database& db) {
 void add_backlight(const context& c, database& db) {
     const auto source = cite(c, c.src.backlight);
     auto m = new_message(
-        cob(function::rpdo4, c.node), "backlight", dlc_of(c, keypad_message{backlight{}}),
+        cob(function::rpdo4, c.node), name_of<backlight>(), dlc_of(c, keypad_message{backlight{}}),
         controller_node,
         with_source(c.info.backlight_colour ? "RPDO4, 500h + node, controller to keypad: backlight "
                                               "level and colour until the next start-up"
@@ -478,7 +485,7 @@ void add_encoder_state(const context& c, database& db, unsigned encoder) {
 
 void add_analog_inputs(const context& c, database& db) {
     const auto source = cite(c, c.src.analog);
-    auto m = new_message(cob(function::tpdo4, c.node), "analog_inputs",
+    auto m = new_message(cob(function::tpdo4, c.node), name_of<analog_inputs>(),
                          dlc_of(c, keypad_message{analog_inputs{}}), keypad_node,
                          with_source("TPDO4, 480h + node, keypad to controller: the four 0..5 V "
                                      "inputs, every object 2006h x 10 ms (80 ms by default)",
@@ -765,13 +772,13 @@ void add_sdo(const context& c, database& db) {
         if (r.readable()) {
             name(request,
                  header_of(canopen::encode(c.node, canopen::sdo_upload_request{r.address})),
-                 "sdo_read " + o);
+                 name_of<sdo_read>() + " " + o);
             if (kind == value_kind::string) {
                 // A string comes back in segments (or expedited, 1..4 bytes): only the segmented
                 // reply's size is described.
                 const auto h = header_of(canopen::encode(
                     c.node, canopen::sdo_upload_initiate_response{r.address, true, 0}));
-                name(response, h, "sdo_upload_initiate_response " + o);
+                name(response, h, name_of<canopen::sdo_upload_initiate_response>() + " " + o);
                 sdo_target t{response, h, controller_node};
                 auto size =
                     number(object_signal(o, "size"), 32, 32, 0, 0xFFFF'FFFFll, controller_node,
@@ -785,7 +792,7 @@ void add_sdo(const context& c, database& db) {
                     canopen::expedited_size::make(value_bytes(c, r)).value(), {}};
                 const auto h =
                     header_of(canopen::encode(c.node, canopen::sdo_upload_response{r.address, d}));
-                name(response, h, "sdo_read_reply " + o);
+                name(response, h, name_of<sdo_read_reply>() + " " + o);
                 sdo_target t{response, h, controller_node};
                 add_value(c, t, r);
             }
@@ -797,15 +804,15 @@ void add_sdo(const context& c, database& db) {
                 header_of(canopen::encode(c.node, canopen::sdo_download_request{r.address, d}));
             sdo_target t{request, h, keypad_node};
             if (kind == value_kind::commands) {
-                name(request, h, "command");
+                name(request, h, name_of<command>());
                 add_command(c, t, r);
             } else {
-                name(request, h, "sdo_write " + o);
+                name(request, h, name_of<sdo_write>() + " " + o);
                 add_value(c, t, r);
             }
             name(response,
                  header_of(canopen::encode(c.node, canopen::sdo_download_response{r.address})),
-                 "sdo_write_reply " + o);
+                 name_of<sdo_write_reply>() + " " + o);
         }
     }
     db.messages.push_back(std::move(request));
