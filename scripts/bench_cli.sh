@@ -7,20 +7,22 @@
 #   json       the whole decode --json, output to /dev/null
 #   nlohmann   decode --json with nlohmann::json writing each line (--nlohmann-writer)
 #   roundtrip  decode --json | encode --json
-#   tshark     when tshark is installed: the same frames as a SocketCAN pcap, decoded by
-#              Wireshark's CANopen dissector, fields only; then the ratios tshark / powerkey
+#   tshark     when tshark is installed: the same frames as a SocketCAN pcap (powerkey convert),
+#              decoded by Wireshark's CANopen dissector printing four fields (function code,
+#              node id, SDO index and sub-index) and eight; then the ratios tshark / powerkey
 # Times are CPU seconds (user + system), the best of RUNS=3 runs.
-# Usage: bash scripts/bench_cli.sh [BUILD_DIR] [FRAMES]; builds the tool in Release if needed
+# Usage: bash scripts/bench_cli.sh [BUILD_DIR] [FRAMES]; builds the tool in Release (brings it up to date)
 # (JOBS=1 by default: the build machine is shared).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/bench-cli}
 frames=${2:-1000000}
-if [ ! -x "$build/examples/powerkey" ]; then
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF >/dev/null
-  cmake --build "$build" -j "${JOBS:-1}" --target powerkey_tool >/dev/null
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF \
+    -DPOWERKEY_BUILD_EXAMPLES=OFF -DPOWERKEY_BUILD_WIRESHARK=OFF -DPOWERKEY_BUILD_PYTHON=OFF >/dev/null
 fi
-pk=$build/examples/powerkey
+cmake --build "$build" -j "${JOBS:-1}" --target powerkey_tool >/dev/null  # up to date with the sources
+pk=$build/tools/powerkey/powerkey
 log=$build/million.log
 if [ ! -s "$log" ] || [ "$(wc -l < "$log")" -ne "$frames" ]; then
   grep -hv '^#' examples/logs/pk1000.log |
@@ -47,29 +49,21 @@ echo "nlohmann:  $(seconds "$pk" decode --json --nlohmann-writer "$log") s"
 echo "roundtrip: $(seconds bash -c "'$pk' decode --json '$log' | '$pk' encode --json") s"
 if command -v tshark > /dev/null; then
   pcap=$build/million.pcap
+  # The same frames as a SocketCAN pcap, written by the tool (powerkey convert).
   if [ ! -s "$pcap" ] || [ "$pcap" -ot "$log" ]; then
-    # LINKTYPE_CAN_SOCKETCAN (227): per packet a 16-byte struct can_frame, id big-endian with
-    # the extended-frame flag in bit 31.
-    python3 - "$log" "$pcap" <<'EOF'
-import struct, sys
-out = open(sys.argv[2], 'wb')
-out.write(struct.pack('<IHHiIII', 0xa1b2c3d4, 2, 4, 0, 0, 65535, 227))
-for line in open(sys.argv[1]):
-    t, _, frame = line.split()
-    seconds = float(t.strip('()'))
-    ident, data = frame.split('#')
-    can_id = int(ident, 16) | (0x80000000 if len(ident) == 8 else 0)
-    payload = bytes.fromhex(data)
-    packet = struct.pack('>IBBBB', can_id, len(payload), 0, 0, 0) + payload.ljust(8, b'\0')
-    out.write(struct.pack('<IIII', int(seconds), round((seconds % 1) * 1e6), 16, 16) + packet)
-EOF
+    "$pk" convert --to pcap -o "$pcap" "$log"
   fi
-  tshark_s=$(seconds tshark -r "$pcap" -d can.subdissector,canopen -T fields -e frame.number \
+  # tshark with its CANopen dissector printing the four CANopen fields decode --json writes at
+  # the top level of a frame (function code, node id, SDO index and sub-index), and the heavier
+  # list (frame number, COB-ID, NMT command, PDO bytes too).
+  four=$(seconds tshark -r "$pcap" -d can.subdissector,canopen -T fields -e canopen.function_code \
+    -e canopen.node_id -e canopen.sdo.main_idx -e canopen.sdo.sub_idx)
+  heavy=$(seconds tshark -r "$pcap" -d can.subdissector,canopen -T fields -e frame.number \
     -e can.id -e canopen.function_code -e canopen.node_id -e canopen.nmt_ctrl.cd \
     -e canopen.sdo.main_idx -e canopen.sdo.sub_idx -e canopen.pdo.data.bytes)
-  echo "tshark:    $tshark_s s  (tshark $(tshark --version 2>/dev/null | head -1 | awk '{ print $3 }'), CANopen dissector, -T fields)"
-  awk -v t="$tshark_s" -v x="$text" -v j="$json" \
-    'BEGIN { printf "tshark / text: %.1fx   tshark / json: %.1fx\n", t / x, t / j }'
+  echo "tshark:    $four s four fields, $heavy s eight fields  (tshark $(tshark --version 2>/dev/null | head -1 | awk '{ print $3 }'), CANopen dissector, -T fields)"
+  awk -v t="$four" -v h="$heavy" -v x="$text" -v j="$json" \
+    'BEGIN { printf "tshark / text: %.1fx (eight fields %.1fx)   tshark / json: %.1fx (eight fields %.1fx)\n", t / x, h / x, t / j, h / j }'
 else
   echo "tshark:    not installed (apt-get install tshark for the comparison)"
 fi

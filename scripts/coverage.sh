@@ -12,11 +12,11 @@ llvm_ver=${LLVM_VERSION:-14}
 profdata=$(command -v llvm-profdata-$llvm_ver || command -v llvm-profdata)
 cov=$(command -v llvm-cov-$llvm_ver || command -v llvm-cov)
 
-# Examples on: the suite's tests/test_cli_parts.cpp links the tool's log readers
-# (powerkey_log_formats); only the targets below are built, not the tool.
+# The tool on: the suite's tests/test_cli_parts.cpp links the tool's log readers
+# (powerkey_log_formats); only the targets below are built, not the tool itself.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="-fprofile-instr-generate -fcoverage-mapping" \
-  -DPOWERKEY_BUILD_FUZZ=ON -DPOWERKEY_FUZZ_LIBFUZZER=OFF -DPOWERKEY_BUILD_EXAMPLES=ON >/dev/null
+  -DPOWERKEY_BUILD_FUZZ=ON -DPOWERKEY_FUZZ_LIBFUZZER=OFF -DPOWERKEY_BUILD_TOOL=ON >/dev/null
 # The list may stand on one line or run over several: from its set( to the first ')'.
 targets=($(awk '/^set\(POWERKEY_FUZZ_TARGETS/ {on = 1} on {print; if (/\)/) exit}' fuzz/CMakeLists.txt |
   sed -e 's/set(POWERKEY_FUZZ_TARGETS//' -e 's/)//' | tr -s ' \n' ' '))

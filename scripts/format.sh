@@ -5,6 +5,6 @@ cd "$(dirname "$0")/.."
 if [ $# -gt 0 ]; then
   clang-format-14 -i "$@"
 else
-  find include tests examples bench fuzz wireshark python \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
+  find include tests examples tools bench fuzz wireshark python \( -name '*.hpp' -o -name '*.cpp' \) -print0 |
     xargs -0 clang-format-14 -i
 fi

@@ -1,16 +1,13 @@
 #!/usr/bin/env bash
-# README command 1: installs what is missing (g++, cmake, make) on Debian 12, builds the powerkey
-# tool and decodes a sample log made of the manual's example frames.
+# README command 1: installs what is missing (g++, cmake, make and the tool's libraries) on
+# Debian 12, builds the powerkey tool and decodes a sample log made of the manual's example frames.
 #   bash scripts/run.sh              the PK1000 log
-#   bash scripts/run.sh pkp3500mt    another model: any of the thirteen of examples/logs/
+#   bash scripts/run.sh pkp3500mt    another model: any name --model takes (PKP-3500-MT too);
+#                                    `powerkey models` lists them
+# JOBS=N sets the build's parallel jobs (default: every processor).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-model=${1:-pk1000}
-models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si"
-case " $models " in
-  *" $model "*) ;;
-  *) echo "run.sh: unknown model '$model' (${models// /, })" >&2; exit 2 ;;
-esac
+name=${1:-pk1000}
 missing=()
 for tool in g++ cmake make; do
   command -v "$tool" >/dev/null || missing+=("$tool")
@@ -25,12 +22,22 @@ if [ ${#missing[@]} -gt 0 ]; then
     command -v sudo >/dev/null || { echo "run.sh: ${missing[*]} missing; run as root to install" >&2; exit 1; }
     sudo="sudo"
   fi
+  echo "run.sh: installing ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
   $sudo apt-get update -qq
   $sudo apt-get install -y -qq --no-install-recommends g++ cmake make libcli11-dev \
-    nlohmann-json3-dev zlib1g-dev >/dev/null
+    nlohmann-json3-dev zlib1g-dev
 fi
-cmake -S . -B build/run -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF >/dev/null
-cmake --build build/run -j 2 --target powerkey_tool >/dev/null
+# The tool alone: no tests, examples or plugins to configure.
+configure_log=$(mktemp)
+trap 'rm -f "$configure_log"' EXIT
+cmake -S . -B build/run -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF \
+  -DPOWERKEY_BUILD_EXAMPLES=OFF -DPOWERKEY_BUILD_WIRESHARK=OFF -DPOWERKEY_BUILD_PYTHON=OFF \
+  > "$configure_log" 2>&1 || { cat "$configure_log" >&2; exit 1; }
+echo "run.sh: building the powerkey tool in build/run (a few minutes the first time)"
+cmake --build build/run --target powerkey_tool --parallel "${JOBS:-$(nproc)}"
+pk=./build/run/tools/powerkey/powerkey
+# The model's own name, as the tool reads --model (its error lists the models).
+model=$("$pk" models "$name") || exit 2
 echo "\$ powerkey decode --model $model examples/logs/$model.log"
-./build/run/examples/powerkey decode --model "$model" "examples/logs/$model.log"
+"$pk" decode --model "$model" "examples/logs/$model.log"

@@ -30,6 +30,9 @@ if [ -z "$plugin" ]; then
   echo "tshark.sh: no plugin in $plugins (is wireshark-dev installed?)" >&2
   exit 1
 fi
+# The build log is not needed past here: exec replaces this shell, and its EXIT trap with it.
+rm -f "$log"
+trap - EXIT
 if [ "$(id -u)" -eq 0 ]; then
   export POWERKEY_WIRESHARK_PRELOAD=1
   export LD_PRELOAD="$plugin${LD_PRELOAD:+:$LD_PRELOAD}"

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Tests of `powerkey check` (examples/tool/cmd_check.cpp), registered by examples/CMakeLists.txt:
-#   test_check.sh CHECK_BINARY SOURCE_DIR [SIMULATE_BINARY]
+# Tests of `powerkey check` (tools/powerkey/cmd_check.cpp), registered by tools/powerkey/CMakeLists.txt:
+#   test_check.sh POWERKEY_BINARY SOURCE_DIR
 # The shipped clean session passes; the same session with planted problems gives exactly the
 # lines below, each right after its `# planted: KIND` comment; --json, several files, bad lines
-# and usage behave as documented (docs/controller.md). With the simulate binary, a controller's
-# log merged with the virtual keypad's answers to it passes too.
+# and usage behave as documented (docs/controller.md). A controller's log merged with the virtual
+# keypad's answers to it (powerkey simulate) passes too.
 set -uo pipefail
-check=$1
+pk=$1
 src=$2
-sim=${3:-}
+check() { "$pk" check "$@"; }
+sim() { "$pk" simulate "$@"; }
 logs=$src/examples/logs
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -16,14 +17,14 @@ failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 
 # The clean session: no output, status 0.
-"$check" --model pk1000 "$logs/check-clean.log" >"$tmp/out" 2>"$tmp/err"
+check --model pk1000 "$logs/check-clean.log" >"$tmp/out" 2>"$tmp/err"
 status=$?
 [ $status -eq 0 ] || fail "clean: exit status $status"
 [ -s "$tmp/out" ] && fail "clean: output: $(cat "$tmp/out")"
 [ -s "$tmp/err" ] && fail "clean: errors: $(cat "$tmp/err")"
 
 # The planted problems: one line per problem, in line order, status 1.
-"$check" --model pk1000 "$logs/check-problems.log" >"$tmp/out" 2>"$tmp/err"
+check --model pk1000 "$logs/check-problems.log" >"$tmp/out" 2>"$tmp/err"
 status=$?
 [ $status -eq 1 ] || fail "problems: exit status $status"
 cat >"$tmp/want" <<'OUT'
@@ -51,38 +52,37 @@ done >"$tmp/planted"
 [ "$(grep -c '^# planted: ' "$logs/check-problems.log")" -eq 9 ] || fail "not one plant per kind"
 
 # --json: one object per problem.
-"$check" --model pk1000 --json "$logs/check-problems.log" >"$tmp/json"
+check --model pk1000 --json "$logs/check-problems.log" >"$tmp/json"
 [ "$(wc -l <"$tmp/json")" -eq 9 ] || fail "json: $(wc -l <"$tmp/json") lines"
 head -1 "$tmp/json" | grep -qx '{"line":10,"kind":"segment_size","detail":\[9,7,4107\],"text":"segmented upload of 100Bh announced 9 bytes and sent 7"}' ||
   fail "json: $(head -1 "$tmp/json")"
 
 # Several files: FILE:LINE; standard input; bare frames (no time).
-"$check" --model pk1000 "$logs/check-clean.log" "$logs/check-problems.log" >"$tmp/out"
+check --model pk1000 "$logs/check-clean.log" "$logs/check-problems.log" >"$tmp/out"
 [ "$(wc -l <"$tmp/out")" -eq 9 ] && grep -q "^$logs/check-problems.log:10: segment_size: " "$tmp/out" ||
   fail "several files: $(head -2 "$tmp/out")"
-printf '715#00\n215#0100000000000000\n' | "$check" --model pkp2400 >"$tmp/out"
+printf '715#00\n215#0100000000000000\n' | check --model pkp2400 >"$tmp/out"
 [ $? -eq 1 ] && grep -qx '2: pdo_not_operational: PDO 215h sent while the keypad is pre_operational: it ignores PDOs until an NMT start' "$tmp/out" ||
   fail "stdin: $(cat "$tmp/out")"
-printf '715#00\n000#0116\n216#0100000000000000\n' | "$check" --model pkp2400 --node 0x16 >"$tmp/out"
+printf '715#00\n000#0116\n216#0100000000000000\n' | check --model pkp2400 --node 0x16 >"$tmp/out"
 [ $? -eq 1 ] && grep -q '^1: ' "$tmp/out" && fail "--node 0x16: the boot-up of 15h is not ours"
 [ -s "$tmp/out" ] && fail "--node: $(cat "$tmp/out")"
 
 # Bad lines are reported on standard error and make the status 1; usage errors 2.
-printf '(1700000000.000000) can0 715#00\nnonsense\n' | "$check" --model pk1000 >/dev/null 2>"$tmp/err"
-[ $? -eq 1 ] && grep -q '^powerkey: -:2: ' "$tmp/err" || fail "bad line: $(cat "$tmp/err")"
-"$check" "$logs/check-clean.log" >/dev/null 2>&1
+printf '(1700000000.000000) can0 715#00\nnonsense\n' | check --model pk1000 >/dev/null 2>"$tmp/err"
+[ $? -eq 1 ] && grep -qx "powerkey: <stdin>:2: not a frame (expected ID#DATA or a candump line): 'nonsense'" "$tmp/err" ||
+  fail "bad line: $(cat "$tmp/err")"
+check "$logs/check-clean.log" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "no --model: not a usage error"
-"$check" --model pk9999 "$logs/check-clean.log" >/dev/null 2>&1
+check --model pk9999 "$logs/check-clean.log" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "unknown model: not a usage error"
-"$check" --model pk1000 --node 200 "$logs/check-clean.log" >/dev/null 2>&1
+check --model pk1000 --node 200 "$logs/check-clean.log" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "node 200: not a usage error"
 
 # A controller's log (the simulate sample) with the virtual keypad's answers merged in by time.
-if [ -n "$sim" ]; then
-  "$sim" --model pk1000 "$logs/session-pk1000.log" >"$tmp/keypad" || fail "simulate failed"
-  grep -v '^#' "$logs/session-pk1000.log" | cat - "$tmp/keypad" | sort -s -k1,1 >"$tmp/merged"
-  "$check" --model pk1000 "$tmp/merged" >"$tmp/out" || fail "controller + simulated keypad: $(cat "$tmp/out")"
-fi
+sim --model pk1000 "$logs/session-pk1000.log" >"$tmp/keypad" || fail "simulate failed"
+grep -v '^#' "$logs/session-pk1000.log" | cat - "$tmp/keypad" | sort -s -k1,1 >"$tmp/merged"
+check --model pk1000 "$tmp/merged" >"$tmp/out" || fail "controller + simulated keypad: $(cat "$tmp/out")"
 
 [ $failed -eq 0 ] && echo "check: all tests passed"
 exit $failed

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tests of the powerkey tool (registered by examples/CMakeLists.txt):
+# Tests of the powerkey tool (registered by tools/powerkey/CMakeLists.txt):
 #   test_cli.sh POWERKEY_BINARY SOURCE_DIR [SAMPLE_LOGS_BINARY]
 # Every sample log (every manual frame, per model) decodes without an error and comes back byte
 # for byte through `decode --json | encode --json`; bad input gets a one-line error naming the
@@ -202,7 +202,7 @@ usage "powerkey: The following argument was not expected: frobnicate (powerkey h
 
 # help says the exit codes and the input forms.
 "$pk" help > "$tmp/help" || fail "help exit status"
-for s in "Exit status: 0" "  1 bad input" "  2 usage" "powerkey simulate --model M" "powerkey check --model M" "Vector ASC, PEAK TRC 1.x and 2.x, python-can CSV, Vector BLF" "195#09.00.00.00.12"; do
+for s in "Exit status (every subcommand):" "  0 all input read" "  1 bad input" "  2 usage" "powerkey simulate --model M" "powerkey check --model M" "Vector ASC, PEAK TRC 1.x and 2.x, python-can CSV, Vector BLF" "195#09.00.00.00.12"; do
   grep -qF "$s" "$tmp/help" || fail "help lacks '$s'"
 done
 
@@ -243,12 +243,12 @@ encode_error() {
 encode_error "powerkey: encode: led_on: red: '5' is more than a pkp2200 takes (1..4)" --model pkp2200 led-on red=5
 encode_error "powerkey: encode: led_brightness: level: 99 is outside 00h..3Fh" led-brightness level=99
 encode_error "powerkey: encode: sdo_write: level: 99 is outside 00h..3Fh" sdo-write object=led_brightness level=99
-encode_error "powerkey: encode: nmt: command: unknown name 'jump' (start, stop, pre_operational, reset_node, reset_communication, legacy_stop)" nmt command=jump
+encode_error "powerkey: encode: nmt_message: command: unknown name 'jump' (start, stop, pre_operational, reset_node, reset_communication, legacy_stop)" nmt command=jump
 encode_error "powerkey: encode: no field 'purple' in led_on (fields: red, green, blue)" led-on purple=1
 encode_error "powerkey: encode: led_on: red: '29' is more than a pk1000 takes (1..28)" led-on red=29
 encode_error "powerkey: encode: encoder_state is not a message of a pk1000 (powerkey list --model pk1000 shows its messages)" encoder-state ticks=3
 check_encode 2BA#8305000000000000 --model pkp3500mt --node 0x3A encoder-state counterclockwise=yes ticks=3 counter=5
-encode_error "powerkey: encode: nmt: target: 128 is outside 00h..7Fh" nmt target=128
+encode_error "powerkey: encode: nmt_message: target: 128 is outside 00h..7Fh" nmt target=128
 
 # encode --json --node N re-targets a logged message to node N (a log replayed to another keypad).
 "$pk" decode --json "$logs/pk1000.log" 2> /dev/null | head -12 > "$tmp/json12"
@@ -314,6 +314,84 @@ done
 for m in pkp2200 pkp2600; do
   cmp -s <("$pk" list --model $m) <("$pk" list --model pkp2400) || fail "list --model $m differs from pkp2400 (docs/cli.md says they match)"
 done
+
+# --- one program: every subcommand reads, reports and ends alike -----------------------------------
+
+# The table of docs/cli.md lists exactly the subcommands of powerkey help.
+awk '/^<!-- subcommands -->$/ { on = 1; next } on && /^$/ { exit } on && /^\| `/ { print }' "$src/docs/cli.md" |
+  sed -E 's/^\| `([a-z-]+)`.*/\1/' | sort > "$tmp/doc_subs"
+"$pk" help | awk '/^$/ { block++; next } block == 1 { print $1 }' | sort > "$tmp/help_subs"
+[ -s "$tmp/doc_subs" ] && diff "$tmp/help_subs" "$tmp/doc_subs" > /dev/null ||
+  fail "docs/cli.md's table of subcommands differs from powerkey help: $(diff "$tmp/help_subs" "$tmp/doc_subs" | paste -sd' ')"
+# Each subcommand that reads logs: the same words and statuses for the same input. (The docs
+# table says which read logs; encode --json reads JSON lines through the same file reading.)
+readers=$(awk '/^<!-- subcommands -->$/ { on = 1; next } on && /^$/ { exit } on && /^\| `[a-z]+` \| logs/ { print }' "$src/docs/cli.md" |
+  sed -E 's/^\| `([a-z]+)`.*/\1/')
+[ "$(echo $readers)" = "decode simulate check convert" ] || fail "the log readers of the table: $readers"
+run_sub() {  # run_sub SUBCOMMAND ARGS... with the model a subcommand needs
+  local sub=$1; shift
+  case $sub in
+    simulate | check) "$pk" $sub --model pk1000 "$@" ;;
+    *) "$pk" $sub "$@" ;;
+  esac
+}
+{ printf '\xef\xbb\xbf'; cat "$logs/check-clean.log"; } > "$tmp/bom.log"
+printf '%s\n' '(1700000000.000000) can0 715#00' "$(printf '615#40 \x1b]0;pwned\x07')" > "$tmp/hostile.log"
+{ echo '(1700000000.000000) can0 715#00'; seq 1 1000 | sed 's/^/garbage line /'; } > "$tmp/many.log"
+for sub in $readers; do
+  run_sub $sub "$tmp/missing.log" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && [ "$(head -1 "$tmp/err")" = "powerkey: $tmp/missing.log: No such file or directory" ] ||
+    fail "$sub: a missing file: status $rc, '$(head -1 "$tmp/err")'"
+  run_sub $sub "$tmp/bom.log" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 0 ] && [ ! -s "$tmp/err" -o $sub = decode ] || fail "$sub: a byte-order mark: status $rc, $(head -2 "$tmp/err")"
+  run_sub $sub "$tmp/hostile.log" > "$tmp/out" 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/hostile.log:2: unexpected text after the frame: '615#40 \x1B]0;pwned\x07'" "$tmp/err" ||
+    fail "$sub: a hostile line: status $rc, $(head -2 "$tmp/err")"
+  LC_ALL=C grep -q $'\x1b' "$tmp/out" "$tmp/err" && fail "$sub: an escape character of the input reached the terminal"
+  printf 'nonsense\n715#00\n' | run_sub $sub > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && grep -qxF "powerkey: <stdin>:1: not a frame (expected ID#DATA or a candump line): 'nonsense'" "$tmp/err" ||
+    fail "$sub: standard input: status $rc, $(head -2 "$tmp/err")"
+  run_sub $sub "$tmp/many.log" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && [ "$(grep -c "garbage line" "$tmp/err")" -eq 3 ] &&
+    grep -qxF "powerkey: $tmp/many.log: 997 more lines like that (not a frame (expected ID#DATA or a candump line))" "$tmp/err" ||
+    fail "$sub: a thousand bad lines: status $rc, $(wc -l < "$tmp/err") lines"
+  printf 'LOGG\x90\x00\x00\x00' | run_sub $sub > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && [ "$(head -1 "$tmp/err")" = "powerkey: <stdin>: the BLF file ends inside its header (truncated?)" ] ||
+    fail "$sub: a cut BLF file: status $rc, $(head -2 "$tmp/err")"
+done
+# The same model error for every subcommand that takes --model; none for those that do not.
+want_model="powerkey: --model: unknown model 'pkp2401' (pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, pkp1600si) (powerkey help shows the usage)"
+for sub in "encode nmt" list simulate check; do
+  "$pk" $sub --model pkp2401 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && [ "$(cat "$tmp/err")" = "$want_model" ] || fail "$sub --model pkp2401: status $rc, '$(cat "$tmp/err")'"
+done
+for sub in convert models; do
+  "$pk" $sub --model pk1000 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && grep -q "^powerkey: $sub takes no --model or --node" "$tmp/err" || fail "$sub --model: status $rc, $(cat "$tmp/err")"
+done
+for sub in simulate check; do
+  "$pk" $sub < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && grep -q "^powerkey: $sub needs --model M (pk1000, " "$tmp/err" || fail "$sub without --model: status $rc, $(cat "$tmp/err")"
+done
+# encode --json: the same file reading and the same cap.
+"$pk" encode --json "$tmp/missing.log" > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && [ "$(cat "$tmp/err")" = "powerkey: $tmp/missing.log: No such file or directory" ] || fail "encode --json: a missing file: $rc $(cat "$tmp/err")"
+seq 1 1000 | sed 's/^/garbage line /' | "$pk" encode --json > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && [ "$(wc -l < "$tmp/err")" -eq 4 ] && grep -qxF "powerkey: <stdin>: 997 more lines like that (not a JSON object)" "$tmp/err" ||
+  fail "encode --json: a thousand bad lines: $rc $(tail -1 "$tmp/err")"
+"$pk" decode --json "$logs/pk1000.log" 2> /dev/null > "$tmp/all.json"
+{ printf '\xef\xbb\xbf'; head -3 "$tmp/all.json"; } > "$tmp/bom.json"
+"$pk" encode --json "$tmp/bom.json" > "$tmp/out" 2> "$tmp/err" && [ "$(wc -l < "$tmp/out")" -eq 3 ] ||
+  fail "encode --json: a byte-order mark: $(cat "$tmp/err")"
+# Every subcommand has its help, and a help naming no subcommand is a usage error.
+for sub in $(cat "$tmp/help_subs"); do
+  "$pk" help $sub | head -1 | grep -q "^usage: powerkey $sub" || fail "powerkey help $sub"
+  "$pk" $sub --help | head -1 | grep -q "^usage: powerkey $sub" || fail "powerkey $sub --help"
+done
+"$pk" help frobnicate > /dev/null 2>&1; [ $? -eq 2 ] || fail "help of an unknown subcommand"
+# models: the model table, and the one name a name stands for.
+[ "$("$pk" models | awk '{ print $1 }' | paste -sd' ')" = "$models" ] || fail "powerkey models: $("$pk" models | head -3)"
+[ "$("$pk" models PKP-3500-MT)" = pkp3500mt ] || fail "powerkey models PKP-3500-MT"
 
 [ $failed -eq 0 ] && echo "cli: all checks passed"
 exit $failed

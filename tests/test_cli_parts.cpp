@@ -1,11 +1,14 @@
-// The pieces of the powerkey tool (examples/tool/): the log readers, the field values both ways,
-// numbers, model names and escaping. The tool itself is tested end to end by tests/test_cli.sh,
-// tests/test_log_formats.sh (files of the real writers) and tests/test_cli_live.sh.
+// The pieces of the powerkey tool (tools/powerkey/): the log readers, the field values both ways,
+// numbers, model names, escaping, and why encode refuses a message. The tool itself is tested end
+// to end by tests/test_cli.sh, tests/test_log_formats.sh (files of the real writers) and
+// tests/test_cli_live.sh.
 #include <doctest/doctest.h>
 
-#include "../examples/tool/common.hpp"
-#include "../examples/tool/field_value.hpp"
-#include "../examples/tool/log_formats.hpp"
+#include "../tools/powerkey/common.hpp"
+#include "../tools/powerkey/field_value.hpp"
+#include "../tools/powerkey/log_formats.hpp"
+#include "../tools/powerkey/numbers.hpp"
+#include "../tools/powerkey/refusal.hpp"
 
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/names.hpp>
@@ -32,6 +35,18 @@ struct collect final : tool::logs::sink {
     }
     void problem(std::size_t line, std::string_view why, std::string_view) override {
         got.push_back("!" + std::to_string(line) + " " + std::string(why));
+    }
+    // Remote and CAN FD frames: "R id length" / "F id data [brs]", then the time and line.
+    void other(const tool::logs::other_record& r) override {
+        std::string s = r.kind == tool::logs::skip::remote ? "R " : "F ";
+        tool::append_hex(s, r.id, r.extended ? 8 : 3);
+        if (r.kind == tool::logs::skip::remote) s += " " + std::to_string(r.length);
+        if (r.kind == tool::logs::skip::fd) {
+            s += " ";
+            tool::append_hex_bytes(s, r.data.data(), r.data.size());
+            if (r.bit_rate_switch) s += " brs";
+        }
+        got.push_back(s + " " + std::string(r.time) + " " + std::to_string(r.line));
     }
 };
 
@@ -67,10 +82,19 @@ const line_row line_rows[] = {
     {"   ", ""},
     {"# a comment", ""},
     {"// a comment", ""},
-    {"195#R", ""},         // remote: counted, not a problem
-    {"195##0112233", ""},  // CAN FD
-    {"  can0  195   [12]  00 01 02 03 04 05 06 07 08 09 0A 0B", ""},
-    {"  can0  615   [8]  remote request", ""},
+    {"195#R", "R 195 0  1"},  // remote: passed on, not a problem
+    {"195#R5", "R 195 5  1"},
+    {"(2.5) can0 195#R", "R 195 0 2.5 1"},
+    {"195#R9", "!1 malformed remote frame (expected ID#R or ID#R and a length 0..8)"},
+    {"195##0112233", "F 195 112233  1"},  // CAN FD: flags digit, then the data
+    {"195##1112233", "F 195 112233 brs  1"},
+    {"195##", "!1 malformed CAN FD frame (expected ID##FLAGS DATA)"},
+    {"  can0  195   [12]  00 01 02 03 04 05 06 07 08 09 0A 0B",
+     "F 195 000102030405060708090A0B  1"},
+    {"  can0  195   [08]  00 01 02 03 04 05 06 07", "F 195 0001020304050607  1"},
+    {"  can0  615   [8]  remote request", "R 615 8  1"},
+    {"(x) can0 195#00", "!1 malformed timestamp (expected seconds like 1700000000.000000)"},
+    {"(1.5.5) can0 195#00", "!1 malformed timestamp (expected seconds like 1700000000.000000)"},
     {"(1) can0 20000080#0000000000000000", ""},  // an error frame
     {"not a frame", "!1 not a frame (expected ID#DATA or a candump line)"},
     {"195#090", "!1 odd number of hex digits in the data"},
@@ -79,7 +103,7 @@ const line_row line_rows[] = {
     {"(1700000000.000000 can0 195#00", "!1 unclosed timestamp"},
     {"(1) can0 195#00 trailing", "!1 unexpected text after the frame"},
     {"  can0  195   [2]  09 00 00", "!1 the [length] does not match the data bytes"},
-    {"  can0  195   [9]  00 00 00 00 00 00 00 00 00", ""},  // a length above 8 is CAN FD
+    {"  can0  195   [9]  00 00 00 00 00 00 00 00 00", "F 195 000000000000000000  1"},
     {"  can0  195   [1]  0G", "!1 data bytes must be two hex digits each"},
     {"  can0  1950   [1]  00", "!1 identifier of other than 3 or 8 hex digits"},
 };
@@ -113,13 +137,14 @@ TEST_CASE("the forms are told apart by content, in any chunks") {
         CHECK(read_all(asc, chunk) ==
               std::vector<std::string>{"195#0900000012 0.500000 can0 4",
                                        "18EF2100#041B8000FFFFFFFF 1.000000 can1 5",
-                                       "080# 2.000000 can0 8"});
+                                       "R 615 8 1.500000 6", "080# 2.000000 can0 8"});
     }
     const std::string trc21 =
         ";$FILEVERSION=2.1\r\n;$COLUMNS=N,O,T,B,I,d,R,L,D\r\n"
         "      1      1500.250 DT  1     0195 Rx -  5    09 00 00 00 12\r\n"
         "      2      1600.000 RR  1     0615 Rx -  8\r\n";
-    CHECK(read_all(trc21) == std::vector<std::string>{"195#0900000012 1.500250 can0 3"});
+    CHECK(read_all(trc21) ==
+          std::vector<std::string>{"195#0900000012 1.500250 can0 3", "R 615 8 1.600000 4"});
     const std::string trc10 = "     1)       100 0195 5 09 00 00 00 12\n";
     CHECK(read_all(trc10) == std::vector<std::string>{"195#0900000012 0.100000  1"});
     const std::string csv =
@@ -127,7 +152,11 @@ TEST_CASE("the forms are told apart by content, in any chunks") {
         "1700000000.5,0x195,0,0,0,5,CQAAABI=\n1700000001.0,0x18ef2100,1,0,0,8,BBuAAP////8=\n"
         "1700000001.5,0x615,0,1,0,8,\n";
     CHECK(read_all(csv) == std::vector<std::string>{"195#0900000012 1700000000.5  2",
-                                                    "18EF2100#041B8000FFFFFFFF 1700000001.0  3"});
+                                                    "18EF2100#041B8000FFFFFFFF 1700000001.0  3",
+                                                    "R 615 8 1700000001.5 4"});
+    // Python's repr of a small float: read, and written out as seconds.
+    CHECK(read_all("timestamp,arbitration_id,extended,remote,error,dlc,data\n"
+                   "5e-05,0x195,0,0,0,1,AQ==\n") == std::vector<std::string>{"195#01 0.000050  2"});
     CHECK(read_all("\xEF\xBB\xBF"
                    "195#01\n") == std::vector<std::string>{"195#01   1"});
 }
@@ -172,6 +201,59 @@ TEST_CASE("base64 of python-can's CSV") {
     CHECK(tool::logs::base64_decode("", out));
     CHECK(out.empty());
     CHECK_FALSE(tool::logs::base64_decode("AB$=", out));
+}
+
+TEST_CASE("seconds and log digits: the one number reader") {
+    CHECK(tool::parse_seconds("1700000000.000000") == 1'700'000'000'000'000);
+    CHECK(tool::parse_seconds("0.42") == 420'000);
+    CHECK(tool::parse_seconds("3") == 3'000'000);
+    CHECK(tool::parse_seconds(".5") == 500'000);
+    CHECK(tool::parse_seconds("1.1234567") == 1'123'456);  // past microseconds: dropped
+    CHECK(tool::parse_seconds("") == std::nullopt);
+    CHECK(tool::parse_seconds(".") == std::nullopt);
+    CHECK(tool::parse_seconds("-1") == std::nullopt);
+    CHECK(tool::parse_seconds("1e3") == std::nullopt);
+    CHECK(tool::parse_seconds("1.2.3") == std::nullopt);
+    CHECK(tool::parse_seconds("99999999999999999999") == std::nullopt);
+    std::uint32_t v = 0;
+    CHECK((tool::parse_digits("7FF", v) && v == 0x7FF));
+    CHECK((tool::parse_digits("1FFFFFFF", v) && v == 0x1FFF'FFFF));
+    CHECK_FALSE(tool::parse_digits("100000000", v));  // 9 hex digits
+    CHECK((tool::parse_digits("4294967295", v, 10) && v == 0xFFFF'FFFFu));
+    CHECK_FALSE(tool::parse_digits("4294967296", v, 10));
+    CHECK_FALSE(tool::parse_digits("0x7F", v));
+    CHECK(tool::hex_digit('f') == 15);
+    CHECK(tool::hex_digit('g') == -1);
+}
+
+TEST_CASE("message kinds as people write them") {
+    CHECK(tool::kind_name("led-on") == "led_on");
+    CHECK(tool::kind_name("pk1000_led_on") == "led_on");
+    CHECK(tool::kind_name("pkp_led_on") == "led_on");
+    CHECK(tool::kind_name("sdo-segment-response") == "sdo_segment_response");
+}
+
+TEST_CASE("why encode refuses a message: the field, and what the model takes") {
+    const auto node = canopen::default_node_id;
+    const auto none = [](auto&) {};
+    // A key above a PKP-2200's four: the field, and 1..4.
+    const message red5 = led_on{leds{led_set{5}, {}, {}}};
+    auto why = tool::explain_refusal(red5, model::pkp2200, node, none);
+    CHECK(why.kind == tool::refusal::what::field);
+    CHECK(why.field == "red");
+    CHECK(why.most == 4);
+    why = tool::explain_refusal(message{led_on{leds{led_set{29}, {}, {}}}}, model::pk1000, node,
+                                none);
+    CHECK((why.kind == tool::refusal::what::field && why.field == "red" && why.most == 28));
+    // A message the model has not: the PK1000 has no encoders.
+    why = tool::explain_refusal(message{encoder_state{}}, model::pk1000, node, none);
+    CHECK(why.kind == tool::refusal::what::not_for_model);
+    // What list shows: the models that speak a kind.
+    CHECK(tool::speaks(encoder_state{}, model::pkp3500mt, node));
+    CHECK_FALSE(tool::speaks(encoder_state{}, model::pk1000, node));
+    CHECK(tool::speaks(command{}, model::pkp2400, node));  // its default key 0 does not encode
+    CHECK_FALSE(tool::speaks(command{}, model::pk1000, node));
+    CHECK(tool::speaks(canopen::sdo_upload_initiate_response{}, model::pk1000, node));
 }
 
 TEST_CASE("numbers on the command line: decimal, 0x and h") {

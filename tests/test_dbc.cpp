@@ -1,10 +1,10 @@
-// The DBC writer (examples/tool/dbc.hpp) against the library, for every model: what a DBC reader
+// The DBC writer (tools/powerkey/dbc.hpp) against the library, for every model: what a DBC reader
 // would not check (names, overlaps, multiplexor values) and what the library decides (each SDO
 // multiplexor value is the request or reply it names; each number's range is the one the decoder
 // accepts). tests/test_dbc.py reads the files with canmatrix and compares every sample-log frame.
 #include <doctest/doctest.h>
 
-#include "../examples/tool/dbc.hpp"
+#include "../tools/powerkey/dbc.hpp"
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/keypad/codec.hpp>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tests of `powerkey export dbc` (registered by examples/CMakeLists.txt):
+# Tests of `powerkey export dbc` (registered by tools/powerkey/CMakeLists.txt):
 #   test_dbc.sh POWERKEY_BINARY SOURCE_DIR
 # The checked-in DBCs (examples/dbc/) are what the tool writes now; the output is the same bytes
 # every time and whatever the order of the options; option errors are usage errors; and the files
@@ -47,14 +47,16 @@ usage() {
 # Every model of the table, as decode lists them for an unknown model (without its "auto").
 models=$("$pk" decode --model none /dev/null 2>&1 | sed -n 's/.*unknown model .none. (\(.*\), auto).*/\1/p')
 [ -n "$models" ] || fail "decode --model none lists no models"
-usage "powerkey: export dbc: --model is required ($models) (powerkey help shows the usage)" export dbc
-usage "powerkey: export: say what to export (dbc) (powerkey help shows the usage)" export
+usage "powerkey: export needs --model M ($models) (powerkey help shows the usage)" export dbc
+usage "powerkey: export: say what to export (dbc) (powerkey help shows the usage)" export --model pkp2400
 usage "powerkey: The following argument was not expected: csv (powerkey help shows the usage)" export csv --model pkp2400
 usage "powerkey: --model: unknown model 'auto' ($models) (powerkey help shows the usage)" export dbc --model auto
 usage "powerkey: --node: expected a node id 1..127 (0x15, 15h or 21), got '128' (powerkey help shows the usage)" export dbc --model pkp2400 --node 128
-usage "powerkey: export dbc has no --json (powerkey help shows the usage)" export dbc --model pkp2400 --json
+usage "powerkey: The following argument was not expected: --json (powerkey help shows the usage)" export dbc --model pkp2400 --json
 usage "powerkey: The following argument was not expected: out.dbc (powerkey help shows the usage)" export dbc --model pkp2400 out.dbc
 "$pk" help | grep -qF "powerkey export dbc --model M [--node N]" || fail "help lacks export dbc"
+"$pk" help export | grep -qF "usage: powerkey export dbc --model M [--node N]" || fail "help export"
+"$pk" export dbc -h | cmp -s - <("$pk" help export) || fail "export dbc -h differs from help export"
 
 # A real DBC reader: canmatrix, for /usr/bin/python3 (scripts/deps.sh installs python3-canmatrix).
 py=/usr/bin/python3

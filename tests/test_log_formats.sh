@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every log form decodes frame for frame like its candump equivalent (registered by
-# examples/CMakeLists.txt as cli_log_formats):
+# Every log form reads like its candump equivalent, in every subcommand (registered by
+# tools/powerkey/CMakeLists.txt as cli_log_formats):
 #   test_log_formats.sh POWERKEY_BINARY SOURCE_DIR
 # The files are written at test time by the real writers: Debian's python3-can (ASC, BLF, TRC 1.0
 # and 2.1, CSV, candump log; /usr/bin/python3, not a python on PATH that may lack the package)
@@ -18,7 +18,8 @@ fail() { echo "FAIL: $*"; failed=1; }
 py=/usr/bin/python3
 
 # id, data and kind of every decoded frame: what must agree between two forms of one log.
-kinds() { "$pk" decode --json --model "$2" "$1" 2> /dev/null | sed -E 's/.*"id":"([0-9A-F]*)","ext":(true|false),"data":"([0-9A-F]*)".*"kind":"([a-z0-9_]*)".*/\1#\3 \4/; s/.*"id":"([0-9A-F]*)","ext":(true|false),"data":"([0-9A-F]*)".*"error":"([a-z_]*)".*/\1#\3 error:\4/'; }
+kind_of_line='s/.*"id":"([0-9A-F]*)","ext":(true|false),"data":"([0-9A-F]*)".*"kind":"([a-z0-9_]*)".*/\1#\3 \4/; s/.*"id":"([0-9A-F]*)","ext":(true|false),"data":"([0-9A-F]*)".*"error":"([a-z_]*)".*/\1#\3 error:\4/'
+kinds() { "$pk" decode --json --model "$2" "$1" 2> /dev/null | sed -E "$kind_of_line"; }
 
 # The reference: the frames of every sample log, as candump -l lines, one log per model.
 for m in pk1000 pkp2200 pkp2400 pkp2600; do
@@ -26,6 +27,41 @@ for m in pk1000 pkp2200 pkp2400 pkp2600; do
   kinds "$tmp/$m.ref.log" $m > "$tmp/$m.want"
   [ "$(wc -l < "$tmp/$m.want")" -gt 50 ] || fail "$m: reference decode too short"
 done
+# Two controller sessions of a PK1000, for check and simulate: one with a planted problem of
+# each kind, and the controller's side of a session.
+grep -v '^#' "$src/examples/logs/check-problems.log" > "$tmp/problems.ref.log"
+grep -v '^#' "$src/examples/logs/session-pk1000.log" > "$tmp/session.ref.log"
+model_of() { case $1 in problems | session) echo pk1000 ;; *) echo "$1" ;; esac; }
+
+# What each subcommand makes of a log, in a form that does not depend on the form of the log:
+# line numbers and the time origin differ between forms, the frames, kinds and problems do not.
+#   decode    id#data and kind (or error) of every frame, and the exit status
+#   check     the kind of every problem found, and the exit status
+#   simulate  the keypad's frames with their time from its boot-up in ms, and the exit status
+#   convert   the data frames of the candump log it writes, and the exit status
+# Each file a real writer made must give the same verdict as its candump reference.
+verdict() {
+  local sub=$1 file=$2 model=$3
+  case $sub in
+    decode) "$pk" decode --json --model "$model" "$file" 2> /dev/null | sed -E "$kind_of_line" ;;
+    check) "$pk" check --model "$model" "$file" 2> /dev/null | sed -E 's/^[0-9]+: ([a-z_]+): .*/\1/' ;;
+    simulate) "$pk" simulate --model "$model" "$file" 2> /dev/null |
+      awk '{ t = substr($1, 2, length($1) - 2); if (NR == 1) t0 = t; printf "%d %s\n", (t - t0) * 1000 + 0.5, $3 }' ;;
+    convert) "$pk" convert "$file" 2> /dev/null | awk '$3 !~ /#R|##/ { print $3 }' ;;
+  esac
+  echo "status ${PIPESTATUS[0]}"
+}
+subcommands="decode check simulate convert"
+same_verdicts() {  # same_verdicts FILE REF WRITER
+  local file=$1 ref=$2 writer=$3 model sub
+  model=$(model_of "$ref")
+  for sub in $subcommands; do
+    [ -s "$tmp/$ref.$sub.want" ] || verdict $sub "$tmp/$ref.ref.log" "$model" > "$tmp/$ref.$sub.want"
+    verdict $sub "$file" "$model" > "$tmp/got.$sub"
+    diff "$tmp/$ref.$sub.want" "$tmp/got.$sub" > "$tmp/diff" ||
+      fail "$sub on $(basename "$file") ($writer) differs from its candump form: $(head -4 "$tmp/diff" | paste -sd' ')"
+  done
+}
 
 # --- python-can -------------------------------------------------------------------------------
 if [ -x "$py" ] && "$py" -c 'import can' 2> /dev/null; then
@@ -60,10 +96,18 @@ for m in msgs:
     w.on_message_received(m)
 w.stop()
 EOF
+  for m in problems session; do
+    for ext in asc blf trc trc10 csv log; do
+      f="$tmp/$m.$ext"
+      "$py" "$tmp/write.py" "$tmp/$m.ref.log" "$f" 2> "$tmp/py.err" || { fail "python-can $ext: $(cat "$tmp/py.err")"; continue; }
+      same_verdicts "$f" $m "python-can"
+    done
+  done
   for m in pk1000 pkp2200 pkp2400 pkp2600; do
     for ext in asc blf trc trc10 csv log; do
       f="$tmp/$m.$ext"
       "$py" "$tmp/write.py" "$tmp/$m.ref.log" "$f" 2> "$tmp/py.err" || { fail "python-can $ext: $(cat "$tmp/py.err")"; continue; }
+      same_verdicts "$f" $m "python-can"
       kinds "$f" $m > "$tmp/got"
       diff "$tmp/$m.want" "$tmp/got" > "$tmp/diff" || fail "$m.$ext (python-can) decodes differently: $(head -5 "$tmp/diff")"
       "$pk" decode --model $m "$f" > /dev/null 2> "$tmp/err"; rc=$?
@@ -99,6 +143,14 @@ fi
 # --- can-utils log2asc and asc2log ------------------------------------------------------------------
 # (No error frame here: log2asc -f of can-utils 2020.11 writes one as a data frame of id 80h.)
 if command -v log2asc > /dev/null && command -v asc2log > /dev/null; then
+  for m in problems session; do
+    log2asc -I "$tmp/$m.ref.log" -O "$tmp/$m.l2a.asc" can0 2> /dev/null || fail "log2asc failed"
+    log2asc -f -I "$tmp/$m.ref.log" -O "$tmp/$m.l2af.asc" can0 2> /dev/null || fail "log2asc -f failed"
+    asc2log -I "$tmp/$m.l2a.asc" -O "$tmp/$m.a2l.log" 2> /dev/null || fail "asc2log failed"
+    same_verdicts "$tmp/$m.l2a.asc" $m log2asc
+    same_verdicts "$tmp/$m.l2af.asc" $m "log2asc -f"
+    same_verdicts "$tmp/$m.a2l.log" $m asc2log
+  done
   for m in pk1000 pkp2400; do
     { cat "$tmp/$m.ref.log"; echo "(1700000009.000000) can0 615#R"; echo "(1700000009.100000) can0 615##1000102030405060708090A0B"; } > "$tmp/$m.extra.log"
     log2asc -I "$tmp/$m.extra.log" -O "$tmp/$m.l2a.asc" can0 2> /dev/null || fail "log2asc failed"
@@ -115,9 +167,21 @@ if command -v log2asc > /dev/null && command -v asc2log > /dev/null; then
     grep -q '#[0-9A-F]* R$' "$tmp/$m.a2l.log" || fail "asc2log wrote no direction: $(head -1 "$tmp/$m.a2l.log")"
     kinds "$tmp/$m.a2l.log" $m > "$tmp/got"
     diff "$tmp/$m.want" "$tmp/got" > "$tmp/diff" || fail "$m (asc2log) decodes differently: $(head -5 "$tmp/diff")"
+    for f in l2a.asc l2af.asc a2l.log; do same_verdicts "$tmp/$m.$f" $m "${f%.*}"; done
   done
 else
   echo "SKIP: can-utils' log2asc/asc2log are not installed (apt-get install can-utils)"
+fi
+
+# The references say something: a problem of each kind, the keypad's answers, every frame.
+if [ -s "$tmp/problems.check.want" ]; then
+  [ "$(grep -vc '^status' "$tmp/problems.check.want")" -eq 9 ] && grep -qx 'status 1' "$tmp/problems.check.want" ||
+    fail "check on the problems log: $(paste -sd' ' "$tmp/problems.check.want")"
+  [ "$(grep -vc '^status' "$tmp/session.simulate.want")" -gt 10 ] || fail "simulate on the session: $(cat "$tmp/session.simulate.want")"
+  [ "$(grep -vc '^status' "$tmp/pk1000.convert.want")" -eq "$(wc -l < "$tmp/pk1000.ref.log")" ] ||
+    fail "convert of the PK1000 log: $(wc -l < "$tmp/pk1000.convert.want") lines"
+else
+  fail "no verdicts were compared"
 fi
 
 # --- the forms no installed program writes (as candump prints them, from its source) ------------

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Tests of `powerkey simulate` (examples/tool/cmd_simulate.cpp), registered by
-# examples/CMakeLists.txt:  test_simulate.sh SIMULATE_BINARY SOURCE_DIR
+# Tests of `powerkey simulate` (tools/powerkey/cmd_simulate.cpp), registered by
+# tools/powerkey/CMakeLists.txt:  test_simulate.sh POWERKEY_BINARY SOURCE_DIR
 # The shipped session log (examples/logs/session-pk1000.log) gives exactly the keypad's frames
 # below; bare frames on stdin, --node, bad lines and usage errors behave as documented.
 set -uo pipefail
-sim=$1
+pk=$1
+sim() { "$pk" simulate "$@"; }
 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -13,7 +14,7 @@ fail() { echo "FAIL: $*"; failed=1; }
 
 # The session: boot-up first, one reply per request 1 ms after it, heartbeats every 100 ms from
 # the 1017h write, the scripted key 3 press and release as key-state PDOs (tick = 100 ms units).
-"$sim" --model pk1000 --press 0.42:3 --release 0.47:3 "$src/examples/logs/session-pk1000.log" \
+sim --model pk1000 --press 0.42:3 --release 0.47:3 "$src/examples/logs/session-pk1000.log" \
   > "$tmp/out" || fail "session: exit status $?"
 cat > "$tmp/want" <<'OUT'
 (1700000000.000000) can0 715#00
@@ -32,30 +33,50 @@ cat > "$tmp/want" <<'OUT'
 OUT
 diff "$tmp/want" "$tmp/out" || fail "session output differs"
 
-# Bare frames on stdin (no timestamps: all at power-on), another node, a PKP model: the second
-# request arrives while the first is being answered and is dropped, as real keypads do.
+# Bare frames on stdin, another node, a PKP model: lines without a time come 10 ms apart, so the
+# second request meets an idle keypad and is answered too.
 printf '621#4017100000000000\n621#4000100000000000\n' |
-  "$sim" --model pkp2400 --node 0x21 > "$tmp/out" || fail "stdin: exit status $?"
-printf '(0.000000) can0 721#00\n(0.001000) can0 5A1#4B17100000000000\n' > "$tmp/want"
+  sim --model pkp2400 --node 0x21 > "$tmp/out" 2> "$tmp/err" || fail "stdin: exit status $?"
+printf '(0.000000) can0 721#00\n(0.001000) can0 5A1#4B17100000000000\n(0.011000) can0 5A1#4300100091010300\n' > "$tmp/want"
 diff "$tmp/want" "$tmp/out" || fail "stdin output differs"
+[ -s "$tmp/err" ] && fail "stdin: $(cat "$tmp/err")"
+# A request that comes while the keypad is still answering (timed 0.4 ms apart: the same millisecond) is dropped, as
+# real keypads do, and said on standard error with the request it was busy with.
+printf '(1.0000) can0 621#4017100000000000\n(1.0004) can0 621#4000100000000000\n' |
+  sim --model pkp2400 --node 0x21 > "$tmp/out" 2> "$tmp/err" || fail "dropped: exit status $?"
+printf '(1.000000) can0 721#00\n(1.001000) can0 5A1#4B17100000000000\n' > "$tmp/want"
+diff "$tmp/want" "$tmp/out" || fail "dropped: output differs"
+[ "$(cat "$tmp/err")" = "powerkey: <stdin>:2: the keypad drops this SDO request: the request of <stdin>:1 (1017h sub 0) is not answered yet" ] ||
+  fail "dropped request not said: $(cat "$tmp/err")"
+# Many dropped requests: three said, the others counted, as problems are.
+for i in $(seq 1 50); do echo "(1.0000) can0 621#4017100000000000"; done |
+  sim --model pkp2400 --node 0x21 > /dev/null 2> "$tmp/err" || fail "many dropped: exit status $?"
+[ "$(wc -l < "$tmp/err")" -eq 4 ] && tail -1 "$tmp/err" | grep -qx "powerkey: <stdin>: 46 more lines like that (the keypad drops an SDO request)" ||
+  fail "many dropped requests: $(cat "$tmp/err")"
+# Many dropped requests: three said, the others counted, as problems are.
+for i in $(seq 1 50); do echo "(1.0000) can0 621#4017100000000000"; done |
+  sim --model pkp2400 --node 0x21 > /dev/null 2> "$tmp/err" || fail "many dropped: exit status $?"
+[ "$(wc -l < "$tmp/err")" -eq 4 ] && tail -1 "$tmp/err" | grep -qx "powerkey: <stdin>: 46 more lines like that (the keypad drops an SDO request)" ||
+  fail "many dropped requests: $(cat "$tmp/err")"
 
 # A node change on the PKP: the reply from the old id, then the boot-up from the new one.
-echo '(5.000000) can0 615#2300650170180000' | "$sim" --model PKP-2200-LI > "$tmp/out"
+echo '(5.000000) can0 615#2300650170180000' | sim --model PKP-2200-LI > "$tmp/out"
 printf '(5.000000) can0 715#00\n(5.001000) can0 595#6000650100000000\n(5.001000) can0 718#00\n' \
   > "$tmp/want"
 diff "$tmp/want" "$tmp/out" || fail "node change output differs"
 
 # candump's screen form (with -t a timestamps) reads like the log form.
 echo '(1700000000.000000)  can0  615   [8]  40 10 20 00 00 00 00 00' |
-  "$sim" --model pk1000 > "$tmp/out" || fail "screen form: exit status $?"
+  sim --model pk1000 > "$tmp/out" || fail "screen form: exit status $?"
 printf '(1700000000.000000) can0 715#00\n(1700000000.001000) can0 595#4F10200004000000\n' > "$tmp/want"
 diff "$tmp/want" "$tmp/out" || fail "screen form output differs"
 
 # A bad line: reported with file and line on stderr, exit status 1, the rest still simulated.
 printf '615#4010200000000000\nnot a frame\n' > "$tmp/bad.log"
-"$sim" --model pk1000 "$tmp/bad.log" > "$tmp/out" 2> "$tmp/err"
+sim --model pk1000 "$tmp/bad.log" > "$tmp/out" 2> "$tmp/err"
 [ $? -eq 1 ] || fail "bad line: exit status not 1"
-grep -q "bad.log:2: error" "$tmp/err" || fail "bad line: no file:line error"
+grep -qx "powerkey: $tmp/bad.log:2: not a frame (expected ID#DATA or a candump line): 'not a frame'" "$tmp/err" ||
+  fail "bad line: no file:line error: $(cat "$tmp/err")"
 grep -q "595#4F10200004000000" "$tmp/out" || fail "bad line: the good line was not answered"
 
 # Every shipped sample log (both directions of the manual's frames, per model): read without an
@@ -63,14 +84,14 @@ grep -q "595#4F10200004000000" "$tmp/out" || fail "bad line: the good line was n
 for log in "$src"/examples/logs/*.log; do
   m=$(basename "$log" .log)
   case $m in pk1000 | pkp*) ;; *) continue ;; esac
-  "$sim" --model "$m" "$log" > "$tmp/out" 2> "$tmp/err" || fail "$m: exit status $? $(head -3 "$tmp/err")"
+  sim --model "$m" "$log" > "$tmp/out" 2> "$tmp/err" || fail "$m: exit status $? $(head -3 "$tmp/err")"
   head -1 "$tmp/out" | grep -Eq '^\([0-9.]+\) can0 715#00$' || fail "$m: no boot-up first"
   grep -Evq '^\([0-9.]+\) can0 [0-9A-F]{3}#([0-9A-F]{2}){0,8}$' "$tmp/out" && fail "$m: a line not in candump log form"
 done
 
 # Usage errors: exit status 2.
-"$sim" > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"
-"$sim" --model pk9999 > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown model: exit status not 2"
-"$sim" --model pk1000 --press 1:11 > /dev/null 2>&1; [ $? -eq 2 ] || fail "key 11: exit status not 2"
+sim > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"
+sim --model pk9999 > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown model: exit status not 2"
+sim --model pk1000 --press 1:11 > /dev/null 2>&1; [ $? -eq 2 ] || fail "key 11: exit status not 2"
 
 exit $failed

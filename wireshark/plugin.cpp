@@ -19,6 +19,7 @@
 #include <epan/proto_data.h>
 #include <epan/strutil.h>
 #include <ws_symbol_export.h>
+#include <wsutil/report_message.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -69,14 +70,27 @@ struct registry {
     std::vector<std::string> abbrevs;
     std::vector<std::vector<value_string>> value_strings;
     std::vector<hf_register_info> hf;
-    std::vector<std::string> model_names;
-    std::vector<enum_val_t> model_enum;
+    std::string model_help;  // the description of powerkey.model
 };
 registry* reg = nullptr;
 
-// Preferences: powerkey.model and powerkey.node.
+// Preferences: powerkey.model (a name, read as the tool's --model reads it) and powerkey.node.
+const char* pref_model_name = "pk1000";
 gint pref_model = 0;
 guint pref_node = 0x15;
+
+// powerkey.model changed: the model it names, or a message and the model as it was.
+void apply_preferences() {
+    const std::string_view name = pref_model_name != nullptr ? pref_model_name : "";
+    if (const auto m = powerkey_ws::model_from_name(name)) {
+        pref_model = static_cast<gint>(*m);
+        return;
+    }
+    const auto now = powerkey_ws::model_of(pref_model);
+    report_failure("powerkey.model: unknown model '%s' (%s); still decoding as %s",
+                   powerkey_ws::printable(name).c_str(), powerkey_ws::model_list().c_str(),
+                   now ? std::string(powerkey::to_string(*now)).c_str() : "pk1000");
+}
 
 std::optional<powerkey_ws::follower> follower;
 
@@ -201,17 +215,14 @@ void register_protoinfo() {
                                    nullptr);  // as EXPFILL leaves it
     expert_register_field_array(expert_register_protocol(proto_powerkey), ei, G_N_ELEMENTS(ei));
 
-    module_t* module = prefs_register_protocol(proto_powerkey, nullptr);
-    const auto choices = powerkey_ws::model_choices();
-    for (const auto& m : choices) reg->model_names.emplace_back(m.name);
-    for (std::size_t i = 0; i < choices.size(); ++i)
-        reg->model_enum.push_back(
-            {reg->model_names[i].c_str(), reg->model_names[i].c_str(), choices[i].value});
-    reg->model_enum.push_back({nullptr, nullptr, 0});
+    module_t* module = prefs_register_protocol(proto_powerkey, apply_preferences);
     pref_model = powerkey_ws::default_model();
-    prefs_register_enum_preference(module, "model", "Keypad model",
-                                   "The PowerKey model on the bus (the tool's --model)",
-                                   &pref_model, reg->model_enum.data(), FALSE);
+    reg->model_help = "The PowerKey model on the bus, as the tool's --model takes it: " +
+                      powerkey_ws::model_list() +
+                      ", in any case and as the manuals write them (PKP-2400-LI) or the keypad "
+                      "reports them (PKU2400)";
+    prefs_register_string_preference(module, "model", "Keypad model", reg->model_help.c_str(),
+                                     &pref_model_name);
     prefs_register_uint_preference(module, "node", "Node id (hex)",
                                    "The keypad's node id at the start of the capture, 1..7F "
                                    "hex; the plugin follows node-id changes from there",
@@ -313,9 +324,8 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     proto_item_append_text(top, ", %s", line.c_str());
     proto_tree* t = proto_item_add_subtree(top, ett_powerkey);
 
-    for (std::size_t i = 0; i + 1 < reg->model_enum.size(); ++i)
-        if (reg->model_enum[i].value == record->model)
-            proto_tree_add_string(t, hf_model, tvb, 0, 0, reg->model_enum[i].name);
+    if (const auto m = powerkey_ws::model_of(record->model))
+        proto_tree_add_string(t, hf_model, tvb, 0, 0, std::string(powerkey::to_string(*m)).c_str());
     proto_tree_add_string(t, hf_function, tvb, 0, 0, v.function.c_str());
     proto_tree_add_uint(t, hf_node, tvb, 0, 0, v.node);
     if (v.decoded) {

@@ -47,15 +47,35 @@ inline constexpr std::size_t text_capacity = 256;
 
 // --- models -------------------------------------------------------------------------------------
 
-struct model_choice {
-    std::string_view name;  // pk1000, pkp2200 ...: the tool's --model names
-    int value;              // the preference's value
-};
-
-inline std::vector<model_choice> model_choices() {
-    std::vector<model_choice> out;
+// "pk1000, pkp2200, ...": every model of the table, for the preference's text and its errors.
+inline std::string model_list() {
+    std::string s;
     for (powerkey::model m : powerkey::enum_values<powerkey::model>())
-        out.push_back({powerkey::to_string(m), static_cast<int>(m)});
+        s.append(s.empty() ? "" : ", ").append(powerkey::to_string(m));
+    return s;
+}
+
+// A model from a name as the tool's --model takes it: the library's parse_model.
+inline std::optional<powerkey::model> model_from_name(std::string_view name) {
+    if (const auto m = powerkey::parse_model(name)) return *m;
+    return std::nullopt;
+}
+
+// Text from the user, shown in a message: printable ASCII as it is, the rest as \xNN, cut at 32.
+inline std::string printable(std::string_view s) {
+    constexpr char hex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : s.substr(0, 32)) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u < 0x7F && c != '\\') {
+            out += c;
+        } else {
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        }
+    }
+    if (s.size() > 32) out += "...";
     return out;
 }
 

@@ -4,9 +4,9 @@ Wireshark's own CANopen dissector (registered by wireshark/CMakeLists.txt as wir
 
     test_tshark.py --build-dir BUILD --tool POWERKEY --source SOURCE_DIR --work DIR
 
-For every sample log examples/logs/*.log, written as a SocketCAN pcap, with the model its file
-name names (pk1000.log, session-pk1000.log; one of the plugin's powerkey.model choices, which come
-from the library's model table), or the default model (pk1000) when the name names none:
+For every sample log examples/logs/*.log, written as a SocketCAN pcap by `powerkey convert`, with the model its file
+name names (pk1000.log, session-pk1000.log; one of `powerkey models`, the names powerkey.model
+takes too), or the default model (pk1000) when the name names none:
   - tshark (scripts/tshark.sh, -o powerkey.model:MODEL) and `powerkey decode --model MODEL --json`
     agree on every frame: kind, error, function, node, SDO index and sub-index, the SDO pairing,
     the string of a segmented upload, the node-id and protocol changes, and every message field;
@@ -18,11 +18,9 @@ from the library's model table), or the default model (pk1000) when the name nam
 Then frames of other nodes stay with the generic dissectors, the node preference moves the
 keypad, text from the bus is escaped, and filters select the frames the tool names.
 
-Without a working tool (--tool missing or failing, e.g. while examples/ is being ported) every
-check that needs no tool still runs (the plugin against the CANopen dissector, the second pass,
-other frames, the node preference, escaping, filters against the plugin's own tree); the script
-then says what it left out and exits 77, which ctest reports as skipped. Exits 1 naming every
-difference.
+The pcap captures are written by `powerkey convert --to pcap`, the tool's own log reader (so
+tshark reads what the tool reads); without a working tool the script exits 77, which ctest
+reports as skipped. Exits 1 naming every difference.
 """
 import argparse
 import glob
@@ -33,7 +31,6 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 # CiA 301 function codes (COB-ID bits 10..7) as Wireshark's canopen.function_code shows them.
 FUNCTION_CODES = {"nmt": 0x0, "sync": 0x1, "tpdo1": 0x3, "rpdo1": 0x4, "tpdo2": 0x5,
                   "rpdo2": 0x6, "tpdo3": 0x7, "rpdo3": 0x8, "tpdo4": 0x9, "rpdo4": 0xA,
@@ -41,7 +38,7 @@ FUNCTION_CODES = {"nmt": 0x0, "sync": 0x1, "tpdo1": 0x3, "rpdo1": 0x4, "tpdo2": 
 PER_NODE = set(FUNCTION_CODES) - {"nmt", "sync"}
 
 failures = []
-# The exit status when checks that need the tool were left out (ctest SKIP_RETURN_CODE).
+# The exit status without a working tool (ctest SKIP_RETURN_CODE).
 SKIPPED = 77
 
 
@@ -52,9 +49,15 @@ def fail(where, what):
 class runner:
     def __init__(self, args):
         self.args = args
-        self.env = dict(os.environ, POWERKEY_BUILD_DIR=args.build_dir, POWERKEY_TSHARK_BUILD="0")
+        # scripts/tshark.sh's temporary files go to a directory of their own, which must stay
+        # empty (check_no_leftovers).
+        self.tmp = os.path.join(args.work, "tmp")
+        os.makedirs(self.tmp, exist_ok=True)
+        for f in os.listdir(self.tmp):
+            os.remove(os.path.join(self.tmp, f))
+        self.env = dict(os.environ, POWERKEY_BUILD_DIR=args.build_dir, POWERKEY_TSHARK_BUILD="0",
+                        TMPDIR=self.tmp)
         self.has_tool = self.tool_works()
-        self.left_out = []  # the checks that needed the tool
 
     def tshark(self, *argv):
         cmd = ["bash", os.path.join(self.args.source, "scripts", "tshark.sh"), *argv]
@@ -82,18 +85,12 @@ class runner:
 
     def pcap(self, log, name):
         out = os.path.join(self.args.work, name + ".pcap")
-        subprocess.run([sys.executable, os.path.join(HERE, "candump2pcap.py"), log, out],
-                       check=True)
+        self.tool("convert", "--to", "pcap", "-o", out, log)
         return out
 
     def models(self):
-        """The plugin's powerkey.model choices (the library's model table), from tshark."""
-        lines = self.tshark("-G", "defaultprefs").splitlines()
-        at = next(n for n, line in enumerate(lines) if line.startswith("#powerkey.model:"))
-        for line in reversed(lines[:at]):
-            if line.startswith("# One of: "):
-                return [m.strip() for m in line[len("# One of: "):].split(",")]
-        sys.exit("no choices for powerkey.model in tshark -G defaultprefs")
+        """The models powerkey.model and --model take (the library's model table)."""
+        return [line.split()[0] for line in self.tool("models")]
 
 
 def pdml_frames(text):
@@ -133,17 +130,6 @@ def set_text(numbers):
             parts.extend(str(n) for n in s[i:j + 1])
         i = j + 1
     return " ".join(parts) or "-"
-
-
-def set_numbers(text):
-    """The numbers of a set as describe() writes it ("1 7", "5-8", "-")."""
-    out = []
-    for part in text.split():
-        if part == "-":
-            continue
-        first, _, last = part.partition("-")
-        out.extend(range(int(first), int(last or first) + 1))
-    return out
 
 
 def field_matches(name, want, show, showname):
@@ -214,11 +200,9 @@ def compare_log(run, log, model):
         fail(where, f"{len(frames)} frames in tshark, {len(infos)} Info lines, {len(canopen)} "
                     f"from the CANopen dissector, {len(second)} in the second pass")
         return
-    left = []  # frames powerkey leaves to the generic dissectors: the tool says why below
     for n, (f, info, co, f2) in enumerate(zip(frames, infos, canopen, second), 1):
         at = f"{where} frame {n}"
         if f["title"] is None:
-            left.append(n)
             if f2["title"] is not None:
                 fail(at, "dissected by powerkey in the second pass only")
             continue
@@ -227,10 +211,6 @@ def compare_log(run, log, model):
         if (f2["title"], f2["fields"]) != (f["title"], f["fields"]):
             fail(at, f"the second pass shows {f2['title']!r}, the first {f['title']!r}")
         compare_canopen(at, f, co)
-    if not run.has_tool:
-        run.left_out.append(f"{name}: the comparison with decode --json and the tool's text"
-                            + (f" (frames {left} not dissected: not checked)" if left else ""))
-        return
     model_args = ["--model", model] if model else []
     tool_json = [json.loads(l) for l in run.tool("decode", *model_args, "--json", log)]
     tool_lines = run.tool("decode", *model_args, log)
@@ -310,11 +290,7 @@ def check_other_frames(run):
     with open(log, "w") as out:
         out.write("".join(r[0] + "\n" for r in rows))
     frames = pdml_frames(run.tshark("-r", run.pcap(log, "other"), "-T", "pdml"))
-    if run.has_tool:
-        tool_json = [json.loads(l) for l in run.tool("decode", "--json", log)]
-    else:
-        tool_json = [None] * len(rows)
-        run.left_out.append("other frames: what the tool makes of them")
+    tool_json = [json.loads(l) for l in run.tool("decode", "--json", log)]
     # The plugin comes before "Decode As CANopen" too, and leaves it the other nodes' frames.
     decode_as = run.tshark("-r", run.pcap(log, "other"), "-d", "can.subdissector,canopen",
                            "-T", "fields", "-e", "frame.protocols").splitlines()
@@ -380,20 +356,8 @@ def check_filters(run):
         out = run.tshark("-r", pcap, *prefs, "-Y", expr, "-T", "fields", "-e", "frame.number")
         return [int(n) for n in out.split()]
 
-    if run.has_tool:
-        tool_json = [json.loads(l) for l in run.tool("decode", "--model", "pkp2400", "--json", log)]
-        lines = run.tool("decode", "--model", "pkp2400", log)
-    else:
-        run.left_out.append("filters: the frames the tool names")
-        tree = pdml_frames(run.tshark("-r", pcap, *prefs, "-T", "pdml"))
-        lines = run.tshark("-r", pcap, *prefs, "-T", "fields", "-e", "_ws.col.Info").splitlines()
-        # The tree's values in the form of decode --json, for the fields the cases look at.
-        tool_json = [{"kind": one(f, "powerkey.kind"), "sdo": one(f, "powerkey.sdo.pairing"),
-                      "fields": {k: one(f, f"powerkey.{k}") for k in ("command", "red")}}
-                     for f in tree]
-        for j in tool_json:
-            if j["fields"]["red"] not in (None, "several"):
-                j["fields"]["red"] = set_numbers(j["fields"]["red"])
+    tool_json = [json.loads(l) for l in run.tool("decode", "--model", "pkp2400", "--json", log)]
+    lines = run.tool("decode", "--model", "pkp2400", log)
 
     def expect(test):
         return [n for n, j in enumerate(tool_json, 1) if test(j)]
@@ -416,6 +380,31 @@ def check_filters(run):
         fail("filter powerkey.sdo.reply_to.index == 0x1008", f"frames {got}, expected {want}")
 
 
+def check_no_leftovers(run):
+    """scripts/tshark.sh cleans up after itself: nothing is left in its TMPDIR."""
+    left = os.listdir(run.tmp)
+    if left:
+        fail("scripts/tshark.sh", f"left {left} in its TMPDIR")
+
+
+def check_model_preference(run):
+    """powerkey.model takes the names --model takes, and says so when it does not know one."""
+    log = os.path.join(run.args.work, "model.log")
+    with open(log, "w") as out:
+        out.write("195#0100000010\n")
+    pcap = run.pcap(log, "model")
+    for name in ("pkp2400", "PKP-2400-LI", "pkp-2400", "PKU2400"):
+        got = run.tshark("-r", pcap, "-o", f"powerkey.model:{name}", "-T", "fields",
+                         "-e", "powerkey.model").split()
+        if got != ["pkp2400"]:
+            fail("model preference", f"{name}: decoded as {got}")
+    cmd = ["bash", os.path.join(run.args.source, "scripts", "tshark.sh"), "-r", pcap, "-o",
+           "powerkey.model:pkp2401", "-T", "fields", "-e", "powerkey.model"]
+    r = subprocess.run(cmd, env=run.env, capture_output=True, text=True)
+    if "unknown model 'pkp2401'" not in r.stderr:
+        fail("model preference", f"pkp2401: status {r.returncode}, {r.stderr.strip()!r}")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--build-dir", required=True)
@@ -425,6 +414,9 @@ def main():
     args = p.parse_args()
     os.makedirs(args.work, exist_ok=True)
     run = runner(args)
+    if not run.has_tool:
+        print(f"SKIPPED: no working powerkey tool at {args.tool} (it writes the pcap captures)")
+        return SKIPPED
     models = run.models()
     logs = sorted(glob.glob(os.path.join(args.source, "examples", "logs", "*.log")))
     for log in logs:
@@ -433,6 +425,8 @@ def main():
     check_node_preference(run)
     check_escaping(run)
     check_filters(run)
+    check_model_preference(run)
+    check_no_leftovers(run)
     shown = {}
     for f in failures:  # at most 15 per check, so that each failing check shows
         section = f.split(" frame ")[0].split(":")[0]
@@ -445,11 +439,6 @@ def main():
     print(f"wireshark: {len(logs)} sample logs ({', '.join(os.path.basename(l) for l in logs)}): "
           "every frame powerkey takes is the same in a second pass and as the CANopen dissector "
           "sees it")
-    if not run.has_tool:
-        print(f"SKIPPED (no working powerkey tool at {args.tool}):")
-        for what in run.left_out:
-            print("  " + what)
-        return SKIPPED
     print("wireshark: every sample frame agrees with decode --json and with the CANopen dissector")
     return 0
 

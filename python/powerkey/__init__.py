@@ -32,7 +32,7 @@ __all__ = [
     "EncodeError", "Error", "Frame", "LedMapUpdate", "Message", "Model", "Session",
     "SessionEvent", "VirtualKeypad", "backlight_change", "led_brightness_level", "decode", "encode",
     "encode_frame", "kinds", "led_blink_map", "led_on_map", "message", "model_info", "names",
-    "reported_nmt_state", "node_id_change", "parse_model", "pressed_keys",
+    "reported_nmt_state", "node_id_change", "parse_model", "pressed_keys", "skipped_kind",
 ]
 if _can is not None:
     __all__.append("Listener")
@@ -44,8 +44,9 @@ def decode(msg_or_id, data=None, *, model, node=DEFAULT_NODE, extended=None):
     """The message a frame carries, for keypad `model` at `node` (decode(frame, node, model)).
 
     msg_or_id is a can.Message (or anything with arbitration_id, data, is_extended_id), or an
-    identifier with `data` the bytes; `extended` defaults to id > 7FFh. Raises DecodeError whose
-    `code` is the library's errc ("wrong_id", "reserved_not_zero", ...).
+    identifier with `data` the bytes; `extended` defaults to id > 7FFh. `node` is a number or
+    the tool's text ("15h", "0x15"). Raises DecodeError whose `code` is the library's errc
+    ("wrong_id", "reserved_not_zero", ...); a remote, CAN FD or error frame is "unexpected_frame".
     """
     return _powerkey.decode(msg_or_id, data, model=model, node=node, extended=extended)
 
@@ -61,8 +62,10 @@ def encode(kind, *, model=None, node=None, **fields):
     """The frame of a message, as a can.Message (encode(node, model, message)).
 
     `kind` is a kind name with its fields as keywords (encode("led_on", model="pkp2400",
-    green=[3])), or a Message (then model and node default to the message's own). Raises
-    EncodeError with the errc, ArgumentError for an unknown kind, field or model.
+    green=[3]); also "led-on", green="3", as the tool takes them), or a Message (then model and
+    node default to the message's own). Raises EncodeError with the errc and the tool's words
+    ("led_on: red: [5] is more than a pkp2200 takes (1..4)"), ArgumentError for an unknown kind,
+    field or model.
     """
     if isinstance(kind, Message):
         if fields:
@@ -115,6 +118,18 @@ def node_id_change(m):
 def reported_nmt_state(m):
     """The NMT state a heartbeat or boot-up reports ("operational", ...), else None."""
     return m.reported_nmt_state()
+
+
+def skipped_kind(msg):
+    """"remote frame", "CAN FD frame" or "error frame" (the tool's names for what it counts and
+    skips), or None for a classic data frame."""
+    if getattr(msg, "is_error_frame", False):
+        return "error frame"
+    if getattr(msg, "is_remote_frame", False):
+        return "remote frame"
+    if getattr(msg, "is_fd", False):
+        return "CAN FD frame"
+    return None
 
 
 # --- the roles, stepped with frames and a time in ms --------------------------------------------
@@ -182,8 +197,9 @@ if _can is not None:
         """A python-can Listener that decodes what a Notifier delivers through a Session.
 
         Each frame becomes (can.Message, SessionEvent): passed to `callback` when one is given
-        (on the Notifier's thread), else queued for get_message(). Error and remote frames are
-        skipped.
+        (on the Notifier's thread), else queued for get_message(). Remote, CAN FD and error
+        frames carry no keypad message: as the tool does, they are counted by kind in
+        `skipped` ({"remote frame": 2, ...}), not decoded.
 
             listener = powerkey.Listener(model="pkp2400")
             notifier = can.Notifier(bus, [listener])
@@ -194,10 +210,13 @@ if _can is not None:
             super().__init__()
             self.session = Session(model=model, node=node)
             self.callback = callback
+            self.skipped = {}
             self._queue = _queue.Queue()
 
         def on_message_received(self, msg):
-            if msg.is_error_frame or msg.is_remote_frame:
+            kind = skipped_kind(msg)
+            if kind is not None:
+                self.skipped[kind] = self.skipped.get(kind, 0) + 1
                 return
             event = self.session.step(msg)
             if self.callback is not None:

@@ -2,13 +2,21 @@
 // this module only speaks in plain Python values (ints, strs, lists, bytes) and the few types of
 // powerkey/_types.py, so that the vocabulary is the library's and the tool's JSON:
 //   - a message's fields come from the kind/fields convention (fields.hpp), written with the
-//     same rules as the tool's `decode --json` (examples/tool/field_value.hpp, write_json_value):
+//     same rules as the tool's `decode --json` (tools/powerkey/field_value.hpp, write_json_value):
 //     bool, enum name (a number when unnamed), [keys], "HEX" bytes, numbers;
 //   - a message is built from a kind and fields as `powerkey encode` builds one, field by field
-//     through the same visitor;
-//   - a refusal raises powerkey.DecodeError / EncodeError whose `code` is the errc's name.
+//     through the same visitor; a kind is written led_on or led-on, a value as a Python value or
+//     as the tool's text ("3Ah", "1,7", "1-28", "yes"), read by the tool's own functions
+//     (tools/powerkey/field_text.hpp, numbers.hpp);
+//   - a refusal raises powerkey.DecodeError / EncodeError whose `code` is the errc's name, and
+//     whose text is the tool's: the kind, the field and the range (led_on: red: [5] is more than
+//     a pkp2200 takes (1..4); tools/powerkey/refusal.hpp finds the field);
+//   - remote, CAN FD and error frames carry no keypad message, as for the tool.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include "field_text.hpp"  // tools/powerkey: the tool's text values and numbers
+#include "refusal.hpp"
 
 #include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
@@ -22,6 +30,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
@@ -112,13 +121,24 @@ model model_from_py(py::handle o) {
 }
 
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {
-    if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
-        throw py::type_error(std::string(what) + ": expected an int 1..127, not " + py_repr(o));
-    const auto n = o.cast<long long>();
+    long long n = 0;
+    if (py::isinstance<py::str>(o)) {  // as the tool's --node: "15h", "0x15", "21"
+        std::uint64_t v = 0;
+        if (!tool::parse_number(o.cast<std::string>(), v))
+            argument_error(std::string(what) + ": expected a node id 1..127 (0x15, 15h or 21), " +
+                           "got " + py_repr(o));
+        n = v > 0xFFFF ? 0xFFFF : static_cast<long long>(v);
+    } else if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o)) {
+        throw py::type_error(std::string(what) +
+                             ": expected an int 1..127 or a str like '15h', "
+                             "not " +
+                             py_repr(o));
+    } else {
+        n = o.cast<long long>();
+    }
     const auto id = canopen::node_id::make(n < 0 || n > 255 ? 0u : static_cast<unsigned>(n));
     if (!id)
-        raise(types().argument_error,
-              std::string(what) + ": " + std::to_string(n) + " is outside 1..127",
+        raise(types().argument_error, std::string(what) + ": " + py_repr(o) + " is outside 1..127",
               py::str("value_out_of_range"));
     return *id;
 }
@@ -138,7 +158,7 @@ py::list index_list(const index_set<N>& s) {
     return l;
 }
 
-// The value as the tool's JSON writes it (examples/tool/field_value.hpp, write_json_value).
+// The value as the tool's JSON writes it (tools/powerkey/field_value.hpp, write_json_value).
 template <class T>
 py::object to_py(const T& v) {
     if constexpr (std::is_same_v<T, bool>) {
@@ -174,10 +194,23 @@ std::uint64_t unsigned_from_py(py::handle o, std::string_view field, std::uint64
     return o.cast<std::uint64_t>();
 }
 
-// Sets v from a Python value: what to_py gives back, and the obvious others (bytes for a byte
-// array, any iterable of key numbers for a set, an enum's number).
+// A field value from the tool's text ("3Ah", "1,7", "1-28", "yes", a name): the tool's own
+// reader and its words; a value outside the range is an EncodeError, text that is no value an
+// ArgumentError.
+template <class T>
+void from_text(T& v, const std::string& text, std::string_view field) {
+    const auto e = tool::set_from_text(v, text, field);
+    if (e.empty()) return;
+    if (e.find(" is outside ") != std::string::npos) field_out_of_range(field, e);
+    argument_error(std::string(field) + ": " + e);
+}
+
+// Sets v from a Python value: what to_py gives back, the tool's text for any field, and the
+// obvious others (bytes for a byte array, any iterable of key numbers for a set, an enum's
+// number).
 template <class T>
 void from_py(T& v, py::handle o, std::string_view field) {
+    if (py::isinstance<py::str>(o)) return from_text(v, o.cast<std::string>(), field);
     if constexpr (std::is_same_v<T, bool>) {
         if (py::isinstance<py::bool_>(o)) {
             v = o.cast<bool>();
@@ -187,57 +220,45 @@ void from_py(T& v, py::handle o, std::string_view field) {
     } else if constexpr (std::is_enum_v<T>) {
         v = enum_from_py<T>(o, std::string(field).c_str());
     } else if constexpr (is_index_set<T>::value) {
-        if (py::isinstance<py::str>(o) || !py::isinstance<py::iterable>(o))
-            throw py::type_error(std::string(field) + ": expected numbers like [1, 7], not " +
+        if (!py::isinstance<py::iterable>(o))
+            throw py::type_error(std::string(field) +
+                                 ": expected numbers like [1, 7] or '1,7', "
+                                 "not " +
                                  py_repr(o));
         T s{};
         for (const auto item : o) {
-            const auto n = unsigned_from_py(item, field, T::max);
-            if (n < 1) field_out_of_range(field, "0 is outside 1.." + std::to_string(T::max));
-            s.insert(static_cast<unsigned>(n));
+            if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
+                throw py::type_error(std::string(field) + ": expected numbers like [1, 7], not " +
+                                     py_repr(o));
+            if (item < py::int_(1) || item > py::int_(T::max))
+                field_out_of_range(field,
+                                   py_repr(item) + " is outside 1.." + std::to_string(T::max));
+            s.insert(item.cast<unsigned>());
         }
         v = s;
     } else if constexpr (is_byte_array<T>::value) {
-        std::string bytes;
-        if (py::isinstance<py::str>(o)) {
-            const auto text = o.cast<std::string>();
-            auto digit = [](char c) {
-                if (c >= '0' && c <= '9') return c - '0';
-                if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-                if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-                return -1;
-            };
-            std::string hex;
-            for (const char c : text)
-                if (c != ' ') hex += c;
-            for (std::size_t i = 0; i < hex.size(); i += 2) {
-                const int hi = digit(hex[i]);
-                const int lo = i + 1 < hex.size() ? digit(hex[i + 1]) : -1;
-                if (hi < 0 || lo < 0)
-                    argument_error(std::string(field) + ": '" + text +
-                                   "' is not hex bytes like 72696E");
-                bytes += static_cast<char>((hi << 4) | lo);
-            }
-        } else if (py::isinstance<py::bytes>(o) || py::isinstance<py::bytearray>(o)) {
-            bytes = py::bytes(py::module_::import("builtins").attr("bytes")(o)).cast<std::string>();
-        } else {
+        if (!py::isinstance<py::bytes>(o) && !py::isinstance<py::bytearray>(o))
             throw py::type_error(std::string(field) + ": expected bytes or a hex string, not " +
                                  py_repr(o));
-        }
+        const auto bytes =
+            py::bytes(py::module_::import("builtins").attr("bytes")(o)).cast<std::string>();
         if (bytes.size() > v.size())
             field_out_of_range(field, "more than " + std::to_string(v.size()) + " bytes");
         T out{};
         for (std::size_t i = 0; i < bytes.size(); ++i) out[i] = static_cast<std::uint8_t>(bytes[i]);
         v = out;
-    } else if constexpr (is_bounded<T>::value) {
-        const auto n = unsigned_from_py(o, field, std::numeric_limits<std::uint64_t>::max());
-        const auto r = T::make(n);
-        if (!r)
-            field_out_of_range(field, std::to_string(n) + " is outside " + std::to_string(T::min) +
-                                          ".." + std::to_string(T::max));
-        v = *r;
     } else {
-        v = static_cast<T>(unsigned_from_py(o, field, std::numeric_limits<T>::max()));
+        // bounded and plain integers: the tool's range text ("99 is outside 00h..3Fh")
+        if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
+            throw py::type_error(std::string(field) +
+                                 ": expected an int or a str like '3Ah', "
+                                 "not " +
+                                 py_repr(o));
+        if (o < py::int_(0)) field_out_of_range(field, py_repr(o) + " is negative");
+        if (o > py::int_(std::numeric_limits<std::uint64_t>::max()))
+            field_out_of_range(field, py_repr(o) + " is too large");
+        const auto e = tool::set_from_number(v, o.cast<std::uint64_t>(), field);
+        if (!e.empty()) field_out_of_range(field, e);
     }
 }
 
@@ -270,26 +291,54 @@ std::string kind_names() {
 
 // The message of `kind` with `fields` (the others keep their defaults; an NMT command's target
 // defaults to `node`, as the tool's). Unknown kinds and field names raise ArgumentError.
-message build_message(const std::string& kind, const py::dict& fields,
+// Sets the NMT target of s to `node`, the default of the tool's encode.
+template <class S>
+void target_default(S& s, std::optional<canopen::node_id> node) {
+    if (!node) return;
+    S::fields(s, [&](std::string_view name, auto& value) {
+        if (name == "target") (void)tool::set_from_number(value, node->value(), name);
+    });
+}
+
+// Runs f; an Error it raises gets `kind: ` in front of its text, as the tool's errors have.
+template <class F>
+void in_kind(std::string_view kind, F&& f) {
+    try {
+        f();
+    } catch (py::error_already_set& e) {
+        for (const py::object* cls :
+             {&types().encode_error, &types().argument_error, &types().decode_error})
+            if (e.matches(*cls)) {
+                const std::string text = py::str(e.value()).cast<std::string>();
+                const py::object code = e.value().attr("code");
+                raise(*cls, std::string(kind) + ": " + text, code);
+            }
+        throw;
+    }
+}
+
+message build_message(const std::string& kind_text, const py::dict& fields,
                       std::optional<canopen::node_id> node) {
+    const std::string kind = tool::kind_name(kind_text);  // led-on, pkp_led_on: led_on
     message out;
     std::vector<std::string> used;
     const bool found = for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
-        if (S::kind != current_kind(kind)) return false;
+        if (S::kind != kind) return false;
         S s{};
-        S::fields(s, [&](std::string_view name, auto& value) {
-            const py::str key{std::string(name)};
-            if (fields.contains(key)) {
-                from_py(value, fields[key], name);
-                used.emplace_back(name);
-            } else if (name == "target" && node) {
-                from_py(value, py::int_(node->value()), name);
-            }
+        target_default(s, node);
+        in_kind(kind, [&] {
+            S::fields(s, [&](std::string_view name, auto& value) {
+                const py::str key{std::string(name)};
+                if (fields.contains(key)) {
+                    from_py(value, fields[key], name);
+                    used.emplace_back(name);
+                }
+            });
         });
         out = s;
         return true;
     });
-    if (!found) argument_error("unknown kind '" + kind + "' (" + kind_names() + ")");
+    if (!found) argument_error("unknown kind '" + kind_text + "' (" + kind_names() + ")");
     for (const auto& [k, v] : fields) {
         const auto name = py::str(k).cast<std::string>();
         bool known = false;
@@ -306,6 +355,28 @@ message build_message(const std::string& kind, const py::dict& fields,
     return out;
 }
 
+// encode() refused m: the tool's words for why (refusal.hpp), the errc as the code.
+[[noreturn]] void refused(const message& m, model md, canopen::node_id node, errc e) {
+    const std::string kind(kind_of(m));
+    const std::string name(to_string(md));
+    const auto why = tool::explain_refusal(m, md, node, [&](auto& s) { target_default(s, node); });
+    std::string text;
+    if (why.kind == tool::refusal::what::not_for_model) {
+        text = kind + " is not a message of a " + name;
+    } else if (why.kind == tool::refusal::what::field) {
+        py::object value = py::none();
+        for_each_field(m, [&](std::string_view n, const auto& v) {
+            if (n == why.field) value = to_py(v);
+        });
+        text = kind + ": " + std::string(why.field) + ": " + py_repr(value) +
+               (why.most > 0 ? " is more than a " : " is not what a ") + name + " takes" +
+               (why.most > 0 ? " (1.." + std::to_string(why.most) + ")" : "");
+    } else {
+        raise_code(types().encode_error, "encode " + kind + " for " + name, e);
+    }
+    raise(types().encode_error, text, py::str(std::string(to_string(e))));
+}
+
 // --- frames ---------------------------------------------------------------------------------
 
 // A frame from a can.Message (or anything with arbitration_id, data, is_extended_id), or from an
@@ -315,11 +386,15 @@ can::frame frame_from_py(py::handle o) {
     py::object data;
     std::optional<bool> ext;
     if (py::hasattr(o, "arbitration_id")) {
-        for (const char* flag : {"is_remote_frame", "is_error_frame"})
+        // As the tool: remote, CAN FD and error frames are log content it does not decode.
+        for (const auto& [flag, what] :
+             {std::pair{"is_remote_frame", "a remote frame"},
+              std::pair{"is_error_frame", "an error frame"}, std::pair{"is_fd", "a CAN FD frame"}})
             if (py::hasattr(o, flag) && o.attr(flag).cast<bool>())
                 raise(types().decode_error,
-                      std::string("a ") + (flag[3] == 'r' ? "remote" : "error") +
-                          " frame carries no keypad message",
+                      std::string(what) +
+                          " carries no keypad message (powerkey decodes classic "
+                          "CAN data frames)",
                       py::str("unexpected_frame"));
         id = o.attr("arbitration_id").cast<std::uint64_t>();
         data = o.attr("data");
@@ -342,6 +417,23 @@ can::frame frame_from_py(py::handle o) {
                         extended ? can::id_format::extended : can::id_format::standard);
     if (!f) raise_code(types().decode_error, "frame", f.error());
     return *f;
+}
+
+// A can.Message is extended unless told otherwise (python-can's is_extended_id=True): for an
+// extended frame that a keypad would read as a standard one, what to write instead.
+std::string standard_id_hint(const can::frame& f, canopen::node_id node, model m) {
+    if (!f.is_extended() || f.raw_id() > 0x7FF) return {};
+    const auto d = f.data();
+    const auto standard = can::make_frame(f.raw_id(), d, can::id_format::standard);
+    if (!standard) return {};
+    const auto r = decode(*standard, node, m);
+    if (!r) return {};
+    char id[8];
+    std::snprintf(id, sizeof id, "%03Xh", static_cast<unsigned>(f.raw_id()));
+    return std::string(
+               " (the frame is extended: can.Message is, unless given "
+               "is_extended_id=False; as a standard frame ") +
+           id + " is " + std::string(kind_of(*r)) + ")";
 }
 
 can::frame frame_from_args(py::handle msg_or_id, py::handle data, py::handle extended) {
@@ -658,7 +750,9 @@ PYBIND11_MODULE(_powerkey, mod) {
                 std::string what = "decode ";
                 what += f.is_extended() ? "extended " : "";
                 what += "frame as " + std::string(to_string(m));
-                raise_code(types().decode_error, what, r.error());
+                what += ": " + std::string(to_string(r.error()));
+                what += standard_id_hint(f, n, m);
+                raise(types().decode_error, what, py::str(std::string(to_string(r.error()))));
             }
             return py_message{*r, m, n.value()};
         },
@@ -685,11 +779,7 @@ PYBIND11_MODULE(_powerkey, mod) {
             const auto n = node.is_none() ? canopen::node_id::make(m.node.value_or(0x15)).value()
                                           : node_from_py(node);
             const auto f = encode(n, mm, m.m);
-            if (!f)
-                raise_code(
-                    types().encode_error,
-                    "encode " + std::string(kind_of(m.m)) + " for " + std::string(to_string(mm)),
-                    f.error());
+            if (!f) refused(m.m, mm, n, f.error());
             return frame_to_py(*f);
         },
         py::arg("message"), py::kw_only(), py::arg("model") = py::none(),

@@ -1,7 +1,7 @@
 // The C++ reference for python/tests/test_rows.py: every manual row of the test tables
 // (tests/decoder_rows.hpp and the tables of both manuals and the SI family), for every model the
 // row names, as one JSON line each, written with the powerkey tool's own JSON writer
-// (examples/tool/json_writer.hpp, field_value.hpp), so the fields are exactly the tool's:
+// (tools/powerkey/json_writer.hpp, field_value.hpp), so the fields are exactly the tool's:
 //
 //   {"table":..,"section":..,"model":..,"node":..,"id":"195","ext":false,"data":"040000002A",
 //    then for a frame row:   "kind":..,"fields":{..},"encoded":"HEX" (or "encode_error":..)

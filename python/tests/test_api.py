@@ -71,11 +71,30 @@ def test_node():
         powerkey.decode(*KEY3, model="pkp2400", node=0x80)
 
 
-def test_remote_and_error_frames_carry_no_message():
-    rtr = can.Message(arbitration_id=0x195, is_remote_frame=True, is_extended_id=False, dlc=5)
-    with pytest.raises(powerkey.DecodeError) as e:
-        powerkey.decode(rtr, model="pkp2400")
-    assert e.value.code == "unexpected_frame"
+def test_remote_fd_and_error_frames_carry_no_message():
+    frames = {
+        "remote frame": can.Message(arbitration_id=0x195, is_remote_frame=True,
+                                    is_extended_id=False, dlc=5),
+        "CAN FD frame": can.Message(arbitration_id=0x195, is_fd=True, is_extended_id=False,
+                                    data=KEY3[1]),
+        "error frame": can.Message(arbitration_id=0x195, is_error_frame=True,
+                                   is_extended_id=False, data=bytes(8)),
+    }
+    for kind, msg in frames.items():
+        assert powerkey.skipped_kind(msg) == kind
+        with pytest.raises(powerkey.DecodeError) as e:
+            powerkey.decode(msg, model="pkp2400")
+        assert e.value.code == "unexpected_frame"
+        with pytest.raises(powerkey.DecodeError):
+            powerkey.Session(model="pkp2400").step(msg)
+    # The Listener counts them by kind, as the tool does, and decodes the rest.
+    got = []
+    listener = powerkey.Listener(model="pkp2400", callback=lambda m, e: got.append(e))
+    for msg in [*frames.values(), frames["remote frame"],
+                can.Message(arbitration_id=KEY3[0], data=KEY3[1], is_extended_id=False)]:
+        listener.on_message_received(msg)
+    assert listener.skipped == {"remote frame": 2, "CAN FD frame": 1, "error frame": 1}
+    assert [e.message.kind for e in got] == ["key_state"]
 
 
 def test_fields_attributes_and_dict():
@@ -114,10 +133,68 @@ def test_encode_argument_errors():
     with pytest.raises(powerkey.EncodeError) as e:
         powerkey.encode("led_on", model="pkp2400", green=[33])
     assert e.value.code == "value_out_of_range"
-    with pytest.raises(TypeError):
-        powerkey.encode("led_on", model="pkp2400", green="3")
     with pytest.raises(powerkey.ArgumentError):
         powerkey.encode("nmt", model="pkp2400", command="jump")
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.encode("led_on", model="pkp2400", green="a")
+
+
+def tool_error(code="value_out_of_range", **kw):
+    """The text of the EncodeError of encode(**kw); its code is the errc encode() returned."""
+    with pytest.raises(powerkey.EncodeError) as e:
+        powerkey.encode(**kw)
+    assert e.value.code == code
+    return str(e.value)
+
+
+def test_encode_errors_speak_as_the_tool():
+    # The tool: powerkey: encode: led_on: red: '5' is more than a pkp2200 takes (1..4)
+    assert tool_error(kind="led_on", model="pkp2200", red=[5]) == \
+        "led_on: red: [5] is more than a pkp2200 takes (1..4)"
+    assert tool_error(kind="led_on", model="pk1000", red="29") == \
+        "led_on: red: [29] is more than a pk1000 takes (1..28)"
+    # The tool: powerkey: encode: led_brightness: level: 99 is outside 00h..3Fh
+    assert tool_error(kind="led_brightness", model="pk1000", level=99) == \
+        "led_brightness: level: 99 is outside 00h..3Fh"
+    assert tool_error(kind="sdo_write", model="pk1000", object="led_brightness", level="99") == \
+        "sdo_write: level: 99 is outside 00h..3Fh"
+    assert tool_error(kind="nmt", model="pk1000", target=128) == "nmt_message: target: 128 is outside 00h..7Fh"
+    assert tool_error(kind="encoder_state", model="pk1000", ticks=3, code="wrong_id") == \
+        "encoder_state is not a message of a pk1000"
+
+
+def test_kind_and_number_spellings_of_the_tool():
+    want = powerkey.encode("led_on", model="pkp2400", red=[1, 7], blue=[3])
+    for kw in ({"red": "1,7", "blue": "3"}, {"red": "1 7", "blue": [3]}):
+        got = powerkey.encode("led-on", model="pkp2400", **kw)
+        assert bytes(got.data) == bytes(want.data)
+    assert bytes(powerkey.encode("led_on", model="pk1000", red="1-28").data) == \
+        bytes.fromhex("FFFFFF0F00000000")
+    for node in (0x3A, "3Ah", "0x3A", "58"):
+        f = powerkey.encode("sdo_write", model="pk1000", node=node, object="node_id",
+                            node_id="3Ah")
+        assert (f.arbitration_id, bytes(f.data)) == (0x63A, bytes.fromhex("2F1320003A000000"))
+    assert powerkey.decode(0x195, KEY3[1], model="pkp2400", node="15h").keys == [3]
+    with pytest.raises(powerkey.DecodeError):
+        powerkey.decode(*KEY3, model="pkp2400", node="15")  # decimal, as the tool reads it: 0Fh
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.decode(*KEY3, model="pkp2400", node="fifteen")
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.decode(*KEY3, model="pkp2400", node="80h")
+
+
+def test_extended_id_hint():
+    # python-can makes a frame extended unless told otherwise.
+    msg = can.Message(arbitration_id=KEY3[0], data=KEY3[1])
+    assert msg.is_extended_id
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(msg, model="pkp2400")
+    assert e.value.code == "wrong_id_format"
+    assert "is_extended_id=False" in str(e.value) and "195h is key_state" in str(e.value)
+    # No hint for a frame that would not decode as standard either.
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(can.Message(arbitration_id=0x7E5, data=b"\x4c"), model="pkp2400")
+    assert "is_extended_id" not in str(e.value)
 
 
 def test_enum_fields_take_names_and_numbers():

@@ -1,16 +1,16 @@
 // powerkey encode: a frame from MESSAGE FIELD=VALUE..., or every frame of decode --json lines.
-#include "common.hpp"
-#include "log_formats.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+#include "field_value.hpp"
+#include "input.hpp"
+#include "refusal.hpp"
 
 #include <nlohmann/json.hpp>
 #include <powerkey/can/candump.hpp>
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,16 +20,22 @@ namespace tool {
 namespace {
 using namespace powerkey;
 
+struct encode_options {
+    bool json = false;
+    bool broadcast = false;
+    std::vector<std::string> args;  // MESSAGE FIELD=VALUE..., or with --json the files
+};
+
 // Builds the message of kind `kind` (one alternative of the flat message, found through
 // for_each_alternative); get(name, value) sets each field and returns "" or an error. The fields
 // of an SDO value follow its object, which is set first. Returns false for an unknown kind.
 template <class Get>
-bool build_any(model, std::string_view kind, const options& o, Get&& get, message& out,
-               std::string& error) {
+bool build_any(std::string_view kind, canopen::node_id node, bool broadcast, Get&& get,
+               message& out, std::string& error) {
     return for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
-        if (S::kind != current_kind(kind)) return false;
+        if (S::kind != kind) return false;
         S s{};
-        apply_defaults(s, o);
+        apply_defaults(s, node, broadcast);
         S::fields(s, [&](std::string_view name, auto& value) {
             if (!error.empty()) return;
             const auto e = get(name, value);
@@ -116,7 +122,7 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         return "";
     }
     if (!kind->is_string()) return "kind: expected a string";
-    const auto& kind_name = kind->get_ref<const std::string&>();
+    const auto kind_text = kind_name(kind->get_ref<const std::string&>());
     const auto fields = v.find("fields");
     if (fields != v.end() && !fields->is_object()) return "fields: expected an object";
     // Built for the line's node and checked against the logged frame; then, when --node names
@@ -134,16 +140,14 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
             return e;
         };
     };
-    options line_options = o;
-    line_options.node = line_node;
     message msg;
     std::string error;
-    if (!build_any(m, kind_name, line_options, get_for(false), msg, error))
-        return "kind: no message '" + escape(kind_name, 40) + "' for " + std::string(to_string(m)) +
+    if (!build_any(kind_text, line_node, false, get_for(false), msg, error))
+        return "kind: no message '" + escape(kind_text, 40) + "' for " + std::string(to_string(m)) +
                " (powerkey list --model " + std::string(to_string(m)) + " shows them)";
     if (!error.empty()) return "fields: " + error;
     const auto f = encode(line_node, m, msg);
-    if (!f) return "cannot encode " + kind_name + ": " + std::string(to_string(f.error()));
+    if (!f) return "cannot encode " + kind_text + ": " + std::string(to_string(f.error()));
     if (logged && *logged != *f)
         return "rebuilt " + cansend(*f) + " differs from the logged " + cansend(*logged);
     if (!retarget) {
@@ -151,71 +155,27 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         return "";
     }
     message moved;
-    if (!build_any(m, kind_name, o, get_for(true), moved, error) || !error.empty())
+    if (!build_any(kind_text, o.node, false, get_for(true), moved, error) || !error.empty())
         return "fields: " + error;
     const auto g = encode(o.node, m, moved);
     if (!g)
-        return "cannot encode " + kind_name + " for node " + std::to_string(o.node.value()) + ": " +
+        return "cannot encode " + kind_text + " for node " + std::to_string(o.node.value()) + ": " +
                std::string(to_string(g.error()));
     out = *g;
     return "";
 }
 
-// Calls f(line_number, text) for every line of a file ("-" = standard input).
-template <class F>
-bool for_each_line(const std::string& path, F&& f) {
-    const int fd = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY);
-    if (fd < 0) return false;
-    std::vector<char> chunk(1u << 16);
-    std::string carry;
-    std::size_t number = 0;
-    bool ok = true;
-    for (;;) {
-        const auto n = ::read(fd, chunk.data(), chunk.size());
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) {
-            ok = false;
-            break;
-        }
-        if (n == 0) break;
-        std::string_view data(chunk.data(), static_cast<std::size_t>(n));
-        while (!data.empty()) {
-            const auto nl = data.find('\n');
-            if (nl == std::string_view::npos) {
-                carry.append(data);
-                break;
-            }
-            carry.append(data.substr(0, nl));
-            f(++number, std::string_view(carry));
-            carry.clear();
-            data.remove_prefix(nl + 1);
-        }
-    }
-    if (!carry.empty()) f(++number, std::string_view(carry));
-    const int saved = errno;
-    if (fd != 0) ::close(fd);
-    errno = saved;
-    return ok;
-}
-
-}  // namespace
-
-int run_encode(const options& o) {
-    if (o.args.empty()) {
-        report("encode", "a MESSAGE is needed (powerkey list shows them)");
-        return 2;
-    }
-    std::string name = o.args[0];
-    for (char& c : name)
-        if (c == '-') c = '_';
+int run_encode(const options& o, const encode_options& eo) {
+    if (eo.args.empty())
+        return usage_error("encode: a MESSAGE is needed (powerkey list shows them)", false);
+    const std::string name = kind_name(eo.args[0]);
     std::vector<std::pair<std::string, std::string>> assignments;
-    for (std::size_t i = 1; i < o.args.size(); ++i) {
-        const auto eq = o.args[i].find('=');
-        if (eq == std::string::npos) {
-            report("encode", "expected FIELD=VALUE, got '" + escape(o.args[i], 40) + "'");
-            return 2;
-        }
-        assignments.emplace_back(o.args[i].substr(0, eq), o.args[i].substr(eq + 1));
+    for (std::size_t i = 1; i < eo.args.size(); ++i) {
+        const auto eq = eo.args[i].find('=');
+        if (eq == std::string::npos)
+            return usage_error("encode: expected FIELD=VALUE, got '" + escape(eo.args[i], 40) +
+                               "'");
+        assignments.emplace_back(eo.args[i].substr(0, eq), eo.args[i].substr(eq + 1));
     }
     std::vector<bool> used(assignments.size());
     auto get = [&](std::string_view field, auto& value) -> std::string {
@@ -228,124 +188,115 @@ int run_encode(const options& o) {
         }
         return "";
     };
+    const std::string model_name(to_string(o.keypad));
     message msg;
     std::string error;
-    bool found = false;
-    // The kinds of the old profiles ("pk1000_led_on", "pkp_led_on") are the same message.
-    for (std::string_view prefix : {"pk1000_", "pkp_"})
-        if (name.starts_with(prefix)) name.erase(0, prefix.size());
-    found = build_any(o.keypad, name, o, get, msg, error);
-    if (!found) {
-        report("encode", "no message '" + escape(o.args[0], 40) + "' for " +
-                             std::string(to_string(o.keypad)) + " (powerkey list --model " +
-                             std::string(to_string(o.keypad)) + " shows them)");
-        return 2;
-    }
+    if (!build_any(name, o.node, eo.broadcast, get, msg, error))
+        return usage_error("encode: no message '" + escape(eo.args[0], 40) + "' for " + model_name +
+                               " (powerkey list --model " + model_name + " shows them)",
+                           false);
     for (std::size_t i = 0; i < assignments.size(); ++i)
-        if (!used[i]) {
-            report("encode", "no field '" + escape(assignments[i].first, 40) + "' in " +
-                                 std::string(kind_of(msg)) + " (fields: " + field_names(msg) + ")");
-            return 2;
-        }
+        if (!used[i])
+            return usage_error("encode: no field '" + escape(assignments[i].first, 40) + "' in " +
+                                   std::string(kind_of(msg)) + " (fields: " + field_names(msg) +
+                                   ")",
+                               false);
     if (!error.empty()) {
         report("encode", error);
-        return 1;
+        return status_input;
     }
     const auto f = encode(o.node, o.keypad, msg);
-    if (!f) {
-        // The type took every value, the model did not (a key above a PKP-2200's four): find the
-        // field by leaving out one assignment at a time, then the values this model takes.
-        const std::string kind(kind_of(msg));
-        // A kind the model does not speak at all (the PKP-3500-MT's encoder messages elsewhere).
-        auto none = [](std::string_view, auto&) { return std::string(); };
-        message plain;
-        std::string ignored;
-        if (!kind.starts_with("sdo_") && kind != "command" &&
-            build_any(o.keypad, kind, o, none, plain, ignored) &&
-            !encode(o.node, o.keypad, plain).has_value()) {
-            report("encode", kind + " is not a message of a " + std::string(to_string(o.keypad)) +
-                                 " (powerkey list --model " + std::string(to_string(o.keypad)) +
-                                 " shows its messages)");
-            return 1;
-        }
-        auto encodes = [&](std::size_t skip, const std::string* replacement) {
-            auto g = [&](std::string_view field, auto& value) -> std::string {
-                for (std::size_t i = assignments.size(); i-- > 0;) {
-                    if (assignments[i].first != field) continue;
-                    if (i == skip && replacement == nullptr) return "";
-                    return set_from_text(value, i == skip ? *replacement : assignments[i].second,
-                                         field);
-                }
-                return "";
-            };
-            message m;
-            std::string e;
-            return build_any(o.keypad, kind, o, g, m, e) && e.empty() &&
-                   encode(o.node, o.keypad, m).has_value();
-        };
-        for (std::size_t i = 0; i < assignments.size(); ++i) {
-            if (!encodes(i, nullptr)) continue;
-            unsigned most = 0;
-            for (unsigned n = 1; n <= 64; ++n) {
-                const std::string t = std::to_string(n);
-                if (encodes(i, &t)) most = n;
-            }
-            report("encode", kind + ": " + assignments[i].first + ": '" +
-                                 escape(assignments[i].second, 32) + "' is more than a " +
-                                 std::string(to_string(o.keypad)) + " takes" +
-                                 (most > 0 ? " (1.." + std::to_string(most) + ")" : ""));
-            return 1;
-        }
-        report("encode", "cannot encode " + std::string(kind_of(msg)) + ": " +
+    if (f) {
+        std::printf("%s\n", cansend(*f).c_str());
+        return status_ok;
+    }
+    // Every field held a value of its type, the model refused the message: say which field.
+    const std::string kind(kind_of(msg));
+    const auto why = explain_refusal(msg, o.keypad, o.node,
+                                     [&](auto& s) { apply_defaults(s, o.node, eo.broadcast); });
+    if (why.kind == refusal::what::not_for_model) {
+        report("encode", kind + " is not a message of a " + model_name +
+                             " (powerkey list --model " + model_name + " shows its messages)");
+    } else if (why.kind == refusal::what::field) {
+        std::string given = "its value";
+        for (const auto& [field, value] : assignments)
+            if (field == why.field) given = "'" + escape(value, 32) + "'";
+        report("encode", kind + ": " + std::string(why.field) + ": " + given +
+                             (why.most > 0 ? " is more than a " : " is not what a ") + model_name +
+                             " takes" +
+                             (why.most > 0 ? " (1.." + std::to_string(why.most) + ")" : ""));
+    } else {
+        report("encode", "cannot encode " + kind + " for a " + model_name + ": " +
                              std::string(to_string(f.error())) + " (fields: " + field_names(msg) +
                              ")");
-        return 1;
     }
-    std::printf("%s\n", cansend(*f).c_str());
-    return 0;
+    return status_input;
 }
 
-int run_encode_json(const options& o) {
+int run_encode_json(const options& o, const encode_options& eo) {
     output out;
-    std::vector<std::string> files = o.args;
-    if (files.empty()) files.push_back("-");
-    for (const auto& path : files) {
-        const auto label = file_label(path);
-        struct stat st {};
-        const bool live = path == "-" && (::fstat(0, &st) != 0 || !S_ISREG(st.st_mode));
-        const bool ok = for_each_line(path, [&](std::size_t number, std::string_view text) {
-            while (!text.empty() && (text.back() == '\r' || text.back() == ' '))
-                text.remove_suffix(1);
+    struct stat st {};
+    const bool live = ::fstat(0, &st) != 0 || !S_ISREG(st.st_mode);
+    std::string current;
+    std::optional<problem_cap> problems;
+    read_lines(
+        eo.args, out, [&](const std::string& label, std::size_t number, std::string_view text) {
+            if (!problems || current != label) {
+                if (problems) problems->finish();
+                problems.emplace(label);
+                current = label;
+            }
+            while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
             if (text.find_first_not_of(" \t") == std::string_view::npos) return;
-            std::string error;
+            std::string error, why;
             can::frame f;
             if (nesting(text) > 4) {
-                error = "JSON nested too deeply (decode --json lines nest 2 deep)";
+                why = "JSON nested too deeply (decode --json lines nest 2 deep)";
             } else {
                 const auto v = nlohmann::json::parse(text, nullptr, false);
-                if (v.is_discarded())
-                    error = "not a JSON object: '" + escape(text, 40) + "'";
-                else
-                    error = frame_of_json(o, v, f);
+                if (v.is_discarded()) {
+                    why = "not a JSON object";
+                    error = std::string(text);
+                } else {
+                    why = frame_of_json(o, v, f);
+                }
             }
-            if (!error.empty()) {
+            if (!why.empty()) {
                 out.flush();
-                report(label + ":" + std::to_string(number), error);
+                problems->add(number, why, error, false, why.substr(0, why.find_first_of(":'(")));
                 return;
             }
             out.buffer() += can::format_candump(f).view();
             out.buffer() += '\n';
-            if (live)
+            if (live && eo.args.empty())
                 out.flush();  // a replay through a pipe sends each frame as it comes
             else
                 out.maybe_flush();
         });
-        if (!ok) {
-            out.flush();
-            report(label, std::strerror(errno));
-        }
-    }
-    return failures == 0 ? 0 : 1;
+    out.flush();
+    if (problems) problems->finish();
+    return status();
+}
+
+}  // namespace
+
+void add_encode(registry& r) {
+    static encode_options o;
+    auto& sub = r.add(
+        {"encode",
+         "[--model M] [--node N] [--broadcast] MESSAGE [FIELD=VALUE...]\n"
+         "--json [--model M] [--node N] [FILE...]",
+         "a frame from a message and its fields, or the frames of decode --json lines",
+         "  --json       read decode --json lines (with --node N the frames are re-targeted to\n"
+         "               node N)\n"
+         "  --broadcast  an NMT command for every node (target 0) instead of --node\n"},
+        [&r] {
+            if (o.json && o.broadcast) return usage_error("--broadcast is not an option of --json");
+            return o.json ? run_encode_json(r.common(), o) : run_encode(r.common(), o);
+        });
+    sub.add_flag("--json", o.json);
+    sub.add_flag("--broadcast", o.broadcast);
+    sub.add_option("ARG", o.args);
 }
 
 }  // namespace tool

@@ -13,8 +13,11 @@
 //   blf         Vector BLF, objects CAN_MESSAGE/CAN_MESSAGE2/CAN_FD_MESSAGE(_64) in plain or zlib
 //               compressed log containers
 //
-// Remote frames, CAN FD frames and error frames are valid log content the tool cannot decode;
-// they are counted by kind (`skipped`), not reported per line.
+// Remote frames, CAN FD frames and error frames are valid log content the codec cannot decode;
+// they are counted by kind (`skipped`), not reported per line, and remote and CAN FD frames are
+// handed to the sink as far as the log gives them (`powerkey convert` writes them on).
+//
+// Untrusted input is bounded here: `limits` holds every cap the readers apply.
 #ifndef POWERKEY_TOOL_LOG_FORMATS_HPP
 #define POWERKEY_TOOL_LOG_FORMATS_HPP
 
@@ -23,6 +26,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +49,28 @@ enum class skip : std::uint8_t { remote, fd, error_frame };
 inline constexpr std::size_t skip_kinds = 3;
 [[nodiscard]] std::string_view to_string(skip s) noexcept;
 
+// A remote or CAN FD frame, as far as the log gives it.
+struct other_record {
+    skip kind = skip::remote;
+    std::uint32_t id = 0;
+    bool extended = false;
+    std::uint8_t length = 0;             // remote: the length it asks for; CAN FD: data bytes
+    std::span<const std::uint8_t> data;  // CAN FD: 0..64 bytes. Valid in the call only.
+    bool bit_rate_switch = false;        // CAN FD: BRS, when the log says
+    std::string_view time;               // as in record
+    std::string_view interface;
+    std::size_t line = 0;
+};
+
+// The caps on what untrusted input can make a reader hold. One place, so that hardening has one
+// place to change.
+struct limits {
+    // A BLF log container is unpacked into memory: writers use about 128 KiB.
+    static constexpr std::uint32_t blf_container_bytes = 16u << 20;
+    // A BLF file header (the writers' is 144 bytes).
+    static constexpr std::uint32_t blf_header_bytes = 4096;
+};
+
 // Receives what a reader finds. `problem` is a line that should have been a frame and is not:
 // `why` is one short phrase (a constant), `text` the line (untrusted: escape before printing).
 class sink {
@@ -52,6 +78,8 @@ public:
     virtual ~sink() = default;
     virtual void frame(const record& r) = 0;
     virtual void problem(std::size_t line, std::string_view why, std::string_view text) = 0;
+    // A remote or CAN FD frame (already counted in skipped()); most sinks ignore them.
+    virtual void other(const other_record&) {}
 };
 
 // One input stream. Feed it the bytes in any chunks; finish() at the end.
@@ -80,6 +108,7 @@ private:
     bool detect_binary(std::string_view first_bytes);
     void detect(std::string_view first);
     void candump_line(std::string_view s);
+    bool candump_fast(std::string_view s);
     void asc_line(std::string_view s);
     void trc_line(std::string_view s);
     void csv_line(std::string_view s);
@@ -90,6 +119,9 @@ private:
     void emit_raw(std::uint32_t id, bool extended, std::span<const std::uint8_t> data,
                   std::string_view time, std::string_view interface);
     void skip_one(skip s);
+    void other(skip s, std::uint32_t id, bool extended, std::size_t length,
+               std::span<const std::uint8_t> data, std::string_view time,
+               std::string_view interface, bool brs = false);
     void bad(std::string_view why, std::string_view text);
 
     sink& out_;

@@ -1,6 +1,8 @@
 // powerkey list: every message kind of a model, with its fields and their defaults, as encode
 // takes them: `led_on red=- green=- blue=-`. A value with a space is quoted for the shell.
-#include "common.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+#include "refusal.hpp"
 
 #include <powerkey/keypad/codec.hpp>
 
@@ -11,25 +13,16 @@ namespace tool {
 
 namespace {
 
-// Listed for a model: every kind whose default message encodes for it (so the PKP-3500-MT's
-// encoder messages only for it, J1939 only for the keypads that have it), the SDO kinds always
-// (their fields follow the object; object=... picks it), and the PKP command where the model's
-// dictionary has the command module (6500h/1).
-bool listed(const options& o, std::string_view kind, const powerkey::message& m) {
-    if (powerkey::encode(o.node, o.keypad, m)) return true;
-    if (kind.starts_with("sdo_")) return true;
-    const auto mi = powerkey::info(o.keypad);
-    return kind == "command" && mi &&
-           powerkey::find_row(mi->dictionary, powerkey::object::command_module).has_value();
-}
-
+// Listed for a model: every kind the model has (refusal.hpp speaks: its default message
+// encodes, or does with a field set to a number, such as a key), so the PKP-3500-MT's encoder
+// messages only for it, J1939 only for the keypads that have it.
 void list_kinds(const options& o) {
     std::string out;
     powerkey::for_each_alternative<powerkey::message>([&]<class S>(std::type_identity<S>) {
         S s{};
-        apply_defaults(s, o);
+        apply_defaults(s, o.node);
         const powerkey::message m{s};
-        if (!listed(o, S::kind, m)) return false;
+        if (!speaks(s, o.keypad, o.node)) return false;
         out += S::kind;
         // The values exactly as decode's text prints them (describe), quoted when they hold a
         // space.
@@ -48,9 +41,15 @@ void list_kinds(const options& o) {
 
 }  // namespace
 
-int run_list(const options& o) {
-    list_kinds(o);
-    return 0;
+void add_list(registry& r) {
+    r.add({"list",
+           "[--model M] [--node N]",
+           "every message of a model, with its fields as encode fills them",
+           {}},
+          [&r] {
+              list_kinds(r.common());
+              return status_ok;
+          });
 }
 
 }  // namespace tool

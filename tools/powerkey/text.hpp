@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -90,6 +91,44 @@ inline constexpr int hex_digits(std::uint64_t max) {
     }
     return d;
 }
+
+// What a line of output costs is the number of appends to the output string, not the
+// formatting. A line in a stack buffer, appended to the string when full and when flushed:
+// one append a line.
+class line_out {
+public:
+    explicit line_out(std::string& s) : s_(s) {}
+    line_out(const line_out&) = delete;
+    line_out& operator=(const line_out&) = delete;
+    ~line_out() { flush(); }
+    void put(char c) {
+        if (n_ == capacity) flush();
+        b_[n_++] = c;
+    }
+    void put(std::string_view v) {
+        if (v.size() > capacity - n_) {
+            flush();
+            if (v.size() > capacity) return s_.append(v), void();
+        }
+        std::memcpy(b_ + n_, v.data(), v.size());
+        n_ += v.size();
+    }
+    template <class F>
+    void put_with(std::size_t max, F&& f) {
+        if (max > capacity - n_) flush();
+        n_ += f(b_ + n_);
+    }
+    void flush() {
+        s_.append(b_, n_);
+        n_ = 0;
+    }
+
+private:
+    static constexpr std::size_t capacity = 1024;
+    std::string& s_;
+    char b_[capacity];
+    std::size_t n_ = 0;
+};
 
 }  // namespace tool
 

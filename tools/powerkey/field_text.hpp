@@ -1,32 +1,30 @@
-// powerkey tool: field values both ways, for every field type of the kind/fields convention.
-// What the text output prints (describe() of the library), encode accepts back:
-//   bool                  yes/no (also true/false, on/off, 1/0); JSON true/false
+// powerkey tool: field values as text, both ways, for every field type of the kind/fields
+// convention. What the text output prints (describe() of the library), encode takes back:
+//   bool                  yes/no (also true/false, on/off, 1/0)
 //   integers, bounded     hex with h (3Ah) but counts and times (tick, period_ms, size, ...) in
 //                         decimal, as describe() prints them; encode also takes 58 and 0x3A
 //   enums                 their name from the enum's table (names.hpp; aliases are taken too), or
 //                         the number (hex with h) for a value without a name
-//   std::array<uint8_t>   hex bytes "72 69 6E" (with or without spaces); JSON "72696E"
-//   index_set<N>          "1 7", "1-28" or "-" for none (also 1,7); JSON [1,7]
-// Reading JSON goes through nlohmann::json; writing JSON through json_writer.hpp.
-#ifndef POWERKEY_TOOL_FIELD_VALUE_HPP
-#define POWERKEY_TOOL_FIELD_VALUE_HPP
+//   std::array<uint8_t>   hex bytes "72 69 6E" (with or without spaces)
+//   index_set<N>          "1 7", "1-28" or "-" for none (also 1,7)
+// Errors name the allowed values or range. Host-only (std::string), no other dependency: the
+// Python module reads text values through the same functions. JSON: field_value.hpp.
+#ifndef POWERKEY_TOOL_FIELD_TEXT_HPP
+#define POWERKEY_TOOL_FIELD_TEXT_HPP
 
-#include "json_writer.hpp"
+#include "numbers.hpp"
 #include "text.hpp"
 
-#include <nlohmann/json.hpp>
 #include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/names.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <utility>
-#include <vector>
 
 namespace tool {
 
@@ -47,36 +45,21 @@ std::string enum_name_list() {
     return s;
 }
 
+// --- message kinds ------------------------------------------------------------------------------
+
+// A message kind as people write it: led-on or led_on; the kinds of the old per-family profiles
+// (pk1000_led_on, pkp_led_on) are the same message, and the spellings before kinds were their
+// structs' names (nmt for nmt_message: powerkey::current_kind) still read.
+inline std::string kind_name(std::string_view text) {
+    std::string name(text);
+    for (char& c : name)
+        if (c == '-') c = '_';
+    for (std::string_view prefix : {"pk1000_", "pkp_"})
+        if (name.starts_with(prefix)) name.erase(0, prefix.size());
+    return std::string(powerkey::current_kind(name));
+}
+
 // --- numbers ------------------------------------------------------------------------------------
-
-inline int hex_digit_value(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
-}
-
-// 58, 0x3A or 3Ah.
-inline bool parse_number(std::string_view s, std::uint64_t& out) {
-    int base = 10;
-    if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
-        base = 16;
-        s.remove_prefix(2);
-    } else if (s.size() > 1 && (s.back() == 'h' || s.back() == 'H')) {
-        base = 16;
-        s.remove_suffix(1);
-    }
-    if (s.empty() || s.size() > 16) return false;
-    std::uint64_t v = 0;
-    for (char c : s) {
-        const int d = hex_digit_value(c);
-        if (d < 0 || d >= base) return false;
-        if (base == 10 && v > (std::numeric_limits<std::uint64_t>::max() - 9) / 10) return false;
-        v = v * static_cast<std::uint64_t>(base) + static_cast<std::uint64_t>(d);
-    }
-    out = v;
-    return true;
-}
 
 // Fields whose numbers print in hex (with h): all but counts and times, the rule of describe()
 // (powerkey::is_decimal_field), so that errors quote ranges the way decode's text prints values.
@@ -100,39 +83,6 @@ void write_text_value(std::string& out, std::string_view name, const T& v) {
     powerkey::text_writer w(buf);
     powerkey::describe_value(w, name, v);
     out += w.view();
-}
-
-// --- JSON writing -------------------------------------------------------------------------------
-
-template <class T>
-void write_json_value(json::object_writer& w, const T& v) {
-    if constexpr (std::is_same_v<T, bool>) {
-        w.boolean(v);
-    } else if constexpr (std::is_enum_v<T>) {
-        if (powerkey::is_named(v))
-            w.string(powerkey::to_string(v));
-        else
-            w.number(static_cast<std::uint64_t>(v));
-    } else if constexpr (powerkey::is_index_set<T>::value) {
-        w.raw("[");
-        bool first = true;
-        for (unsigned i = 1; i <= T::max; ++i) {
-            if (!v.contains(i)) continue;
-            if (!first) w.raw(",");
-            first = false;
-            w.number(i);
-        }
-        w.raw("]");
-    } else if constexpr (powerkey::is_byte_array<T>::value) {
-        std::string hex;
-        for (auto b : v) append_hex(hex, b, 2);
-        w.string(hex);
-    } else if constexpr (powerkey::is_bounded<T>::value) {
-        w.number(v.value());
-    } else {
-        static_assert(std::is_integral_v<T>, "a field type outside the kind/fields convention");
-        w.number(static_cast<std::uint64_t>(v));
-    }
 }
 
 // --- reading ------------------------------------------------------------------------------------
@@ -207,8 +157,8 @@ std::string set_from_text(T& v, std::string_view s, std::string_view name = "") 
                 ++i;
                 continue;
             }
-            const int hi = i + 1 < s.size() ? hex_digit_value(s[i]) : -1;
-            const int lo = i + 1 < s.size() ? hex_digit_value(s[i + 1]) : -1;
+            const int hi = i + 1 < s.size() ? hex_digit(s[i]) : -1;
+            const int lo = i + 1 < s.size() ? hex_digit(s[i + 1]) : -1;
             if (hi < 0 || lo < 0 || n == v.size()) return shown + expected;
             bytes[n++] = static_cast<std::uint8_t>((hi << 4) | lo);
             i += 2;
@@ -251,32 +201,6 @@ std::string set_from_number(T& v, std::uint64_t n, std::string_view name) {
     } else {
         return "expected hex bytes like \"72696E\"";
     }
-}
-
-template <class T>
-std::string set_from_json(T& v, const nlohmann::json& j, std::string_view name = "") {
-    if (j.is_string()) return set_from_text(v, j.get_ref<const std::string&>(), name);
-    if (j.is_number_unsigned()) return set_from_number(v, j.get<std::uint64_t>(), name);
-    if (j.is_number_integer()) return "a negative number";
-    if (j.is_boolean()) {
-        if constexpr (std::is_same_v<T, bool>) return v = j.get<bool>(), "";
-        return "unexpected true/false";
-    }
-    if (j.is_array()) {
-        if constexpr (powerkey::is_index_set<T>::value) {
-            T set{};
-            for (const auto& item : j) {
-                if (!item.is_number_unsigned() || item.get<std::uint64_t>() < 1 ||
-                    item.get<std::uint64_t>() > T::max)
-                    return "expected numbers 1.." + std::to_string(T::max);
-                set.insert(static_cast<unsigned>(item.get<std::uint64_t>()));
-            }
-            v = set;
-            return "";
-        }
-        return "unexpected array";
-    }
-    return "unexpected value";
 }
 
 }  // namespace tool

@@ -1,9 +1,9 @@
-// powerkey tool: what the subcommands share: the options, model names, error reporting, the
-// output buffer, and the text of a message.
+// powerkey tool: what the subcommands share: the common options, model names, error reporting
+// and exit status, the output buffer, and the text of a message.
 #ifndef POWERKEY_TOOL_COMMON_HPP
 #define POWERKEY_TOOL_COMMON_HPP
 
-#include "field_value.hpp"
+#include "field_text.hpp"
 #include "text.hpp"
 
 #include <powerkey/canopen/node_id.hpp>
@@ -24,21 +24,20 @@
 
 namespace tool {
 
+// The options every subcommand shares (cli.hpp); each subcommand keeps its own beside it.
 struct options {
     powerkey::model keypad = powerkey::model::pk1000;
-    bool model_auto = false;
-    bool model_given = false;
+    bool model_auto = false;   // --model auto (decode)
+    bool model_given = false;  // --model named a model
     powerkey::canopen::node_id node = powerkey::canopen::default_node_id;
     bool node_given = false;
-    bool json = false;
-    bool show = false;
-    bool broadcast = false;
-    // For the benchmark (scripts/bench_cli.sh): read and parse only, or decode without output.
-    bool parse_only = false;
-    bool quiet = false;
-    bool nlohmann_writer = false;  // decode --json through nlohmann::json (for the benchmark)
-    std::vector<std::string> args;
 };
+
+// The exit status, the same for every subcommand (docs/cli.md).
+inline constexpr int status_ok = 0;     // every input read, nothing wrong found
+inline constexpr int status_input = 1;  // input that could not be read, a value refused, or
+                                        // (check) a problem found in the log
+inline constexpr int status_usage = 2;  // the command line itself is wrong
 
 // A model from a name as people write it: any case, with or without dashes or underscores, as
 // the manuals write it (PKP-2400-LI, PKP-3500-MT) or as the keypad reports it (PKU2400):
@@ -68,9 +67,15 @@ inline void report(std::string_view where, std::string_view what, bool failure =
     if (failure) ++failures;
 }
 
-inline std::string file_label(const std::string& path) {
-    return path == "-" ? std::string("<stdin>") : escape(path, 200);
+// A usage error: one line, status 2; `hint` ends it with where the usage is, for messages that
+// do not say themselves where to look.
+inline int usage_error(std::string_view what, bool hint = true) {
+    report("", std::string(what) + (hint ? " (powerkey help shows the usage)" : ""));
+    return status_usage;
 }
+
+// The status after reading: 1 when anything was reported as a failure.
+inline int status() { return failures == 0 ? status_ok : status_input; }
 
 // Standard output, buffered. Live mode (a pipe or terminal on either side) flushes after every
 // chunk of input, so each frame's line appears as soon as the frame arrives.
@@ -131,17 +136,11 @@ inline std::vector<std::pair<std::string, std::string>> described_fields(
 // Defaults that depend on the command line: an NMT command goes to --node, not to every node on
 // the bus, unless --broadcast (or target=0) says so.
 template <class S>
-void apply_defaults(S& s, const options& o) {
-    S::fields(s, [&o](std::string_view name, auto& value) {
-        if (name == "target") (void)set_from_number(value, o.broadcast ? 0u : o.node.value(), name);
+void apply_defaults(S& s, powerkey::canopen::node_id node, bool broadcast = false) {
+    S::fields(s, [&](std::string_view name, auto& value) {
+        if (name == "target") (void)set_from_number(value, broadcast ? 0u : node.value(), name);
     });
 }
-
-int run_decode(const options& o);
-int run_encode(const options& o);
-int run_encode_json(const options& o);
-int run_list(const options& o);
-int run_export_dbc(const options& o);  // cmd_export.cpp
 
 }  // namespace tool
 

@@ -4,6 +4,8 @@
 // (tests/test_log_formats.sh).
 #include "log_formats.hpp"
 
+#include "numbers.hpp"
+
 #include <zlib.h>
 
 #include <cstdio>
@@ -24,35 +26,26 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-std::string_view next_token(std::string_view& s) {
+// The next word of s (words are split by spaces and tabs), taken off s; `hash` is where its
+// first '#' is (npos: none), found in the same pass. Called a few times for every line: always
+// inlined.
+[[gnu::always_inline]] inline std::string_view next_token(std::string_view& s, std::size_t& hash) {
     std::size_t i = 0;
     while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
     std::size_t n = i;
-    while (n < s.size() && s[n] != ' ' && s[n] != '\t') ++n;
+    hash = std::string_view::npos;
+    for (; n < s.size(); ++n) {
+        const char c = s[n];
+        if (c == ' ' || c == '\t') break;
+        if (c == '#' && hash == std::string_view::npos) hash = n - i;
+    }
     const auto t = s.substr(i, n - i);
     s.remove_prefix(n);
     return t;
 }
-
-int hex_value(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
-}
-
-// A hex (at most 8 digits) or decimal number that fits 32 bits; false for anything else.
-bool parse_uint(std::string_view s, std::uint32_t& out, int base = 16) {
-    if (s.empty() || s.size() > (base == 16 ? 8u : 10u)) return false;
-    std::uint64_t v = 0;
-    for (char c : s) {
-        const int d = hex_value(c);
-        if (d < 0 || d >= base) return false;
-        v = v * static_cast<unsigned>(base) + static_cast<unsigned>(d);
-    }
-    if (v > 0xFFFF'FFFFu) return false;
-    out = static_cast<std::uint32_t>(v);
-    return true;
+[[gnu::always_inline]] inline std::string_view next_token(std::string_view& s) {
+    std::size_t hash = 0;
+    return next_token(s, hash);
 }
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
@@ -238,6 +231,16 @@ void reader::skip_one(skip s) {
     if (skipped_[i]++ == 0) first_skipped_[i] = line_;
 }
 
+void reader::other(skip s, std::uint32_t id, bool extended, std::size_t length,
+                   std::span<const std::uint8_t> data, std::string_view time,
+                   std::string_view interface, bool brs) {
+    skip_one(s);
+    if (extended ? id > 0x1FFF'FFFFu : id > 0x7FFu) return;  // counted, not passed on
+    if (length > 64 || data.size() > 64) return;
+    out_.other(other_record{s, id, extended, static_cast<std::uint8_t>(length), data, brs, time,
+                            interface, line_});
+}
+
 void reader::bad(std::string_view why, std::string_view text) {
     ++problems_;
     out_.problem(line_, why, text);
@@ -302,26 +305,77 @@ void reader::detect(std::string_view s) {
 // --- candump, cansend and candump's screen form
 // ---------------------------------------------------
 
+// The form of nearly every line of a large log, candump -l's "(SECONDS) IFACE ID#DATA" (a 3- or
+// 8-digit id, hex pairs, nothing after), read in one pass. Anything else, or anything odd, is
+// left to candump_line's general way (false), which reads these lines the same.
+bool reader::candump_fast(std::string_view s) {
+    const std::size_t n = s.size();
+    std::size_t i = 1;  // s[0] is '('
+    std::size_t whole = 0, fraction = 0;
+    bool point = false;
+    for (; i < n; ++i) {
+        const char c = s[i];
+        if (c >= '0' && c <= '9')
+            ++(point ? fraction : whole);
+        else if (c == '.' && !point)
+            point = true;
+        else
+            break;
+    }
+    if (i + 1 >= n || s[i] != ')' || s[i + 1] != ' ' || whole + fraction == 0 || whole > 12)
+        return false;
+    const auto time = s.substr(1, i - 1);
+    i += 2;
+    const std::size_t interface_at = i;
+    while (i < n && s[i] != ' ' && s[i] != '\t' && s[i] != '#') ++i;
+    if (i >= n || s[i] != ' ' || i == interface_at) return false;
+    const auto interface = s.substr(interface_at, i - interface_at);
+    const std::size_t id_at = ++i;
+    std::uint32_t id = 0;
+    for (int d = 0; i < n && (d = hex_digit(s[i])) >= 0; ++i)
+        id = (id << 4) | static_cast<std::uint32_t>(d);
+    const std::size_t digits = i - id_at;
+    if (i >= n || s[i] != '#' || (digits != 3 && digits != 8)) return false;
+    const bool extended = digits == 8;
+    if (extended ? id > 0x1FFF'FFFFu : id > 0x7FFu) return false;  // error frames, bad ids
+    ++i;
+    std::array<std::uint8_t, 8> data{};
+    std::size_t k = 0;
+    for (; i + 1 < n && k < data.size(); i += 2) {
+        const int hi = hex_digit(s[i]);
+        const int lo = hex_digit(s[i + 1]);
+        if (hi < 0 || lo < 0) break;
+        data[k++] = static_cast<std::uint8_t>((hi << 4) | lo);
+    }
+    if (i != n) return false;  // a direction, dots, an odd digit, a ninth byte, R, #...
+    emit_raw(id, extended, {data.data(), k}, time, interface);
+    return true;
+}
+
 void reader::candump_line(std::string_view s) {
+    if (s.front() == '(' && candump_fast(s)) return;
     if (s.front() == '#' || starts_with(s, "//")) return;
     const auto whole = s;
     std::string_view time;
     if (s.front() == '(') {
         const auto close = s.find(')');
         if (close == std::string_view::npos) return bad("unclosed timestamp", whole);
-        time = s.substr(1, close - 1);
+        time = trim(s.substr(1, close - 1));
+        if (!is_seconds(time))
+            return bad("malformed timestamp (expected seconds like 1700000000.000000)", whole);
         s.remove_prefix(close + 1);
     }
     std::string_view rest = s;
-    const std::string_view first = next_token(rest);
+    std::size_t hash = 0;  // where the '#' of the frame's word is
+    const std::string_view first = next_token(rest, hash);
     std::string_view interface;
     std::string_view frame_text;
-    if (first.find('#') != std::string_view::npos) {
+    if (hash != std::string_view::npos) {
         frame_text = first;  // cansend form, maybe after a timestamp
     } else {
         interface = first;
-        std::string_view second = next_token(rest);
-        if (second.find('#') != std::string_view::npos) {
+        std::string_view second = next_token(rest, hash);
+        if (hash != std::string_view::npos) {
             frame_text = second;  // candump -l / -L form
         } else {
             // The screen form: [RX|TX flag flag] ID [len] bytes... ['ascii'] or "remote request"
@@ -333,29 +387,35 @@ void reader::candump_line(std::string_view s) {
             const std::string_view len = next_token(rest);
             std::uint32_t id = 0;
             if (len.size() < 3 || len.front() != '[' || len.back() != ']' ||
-                !parse_uint(second, id))
+                !parse_digits(second, id))
                 return bad("not a frame (expected ID#DATA or a candump line)", whole);
             if (second.size() != 3 && second.size() != 8)
                 return bad("identifier of other than 3 or 8 hex digits", whole);
             std::uint32_t count = 0;
-            if (!parse_uint(len.substr(1, len.size() - 2), count, 10))
+            if (!parse_digits(len.substr(1, len.size() - 2), count, 10))
                 return bad("the [length] is not a number", whole);
             const bool extended = second.size() == 8;
             if (extended && (id & can_err_flag) != 0) return skip_one(skip::error_frame);
-            if (count > 8) return skip_one(skip::fd);
-            std::array<std::uint8_t, 8> data{};
+            // CAN FD: candump prints its length with two digits ([08], [64])
+            const bool fd = count > 8 || len.size() == 4;
+            const std::size_t most = fd ? 64 : 8;
+            std::array<std::uint8_t, 64> data{};
             std::size_t n = 0;
             for (auto b = next_token(rest); !b.empty(); b = next_token(rest)) {
-                if (b == "remote") return skip_one(skip::remote);
+                if (b == "remote") {
+                    if (fd || count > 8) return bad("a remote frame of more than 8 bytes", whole);
+                    return other(skip::remote, id, extended, count, {}, time, interface);
+                }
                 if (b.front() == '\'' || b == "ERRORFRAME") break;  // -a text, -e marker
-                if (b.size() != 2 || hex_value(b[0]) < 0 || hex_value(b[1]) < 0)
+                if (b.size() != 2 || hex_digit(b[0]) < 0 || hex_digit(b[1]) < 0)
                     return bad("data bytes must be two hex digits each", whole);
-                if (n == 8) return bad("more than 8 data bytes", whole);
-                data[n++] = static_cast<std::uint8_t>((hex_value(b[0]) << 4) | hex_value(b[1]));
+                if (n == most) return bad("more data bytes than a CAN frame holds", whole);
+                data[n++] = static_cast<std::uint8_t>((hex_digit(b[0]) << 4) | hex_digit(b[1]));
             }
             if (n != count) return bad("the [length] does not match the data bytes", whole);
             if (!extended && id > 0x7FF) return bad("identifier out of range", whole);
             if (extended && id > 0x1FFF'FFFF) return bad("identifier out of range", whole);
+            if (fd) return other(skip::fd, id, extended, n, {data.data(), n}, time, interface);
             return emit_raw(id, extended, {data.data(), n}, time, interface);
         }
     }
@@ -363,19 +423,34 @@ void reader::candump_line(std::string_view s) {
     const auto after = next_token(rest);
     if (!after.empty() && !((after == "R" || after == "T") && trim(rest).empty()))
         return bad("unexpected text after the frame", whole);
-    const auto hash = frame_text.find('#');
     const auto id_text = frame_text.substr(0, hash);
-    const std::string_view data_text = frame_text.substr(hash + 1);
+    std::string_view data_text = frame_text.substr(hash + 1);
     std::uint32_t id = 0;
-    if (!parse_uint(id_text, id)) return bad("malformed frame (expected ID#DATA)", whole);
+    if (!parse_digits(id_text, id)) return bad("malformed frame (expected ID#DATA)", whole);
     if (id_text.size() != 3 && id_text.size() != 8)
         return bad("identifier of other than 3 or 8 hex digits", whole);
     const bool extended = id_text.size() == 8;
     if (extended && (id & can_err_flag) != 0) return skip_one(skip::error_frame);
-    if (!data_text.empty() && data_text.front() == '#') return skip_one(skip::fd);
-    if (!data_text.empty() && (data_text.front() == 'R' || data_text.front() == 'r'))
-        return skip_one(skip::remote);
-    std::array<std::uint8_t, 8> data{};
+    if (!extended && id > 0x7FF) return bad("identifier out of range", whole);
+    if (extended && id > 0x1FFF'FFFF) return bad("identifier out of range", whole);
+    // ID#R and ID#R5: a remote frame, with the length it asks for (can-utils lib.c)
+    if (!data_text.empty() && (data_text.front() == 'R' || data_text.front() == 'r')) {
+        const int asked = data_text.size() == 2 ? hex_digit(data_text[1]) : 0;
+        if (data_text.size() > 2 || asked < 0 || asked > 8)
+            return bad("malformed remote frame (expected ID#R or ID#R and a length 0..8)", whole);
+        return other(skip::remote, id, extended, static_cast<std::size_t>(asked), {}, time,
+                     interface);
+    }
+    // ID##FDATA: CAN FD, F the flags digit (1: bit-rate switch, 2: error state indicator)
+    const bool fd = !data_text.empty() && data_text.front() == '#';
+    int fd_flags = 0;
+    if (fd) {
+        fd_flags = data_text.size() > 1 ? hex_digit(data_text[1]) : -1;
+        if (fd_flags < 0) return bad("malformed CAN FD frame (expected ID##FLAGS DATA)", whole);
+        data_text.remove_prefix(2);
+    }
+    const std::size_t most = fd ? 64 : 8;
+    std::array<std::uint8_t, 64> data{};
     std::size_t n = 0;
     for (std::size_t i = 0; i < data_text.size();) {
         if (data_text[i] == '.') {  // cansend's 01.02.03
@@ -383,15 +458,16 @@ void reader::candump_line(std::string_view s) {
             continue;
         }
         if (i + 1 >= data_text.size()) return bad("odd number of hex digits in the data", whole);
-        const int hi = hex_value(data_text[i]);
-        const int lo = hex_value(data_text[i + 1]);
+        const int hi = hex_digit(data_text[i]);
+        const int lo = hex_digit(data_text[i + 1]);
         if (hi < 0 || lo < 0) return bad("malformed frame (expected ID#DATA)", whole);
-        if (n == 8) return bad("more than 8 data bytes", whole);
+        if (n == most) return bad(fd ? "more than 64 data bytes" : "more than 8 data bytes", whole);
         data[n++] = static_cast<std::uint8_t>((hi << 4) | lo);
         i += 2;
     }
-    if (!extended && id > 0x7FF) return bad("identifier out of range", whole);
-    if (extended && id > 0x1FFF'FFFF) return bad("identifier out of range", whole);
+    if (fd)
+        return other(skip::fd, id, extended, n, {data.data(), n}, time, interface,
+                     (fd_flags & 1) != 0);
     emit_raw(id, extended, {data.data(), n}, time, interface);
 }
 
@@ -406,24 +482,25 @@ void reader::asc_line(std::string_view s) {
     std::string_view rest = s;
     const auto time = next_token(rest);
     if (time.empty() || time.front() < '0' || time.front() > '9') return;  // header, comments
+    if (!is_seconds(time)) return bad("malformed ASC line (time)", s);
     auto channel = next_token(rest);
     const int base = asc_decimal_ ? 10 : 16;
     auto interface_of = [this](std::string_view ch) -> std::string_view {
         std::uint32_t n = 0;
-        if (!parse_uint(ch, n, 10) || n == 0) return ch;
+        if (!parse_digits(ch, n, 10) || n == 0) return ch;
         iface_buf_ = "can" + std::to_string(n - 1);  // ASC channels count from 1, SocketCAN from 0
         return iface_buf_;
     };
     auto parse_id = [&](std::string_view t, std::uint32_t& id, bool& extended) {
         extended = !t.empty() && (t.back() == 'x' || t.back() == 'X');
         if (extended) t.remove_suffix(1);
-        return parse_uint(t, id, base);
+        return parse_digits(t, id, base);
     };
     std::array<std::uint8_t, 64> data{};
     auto parse_bytes = [&](std::string_view& r, std::size_t n) {
         for (std::size_t i = 0; i < n; ++i) {
             std::uint32_t b = 0;
-            if (!parse_uint(next_token(r), b, base) || b > 255) return false;
+            if (!parse_digits(next_token(r), b, base) || b > 255) return false;
             data[i] = static_cast<std::uint8_t>(b);
         }
         return true;
@@ -439,18 +516,25 @@ void reader::asc_line(std::string_view s) {
         auto brs = next_token(rest);
         if (brs != "0" && brs != "1") brs = next_token(rest);  // a symbolic name came first
         next_token(rest);                                      // esi
-        next_token(rest);                                      // dlc
+        std::uint32_t dlc = 0;
+        if (!parse_digits(next_token(rest), dlc, 16) || dlc > 15)
+            return bad("malformed ASC CANFD line (dlc)", s);
         std::uint32_t length = 0;
-        if (!parse_uint(next_token(rest), length, 10) || length > 64)
+        if (!parse_digits(next_token(rest), length, 10) || length > 64)
             return bad("malformed ASC CANFD line (length)", s);
         if (!parse_bytes(rest, length)) return bad("malformed ASC CANFD line (data)", s);
         next_token(rest);  // message duration
         next_token(rest);  // bit count
         std::uint32_t flags = 0;
-        if (!parse_uint(next_token(rest), flags)) return bad("malformed ASC CANFD line (flags)", s);
-        if ((flags & 0x1000u) != 0 || length > 8) return skip_one(skip::fd);  // EDL
-        if ((flags & 0x10u) != 0) return skip_one(skip::remote);
-        return emit_raw(id, extended, {data.data(), length}, time, interface_of(channel));
+        if (!parse_digits(next_token(rest), flags))
+            return bad("malformed ASC CANFD line (flags)", s);
+        const auto iface = interface_of(channel);
+        if ((flags & 0x1000u) != 0 || length > 8)  // EDL
+            return other(skip::fd, id, extended, length, {data.data(), length}, time, iface,
+                         brs == "1");
+        if ((flags & 0x10u) != 0)
+            return other(skip::remote, id, extended, dlc > 8 ? 8 : dlc, {}, time, iface);
+        return emit_raw(id, extended, {data.data(), length}, time, iface);
     }
     const auto id_text = next_token(rest);
     if (id_text == "ErrorFrame") return skip_one(skip::error_frame);
@@ -460,11 +544,14 @@ void reader::asc_line(std::string_view s) {
     const auto dir = next_token(rest);
     if (dir != "Rx" && dir != "Tx" && dir != "TxRq") return;
     const auto type = next_token(rest);
-    if (type == "r") return skip_one(skip::remote);
-    if (type != "d") return bad("malformed ASC line (expected d or r after the direction)", s);
+    if (type != "d" && type != "r")
+        return bad("malformed ASC line (expected d or r after the direction)", s);
     std::uint32_t dlc = 0;
-    if (!parse_uint(next_token(rest), dlc, 16) || dlc > 15)
+    if (!parse_digits(next_token(rest), dlc, 16) || dlc > 15)
         return bad("malformed ASC line (length)", s);
+    if (type == "r")
+        return other(skip::remote, id, extended, dlc > 8 ? 8 : dlc, {}, time,
+                     interface_of(channel));
     const std::size_t n = dlc > 8 ? 8 : dlc;
     if (!parse_bytes(rest, n)) return bad("malformed ASC line (data)", s);
     emit_raw(id, extended, {data.data(), n}, time, interface_of(channel));
@@ -506,38 +593,51 @@ void reader::trc_line(std::string_view s) {
             default: break;  // N, d, R
         }
     }
+    bool remote = false, fd = false, brs = false;
     if (trc_v1_) {
         if (!type.empty() && type != "Rx" && type != "Tx") return skip_one(skip::error_frame);
     } else if (type != "DT") {
-        if (type == "RR") return skip_one(skip::remote);
-        if (type == "FD" || type == "FB" || type == "FE" || type == "BI") return skip_one(skip::fd);
+        remote = type == "RR";
+        fd = type == "FD" || type == "FB" || type == "FE" || type == "BI";  // B: bit-rate switch
+        brs = type == "FB" || type == "BI";
         if (type == "ER") return skip_one(skip::error_frame);
-        return;  // status, error counter and event lines
+        if (!remote && !fd) return;  // status, error counter and event lines
     }
     std::uint32_t id = 0;
-    if (!parse_uint(id_text, id)) return bad("malformed TRC line (identifier)", s);
+    if (!parse_digits(id_text, id)) return bad("malformed TRC line (identifier)", s);
     if (trc_v1_ && trc_columns_ == "NOILD" && id == 0xFFFF'FFFFu) return;  // 1.0 bus information
     std::uint32_t length = 0;
-    if (!parse_uint(len_text.empty() ? dlc_text : len_text, length, 10))
+    if (!parse_digits(len_text.empty() ? dlc_text : len_text, length, 10) || length > 64)
         return bad("malformed TRC line (length)", s);
     std::string_view data_rest = rest;
-    if (next_token(data_rest) == "RTR") return skip_one(skip::remote);
-    if (length > 8) return skip_one(skip::fd);
-    std::array<std::uint8_t, 8> data{};
-    for (std::uint32_t i = 0; i < length; ++i) {
+    remote = remote || next_token(data_rest) == "RTR";
+    fd = fd || length > 8;
+    std::array<std::uint8_t, 64> data{};
+    for (std::uint32_t i = 0; !remote && i < length; ++i) {
         std::uint32_t b = 0;
-        if (!parse_uint(next_token(rest), b) || b > 255) return bad("malformed TRC line (data)", s);
+        if (!parse_digits(next_token(rest), b) || b > 255)
+            return bad("malformed TRC line (data)", s);
         data[i] = static_cast<std::uint8_t>(b);
     }
+    // The offset is in milliseconds: read by the seconds reader, it is in thousandths of us.
+    const auto thousandths = parse_seconds(time);
+    if (!thousandths) return bad("malformed TRC line (time)", s);
+    const long long us = *thousandths / 1000;
     char t[40];
-    std::snprintf(t, sizeof t, "%.6f", std::strtod(std::string(time).c_str(), nullptr) / 1000.0);
+    std::snprintf(t, sizeof t, "%lld.%06lld", us / 1'000'000, us % 1'000'000);
     time_buf_ = t;
     std::string_view interface;
-    if (std::uint32_t n = 0; parse_uint(bus, n, 10) && n > 0) {
+    if (std::uint32_t n = 0; parse_digits(bus, n, 10) && n > 0) {
         iface_buf_ = "can" + std::to_string(n - 1);  // PEAK buses count from 1
         interface = iface_buf_;
     }
-    emit_raw(id, id_text.size() > 4, {data.data(), length}, time_buf_, interface);
+    const bool extended = id_text.size() > 4;
+    if (remote)
+        return other(skip::remote, id, extended, length > 8 ? 8 : length, {}, time_buf_, interface);
+    if (fd)
+        return other(skip::fd, id, extended, length, {data.data(), length}, time_buf_, interface,
+                     brs);
+    emit_raw(id, extended, {data.data(), length}, time_buf_, interface);
 }
 
 // --- python-can CSV
@@ -568,16 +668,34 @@ void reader::csv_line(std::string_view s) {
                                                          : std::string_view{};
     };
     if (cell(4) == "1") return skip_one(skip::error_frame);
-    if (cell(3) == "1") return skip_one(skip::remote);
     auto id_text = cell(1);
     std::uint32_t id = 0;
     const bool hex = starts_with(id_text, "0x") || starts_with(id_text, "0X");
     if (hex) id_text.remove_prefix(2);
-    if (!parse_uint(id_text, id, hex ? 16 : 10)) return bad("malformed CSV line (identifier)", s);
+    if (!parse_digits(id_text, id, hex ? 16 : 10)) return bad("malformed CSV line (identifier)", s);
+    const bool extended = cell(2) == "1";
+    if (cell(3) == "1") {
+        std::uint32_t dlc = 0;
+        if (!cell(5).empty() && (!parse_digits(cell(5), dlc, 10) || dlc > 15))
+            return bad("malformed CSV line (dlc)", s);
+        return other(skip::remote, id, extended, dlc > 8 ? 8 : dlc, {},
+                     parse_seconds(cell(0)) ? cell(0) : std::string_view{}, {});
+    }
     std::vector<std::uint8_t> data;
     if (!base64_decode(cell(6), data)) return bad("malformed CSV line (data is not base64)", s);
-    if (data.size() > 8) return skip_one(skip::fd);
-    emit_raw(id, cell(2) == "1", data, cell(0), {});
+    if (data.size() > 64) return bad("malformed CSV line (more than 64 data bytes)", s);
+    // python-can writes Python's repr of the float: 1700000000.5, or 5e-05 near 0.
+    std::string_view time = cell(0);
+    if (!time.empty() && !parse_seconds(time)) {
+        const double t = std::strtod(std::string(time).c_str(), nullptr);
+        if (!(t >= 0 && t < 1e12)) return bad("malformed CSV line (timestamp)", s);
+        char b[40];
+        std::snprintf(b, sizeof b, "%.6f", t);
+        time_buf_ = b;
+        time = time_buf_;
+    }
+    if (data.size() > 8) return other(skip::fd, id, extended, data.size(), data, time, {});
+    emit_raw(id, extended, data, time, {});
 }
 
 // --- Vector BLF
@@ -590,7 +708,7 @@ void reader::blf_feed(std::string_view bytes) {
     if (!blf_header_done_) {
         if (blf_in_.size() < 8) return;
         const std::uint32_t header_size = le32(blf_in_, 4);
-        if (header_size < 8 || header_size > 4096) {
+        if (header_size < 8 || header_size > limits::blf_header_bytes) {
             blf_broken_ = true;
             return bad("the BLF file header has an impossible size", "");
         }
@@ -664,7 +782,7 @@ void reader::blf_object(std::string_view obj, std::uint32_t type) {
         const std::uint32_t size = le32(obj, blf_base_header + 8);
         const auto payload = obj.substr(blf_base_header + 16);
         // Writers use containers of about 128 KiB; a size from a damaged file is not allocated.
-        if (size > (16u << 20))
+        if (size > limits::blf_container_bytes)
             return bad("a BLF container larger than 16 MiB (damaged file?)", "");
         std::string inner = std::move(blf_inner_);  // the tail of the previous container
         blf_inner_.clear();
@@ -711,45 +829,61 @@ void reader::blf_object(std::string_view obj, std::uint32_t type) {
         return iface_buf_;
     };
     if (type == can_error_ext) return skip_one(skip::error_frame);
-    std::array<std::uint8_t, 8> data{};
+    std::array<std::uint8_t, 64> data{};
     if (type == can_message || type == can_message2) {
         // channel, flags (bit 0 transmitted, bit 7 remote), dlc, id (bit 31 extended), 8 bytes
         if (body.size() < 16) return bad("a BLF CAN message too short", "");
         const auto msg_flags = static_cast<unsigned char>(body[2]);
         const unsigned dlc = static_cast<unsigned char>(body[3]);
         const std::uint32_t id = le32(body, 4);
-        if ((msg_flags & 0x80u) != 0) return skip_one(skip::remote);
         const unsigned n = dlc > 8 ? 8 : dlc;
+        const auto iface = interface(le16(body, 0));
+        if ((msg_flags & 0x80u) != 0)
+            return other(skip::remote, id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, n, {},
+                         time_buf_, iface);
         for (unsigned i = 0; i < n; ++i) data[i] = static_cast<std::uint8_t>(body[8 + i]);
         return emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), n}, time_buf_,
-                        interface(le16(body, 0)));
+                        iface);
     }
     if (type == can_fd_message) {
-        // channel, flags, dlc, id, frame length, bit count, FD flags, valid bytes, 5 reserved, data
+        // channel, flags, dlc, id, frame length, bit count, FD flags (EDL 1, BRS 2, ESI 4), valid
+        // bytes, 5 reserved, 64 data bytes
         if (body.size() < 20) return bad("a BLF CAN FD message too short", "");
         const auto msg_flags = static_cast<unsigned char>(body[2]);
+        const unsigned dlc = static_cast<unsigned char>(body[3]);
         const std::uint32_t id = le32(body, 4);
         const auto fd_flags = static_cast<unsigned char>(body[13]);
         const unsigned valid = static_cast<unsigned char>(body[14]);
-        if ((fd_flags & 0x1u) != 0 || valid > 8) return skip_one(skip::fd);
-        if ((msg_flags & 0x80u) != 0) return skip_one(skip::remote);
-        if (body.size() < 20 + valid) return bad("a BLF CAN FD message too short", "");
+        const auto iface = interface(le16(body, 0));
+        if (valid > 64 || body.size() < 20 + valid)
+            return bad("a BLF CAN FD message too short", "");
         for (unsigned i = 0; i < valid; ++i) data[i] = static_cast<std::uint8_t>(body[20 + i]);
+        if ((msg_flags & 0x80u) != 0)
+            return other(skip::remote, id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0,
+                         dlc > 8 ? 8 : dlc, {}, time_buf_, iface);
+        if ((fd_flags & 0x1u) != 0 || valid > 8)
+            return other(skip::fd, id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, valid,
+                         {data.data(), valid}, time_buf_, iface, (fd_flags & 0x2u) != 0);
         return emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), valid},
-                        time_buf_, interface(le16(body, 0)));
+                        time_buf_, iface);
     }
     // CAN_FD_MESSAGE_64: channel, dlc, valid bytes, tx count, id, frame length, flags (EDL 1000h,
-    // remote 10h), ... 40 bytes, then the data.
+    // BRS 2000h, remote 10h), ... 40 bytes, then the data.
     if (body.size() < 40) return bad("a BLF CAN FD message too short", "");
+    const unsigned dlc = static_cast<unsigned char>(body[1]);
     const unsigned valid = static_cast<unsigned char>(body[2]);
     const std::uint32_t id = le32(body, 4);
     const std::uint32_t fd_flags = le32(body, 12);
-    if ((fd_flags & 0x1000u) != 0 || valid > 8) return skip_one(skip::fd);
-    if ((fd_flags & 0x10u) != 0) return skip_one(skip::remote);
-    if (body.size() < 40 + valid) return bad("a BLF CAN FD message too short", "");
+    const auto iface = interface(static_cast<unsigned char>(body[0]));
+    if (valid > 64 || body.size() < 40 + valid) return bad("a BLF CAN FD message too short", "");
     for (unsigned i = 0; i < valid; ++i) data[i] = static_cast<std::uint8_t>(body[40 + i]);
-    emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), valid}, time_buf_,
-             interface(static_cast<unsigned char>(body[0])));
+    if ((fd_flags & 0x10u) != 0)
+        return other(skip::remote, id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, dlc > 8 ? 8 : dlc,
+                     {}, time_buf_, iface);
+    if ((fd_flags & 0x1000u) != 0 || valid > 8)
+        return other(skip::fd, id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, valid,
+                     {data.data(), valid}, time_buf_, iface, (fd_flags & 0x2000u) != 0);
+    emit_raw(id & 0x1FFF'FFFFu, (id & 0x8000'0000u) != 0, {data.data(), valid}, time_buf_, iface);
 }
 
 }  // namespace tool::logs

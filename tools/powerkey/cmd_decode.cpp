@@ -1,7 +1,9 @@
 // powerkey decode: every frame of a log, in text or JSON lines, with a summary on standard error.
-#include "common.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+#include "field_value.hpp"
+#include "input.hpp"
 #include "json_writer.hpp"
-#include "log_formats.hpp"
 #include "show.hpp"
 
 #include <nlohmann/json.hpp>
@@ -9,14 +11,13 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
-#include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,16 @@ namespace tool {
 namespace {
 using namespace powerkey;
 using namespace std::string_view_literals;
+
+struct decode_options {
+    bool json = false;
+    bool show = false;
+    // For the benchmark (scripts/bench_cli.sh): read and parse only, or decode without output.
+    bool parse_only = false;
+    bool quiet = false;
+    bool nlohmann_writer = false;  // decode --json through nlohmann::json (for the benchmark)
+    std::vector<std::string> files;
+};
 
 // --- the frame's own part of a line
 // ---------------------------------------------------------------
@@ -40,7 +51,8 @@ std::uint8_t node_of(const session_event& e) {
     return e.cls.node != 0 ? e.cls.node : e.node.value();
 }
 
-void write_generic_fields(json::object_writer& w, const can::frame& f, const session_event& e) {
+template <class Writer>
+void write_generic_fields(Writer& w, const can::frame& f, const session_event& e) {
     switch (e.cls.fn) {
         case canopen::function::nmt:
             if (const auto m = canopen::decode_nmt(f)) {
@@ -89,8 +101,7 @@ struct counts {
     std::size_t foreign = 0;  // other nodes' frames, and frames no keypad sends or receives
     std::map<std::string_view, std::size_t> refused;  // keypad frames the decoder refused
     std::array<std::size_t, 128> per_node{};          // frames of per-node COB-IDs, by node
-    std::size_t bad_lines = 0;
-    std::array<std::size_t, logs::skip_kinds> skipped{};
+    input_counts read;                                // lines and frames the readers passed over
     [[nodiscard]] std::size_t refused_total() const {
         std::size_t n = 0;
         for (const auto& [k, v] : refused) n += v;
@@ -100,12 +111,12 @@ struct counts {
 
 // --- one decoding pass --------------------------------------------------------------------------
 
-class decoder {
+class decoder final : public frame_handler {
 public:
-    decoder(const options& o, model m)
-        : o_(o), session_(m, o.node), picture_(m), tty_(isatty(1) != 0) {}
+    decoder(const options& c, const decode_options& o, model m)
+        : o_(o), session_(m, c.node), picture_(m), tty_(isatty(1) != 0) {}
 
-    void frame(const logs::record& r) {
+    void frame(const logs::record& r) override {
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
@@ -125,13 +136,14 @@ public:
         const bool picture = o_.show && e.decoded && picture_.update(*e.decoded);
         if (o_.show && tty_ && shown_)
             out += "\x1b[1A\r\x1b[2K"sv;  // the picture stays at the bottom
-        if (o_.json && o_.nlohmann_writer)
+        if (o_.json && o_.nlohmann_writer) {
             nlohmann_line(out, r, e, pkp_j1939);
-        else if (o_.json)
-            json_line(out, r, e, pkp_j1939);
-        else
-            text_line(out, r, e, foreign, pkp_j1939);
-        out += '\n';
+            out += '\n';
+        } else if (o_.json) {
+            json_line(out, r, e, pkp_j1939);  // with its line end
+        } else {
+            text_line(out, r, e, foreign, pkp_j1939);  // with its line end
+        }
         if (o_.show && (picture || (tty_ && shown_))) {
             out += picture_.draw();
             shown_ = true;
@@ -147,26 +159,9 @@ private:
     void text_line(std::string& out, const logs::record& r, const session_event& e, bool foreign,
                    bool pkp_j1939) {
         const auto n = node_of(e);
-        // The common head, "(time) can0 215#0000010000000008       node 15h  ", in one append
-        // (the appends are what the text output costs); escaped text takes the slow path.
-        char head[128];
-        std::size_t k = 0;
-        auto put = [&](std::string_view t) {
-            for (char c : t) head[k++] = c;
-        };
         const bool fast =
             r.time.size() <= 32 && r.interface.size() <= 16 && plain(r.time) && plain(r.interface);
-        if (fast) {
-            if (!r.time.empty()) {
-                head[k++] = '(';
-                put(r.time);
-                put(") ");
-            }
-            if (!r.interface.empty()) {
-                put(r.interface);
-                head[k++] = ' ';
-            }
-        } else {
+        if (!fast) {  // escaped text, before the line buffer takes the rest
             if (!r.time.empty()) {
                 out += '(';
                 append_untrusted(out, r.time, 32);
@@ -177,101 +172,150 @@ private:
                 out += ' ';
             }
         }
-        const auto frame_start = k;
-        const int id_digits = r.frame.is_extended() ? 8 : 3;
-        for (int i = id_digits - 1; i >= 0; --i)
-            head[k++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
-        head[k++] = '#';
-        for (auto b : r.frame.data()) {
-            head[k++] = upper_hex[b >> 4];
-            head[k++] = upper_hex[b & 15];
-        }
-        while (k - frame_start < 25) head[k++] = ' ';
-        put("  ");
+        // The line in a stack buffer, appended once (the appends are what the output costs):
+        // "(time) can0 215#0000010000000008       node 15h  ..."
+        line_out line(out);
+        line.put_with(128, [&](char* head) {
+            std::size_t k = 0;
+            auto put = [&](std::string_view t) {
+                std::memcpy(head + k, t.data(), t.size());
+                k += t.size();
+            };
+            if (fast && !r.time.empty()) {
+                head[k++] = '(';
+                put(r.time);
+                put(") ");
+            }
+            if (fast && !r.interface.empty()) {
+                put(r.interface);
+                head[k++] = ' ';
+            }
+            const auto frame_start = k;
+            const int id_digits = r.frame.is_extended() ? 8 : 3;
+            for (int i = id_digits - 1; i >= 0; --i)
+                head[k++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
+            head[k++] = '#';
+            for (auto b : r.frame.data()) {
+                head[k++] = upper_hex[b >> 4];
+                head[k++] = upper_hex[b & 15];
+            }
+            if (k - frame_start < 25) {
+                std::memset(head + k, ' ', 25 - (k - frame_start));
+                k = frame_start + 25;
+            }
+            put("  ");
+            return k;
+        });
+        const auto hex_h = [&line](std::uint64_t v, int digits) {
+            line.put_with(18, [&](char* p) {
+                for (int i = 0; i < digits; ++i)
+                    p[i] = upper_hex[(v >> (4 * (digits - 1 - i))) & 15];
+                p[digits] = 'h';
+                return static_cast<std::size_t>(digits) + 1;
+            });
+        };
         if (e.decoded) {
-            out.append(head, k);
-            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part
-            append_message_text(out, *e.decoded, canopen::node_id::make(n).value_or(e.node));
-        } else {
-            out.append(head, k);
-        }
-        if (e.decoded) {
-            // the message is written above
+            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part; 160
+            // characters hold every message
+            line.put_with(256, [&](char* p) -> std::size_t {
+                const auto text = describe(*e.decoded, canopen::node_id::make(n).value_or(e.node),
+                                           std::span<char>(p, 256));
+                return text ? text->size() : 256;
+            });
         } else if (pkp_j1939) {
-            out += "j1939  not a frame of a "sv;
-            out += to_string(session_.model());
-            out += " (it has no J1939)"sv;
+            line.put("j1939  not a frame of a "sv);
+            line.put(to_string(session_.model()));
+            line.put(" (it has no J1939)"sv);
         } else if (foreign && e.cls.fn == canopen::function::other) {
-            out += "unknown frame: no keypad uses COB-ID "sv;
-            append_hex_h(out, r.frame.raw_id(), 3);
+            line.put("unknown frame: no keypad uses COB-ID "sv);
+            hex_h(r.frame.raw_id(), 3);
         } else if (foreign) {
-            out += "node "sv;
-            append_hex_h(out, n, 2);
-            out += "  "sv;
-            out += to_string(e.cls.fn);
-            out += "  another node's frame (keypad is "sv;
-            append_hex_h(out, e.node.value(), 2);
-            out += ')';
+            line.put("node "sv);
+            hex_h(n, 2);
+            line.put("  "sv);
+            line.put(to_string(e.cls.fn));
+            line.put("  another node's frame (keypad is "sv);
+            hex_h(e.node.value(), 2);
+            line.put(')');
         } else {
-            out += "node "sv;
-            append_hex_h(out, n, 2);
-            out += "  "sv;
-            out += to_string(e.cls.fn);
-            out += "  error: "sv;
-            out += to_string(e.decoded.error());
+            line.put("node "sv);
+            hex_h(n, 2);
+            line.put("  "sv);
+            line.put(to_string(e.cls.fn));
+            line.put("  error: "sv);
+            line.put(to_string(e.decoded.error()));
         }
         if (e.sdo == sdo_pairing::reply) {
-            out += "  [reply to "sv;
-            append_hex_h(out, e.request.index, 4);
-            out += " sub "sv;
-            append_decimal(out, e.request.subindex);
-            out += ']';
+            line.put("  [reply to "sv);
+            hex_h(e.request.index, 4);
+            line.put(" sub "sv);
+            line.put_with(3, [&](char* p) {
+                return static_cast<std::size_t>(std::to_chars(p, p + 3, e.request.subindex).ptr -
+                                                p);
+            });
+            line.put(']');
         } else if (e.sdo == sdo_pairing::unanswered) {
-            out += "  [reply to no request]"sv;
+            line.put("  [reply to no request]"sv);
         }
         if (e.upload_done) {
-            out += "  [text: \""sv;
-            append_escaped(out, session_.text(), 64);
-            out += "\"]"sv;
+            line.put("  [text: \""sv);
+            line.put(escape(session_.text(), 64));
+            line.put("\"]"sv);
         }
         if (e.upload_error != errc{}) {
-            out += "  [upload failed: "sv;
-            out += to_string(e.upload_error);
-            out += ']';
+            line.put("  [upload failed: "sv);
+            line.put(to_string(e.upload_error));
+            line.put(']');
         }
         if (e.new_node) {
-            out += "  [node id now "sv;
-            append_hex_h(out, e.new_node->value(), 2);
-            out += ']';
+            line.put("  [node id now "sv);
+            hex_h(e.new_node->value(), 2);
+            line.put(']');
         }
         if (e.new_protocol && e.decoded) {
-            out += "  [protocol now "sv;
-            out += to_string(*e.new_protocol);
-            out += ']';
+            line.put("  [protocol now "sv);
+            line.put(to_string(*e.new_protocol));
+            line.put(']');
         }
+        line.put('\n');
     }
 
     void json_line(std::string& out, const logs::record& r, const session_event& e,
                    bool pkp_j1939) {
-        json::object_writer w(out);
+        json::line_out line(out);  // the line in a stack buffer: one append to `out`
+        json::basic_object_writer w(line);
         if (!r.time.empty()) w.field("time", r.time);
         if (!r.interface.empty()) w.field("interface", r.interface);
         w.key("id");
-        out += '"';
-        append_hex(out, r.frame.raw_id(), r.frame.is_extended() ? 8 : 3);
-        out += '"';
+        const int id_digits = r.frame.is_extended() ? 8 : 3;
+        const auto data = r.frame.data();
+        line.put_with(2 + 8 + 8 + 2 + 16 + 1, [&](char* p) {
+            std::size_t n = 0;
+            p[n++] = '"';
+            for (int i = id_digits - 1; i >= 0; --i)
+                p[n++] = upper_hex[(r.frame.raw_id() >> (4 * i)) & 15];
+            p[n++] = '"';
+            return n;
+        });
         w.field_bool("ext", r.frame.is_extended());
         w.key("data");
-        out += '"';
-        append_hex_bytes(out, r.frame.data().data(), r.frame.data().size());
-        out += '"';
+        line.put_with(2 + 16, [&](char* p) {
+            std::size_t n = 0;
+            p[n++] = '"';
+            for (const auto b : data) {
+                p[n++] = upper_hex[b >> 4];
+                p[n++] = upper_hex[b & 15];
+            }
+            p[n++] = '"';
+            return n;
+        });
         w.field("function", to_string(e.cls.fn));
         w.field("node", node_of(e));
         w.field("model", to_string(session_.model()));
         if (e.decoded) {
             w.field("kind", kind_of(*e.decoded));
             w.key("fields");
-            json::object_writer fw(out);
+            json::basic_object_writer fw(line);
             for_each_field(*e.decoded, [&fw](std::string_view name, const auto& v) {
                 fw.key(name);
                 write_json_value(fw, v);
@@ -287,6 +331,7 @@ private:
             w.field("protocol", to_string(*e.new_protocol));
         if (!e.decoded) w.field("error", to_string(e.decoded.error()));
         w.close();
+        line.put('\n');
     }
 
     // The same line through nlohmann::ordered_json, for the writer comparison of
@@ -345,7 +390,7 @@ private:
         out += j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
     }
 
-    const options& o_;
+    const decode_options& o_;
     session<256> session_;
     keypad_picture picture_;
     bool tty_;
@@ -353,141 +398,6 @@ private:
     counts counts_;
     output out_;
 };
-
-// --- reading the inputs
-// ---------------------------------------------------------------------------
-
-// Turns a reader's findings into at most a few lines per kind of problem, and one clear message
-// for a file that is not a log at all.
-template <class OnFrame>
-class file_sink final : public logs::sink {
-public:
-    file_sink(std::string label, OnFrame on_frame, output& out)
-        : label_(std::move(label)), on_frame_(on_frame), out_(out) {}
-
-    void frame(const logs::record& r) override {
-        if (!any_frame_) {
-            any_frame_ = true;
-            for (const auto& h : held_) emit(h);
-            held_.clear();
-        }
-        on_frame_(r);
-    }
-    void problem(std::size_t line, std::string_view why, std::string_view text) override {
-        ++problems_;
-        if (++by_why_[why] > shown_per_kind) return;
-        std::string m = label_ + ":" + std::to_string(line) + ": " + std::string(why);
-        if (!text.empty()) m += ": '" + escape(text, 60) + "'";
-        if (any_frame_)
-            emit(m);
-        else
-            held_.push_back(std::move(m));
-    }
-
-    // At the end of the file: the counts of what was not shown, or the one message.
-    void finish(const logs::reader& r, counts& c) {
-        c.bad_lines += problems_;
-        for (std::size_t k = 0; k < logs::skip_kinds; ++k) {
-            const auto s = static_cast<logs::skip>(k);
-            const auto n = r.skipped(s);
-            c.skipped[k] += n;
-            if (n == 0) continue;
-            out_.flush();
-            report(label_,
-                   std::to_string(n) + " " + std::string(to_string(s)) + (n == 1 ? "" : "s") +
-                       " not decoded (not supported by powerkey), the first at line " +
-                       std::to_string(r.first_skipped(s)),
-                   false);
-        }
-        if (r.detected() == logs::format::not_a_log) {
-            out_.flush();
-            report(label_, "looks like " + r.looks_like() + ", not a CAN log powerkey reads; " +
-                               advice(r.looks_like()));
-            return;
-        }
-        if (!any_frame_ && problems_ > 0) {
-            out_.flush();
-            std::string first = held_.empty() ? std::string() : held_.front();
-            if (first.starts_with(label_ + ":")) first.erase(0, label_.size() + 1);
-            report(label_, "no line is a CAN frame powerkey reads (line " + first +
-                               "); it reads candump and cansend lines, Vector ASC, PEAK TRC, "
-                               "python-can CSV and Vector BLF (powerkey help lists the forms)");
-            return;
-        }
-        for (const auto& [why, n] : by_why_)
-            if (n > shown_per_kind) {
-                out_.flush();
-                report(label_, std::to_string(n - shown_per_kind) + " more lines like that (" +
-                                   std::string(why) + ")");
-            }
-    }
-
-private:
-    static constexpr std::size_t shown_per_kind = 3;
-    static std::string advice(std::string_view looks) {
-        if (looks.find("pcap") != std::string_view::npos)
-            return "record the bus with candump -l, or export the capture's CAN frames as a "
-                   "candump log";
-        if (looks.find("MDF") != std::string_view::npos)
-            return "export it as Vector ASC or BLF (CANoe, asammdf)";
-        if (looks.find("gzip") != std::string_view::npos)
-            return "unpack it: zcat FILE | powerkey decode";
-        if (looks.find("zip") != std::string_view::npos) return "unpack it first";
-        if (looks.find("JSON") != std::string_view::npos)
-            return "powerkey encode --json reads JSON lines";
-        return "it reads candump and cansend lines, Vector ASC, PEAK TRC, python-can CSV and "
-               "Vector BLF";
-    }
-    void emit(const std::string& m) {
-        out_.flush();
-        report("", m);
-    }
-
-    std::string label_;
-    OnFrame on_frame_;
-    output& out_;
-    bool any_frame_ = false;
-    std::size_t problems_ = 0;
-    std::map<std::string_view, std::size_t> by_why_;
-    std::vector<std::string> held_;
-};
-
-// Reads every input, calling on_frame for each frame. Live inputs (pipes, terminals) are read as
-// the bytes come, and the output is flushed after each read.
-template <class OnFrame>
-void read_inputs(const options& o, output& out, counts& c, OnFrame on_frame) {
-    std::vector<std::string> files = o.args;
-    if (files.empty()) files.push_back("-");
-    std::vector<char> buf(1u << 16);
-    for (const auto& path : files) {
-        const auto label = file_label(path);
-        const int fd = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY);
-        if (fd < 0) {
-            out.flush();
-            report(label, std::strerror(errno));
-            continue;
-        }
-        struct stat st {};
-        const bool live = ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || isatty(1) != 0;
-        file_sink sink(label, on_frame, out);
-        logs::reader reader(sink);
-        for (;;) {
-            const auto n = ::read(fd, buf.data(), buf.size());
-            if (n < 0 && errno == EINTR) continue;
-            if (n < 0) {
-                out.flush();
-                report(label, std::strerror(errno));
-                break;
-            }
-            if (n == 0) break;
-            reader.feed({buf.data(), static_cast<std::size_t>(n)});
-            if (live) out.flush();
-        }
-        reader.finish();
-        sink.finish(reader, c);
-        if (fd != 0) ::close(fd);
-    }
-}
 
 // --- --model auto
 // -----------------------------------------------------------------------------------
@@ -586,7 +496,7 @@ model choose_model(const options& o, const std::vector<stored>& log) {
 
 // --- the summary ------------------------------------------------------------------------------
 
-void summary(const options& o, const counts& c, model m) {
+void summary(const options& c0, const decode_options& o, const counts& c, model m) {
     std::string s = std::to_string(c.frames) + (c.frames == 1 ? " frame" : " frames");
     if (!o.parse_only) {
         s += ": " + std::to_string(c.decoded) + " decoded, " + std::to_string(c.foreign) +
@@ -601,13 +511,13 @@ void summary(const options& o, const counts& c, model m) {
             s += ")";
         }
     }
-    if (c.bad_lines > 0)
-        s += "; " + std::to_string(c.bad_lines) + (c.bad_lines == 1 ? " bad line" : " bad lines");
+    const auto bad = c.read.bad_lines;
+    if (bad > 0) s += "; " + std::to_string(bad) + (bad == 1 ? " bad line" : " bad lines");
     for (std::size_t k = 0; k < logs::skip_kinds; ++k)
-        if (c.skipped[k] > 0)
-            s += "; " + std::to_string(c.skipped[k]) + " " +
+        if (const auto n = c.read.skipped[k]; n > 0)
+            s += "; " + std::to_string(n) + " " +
                  std::string(to_string(static_cast<logs::skip>(k))) +
-                 (c.skipped[k] == 1 ? " skipped" : "s skipped");
+                 (n == 1 ? " skipped" : "s skipped");
     report("summary", s, false);
     if (o.parse_only) return;
     // A log that decodes badly under the model: say what to try.
@@ -616,50 +526,85 @@ void summary(const options& o, const counts& c, model m) {
     if (refused >= 3 && refused * 5 >= keypad) {
         std::string h = std::to_string(refused) + " of " + std::to_string(keypad) +
                         " keypad frames refused as " + std::string(to_string(m)) + " frames; ";
-        h += o.model_auto ? "no model reads this log well: check --node"
-                          : "if the keypad is another model, try --model auto (or --model " +
-                                model_names() + ")";
+        h += c0.model_auto ? "no model reads this log well: check --node"
+                           : "if the keypad is another model, try --model auto (or --model " +
+                                 model_names() + ")";
         report("hint", h, false);
     }
     std::size_t top = 0;
     for (std::size_t n = 1; n < 128; ++n)
         if (c.per_node[n] > c.per_node[top]) top = n;
-    if (top != 0 && top != o.node.value() && keypad * 4 < c.frames &&
+    if (top != 0 && top != c0.node.value() && keypad * 4 < c.frames &&
         c.per_node[top] * 2 > c.frames) {
         std::string h = "most frames are of node ";
         append_hex_h(h, top, 2);
         h += ", not of keypad ";
-        append_hex_h(h, o.node.value(), 2);
+        append_hex_h(h, c0.node.value(), 2);
         h += ": try --node ";
         append_hex_h(h, top, 2);
         report("hint", h, false);
     }
 }
 
-}  // namespace
-
-int run_decode(const options& o) {
-    model m = o.keypad;
-    counts read_counts;
-    std::vector<stored> log;
-    if (o.model_auto) {
-        output none;
-        read_inputs(o, none, read_counts, [&](const logs::record& r) {
-            log.push_back({r.frame, std::string(r.time), std::string(r.interface), r.line});
-        });
-        m = choose_model(o, log);
+// Reads everything first (--model auto).
+class collector final : public frame_handler {
+public:
+    explicit collector(std::vector<stored>& log) : log_(log) {}
+    void frame(const logs::record& r) override {
+        log_.push_back({r.frame, std::string(r.time), std::string(r.interface), r.line});
     }
-    decoder d(o, m);
-    if (o.model_auto) {
+
+private:
+    std::vector<stored>& log_;
+};
+
+int run_decode(const options& c, const decode_options& o) {
+    model m = c.keypad;
+    input_counts read_counts;
+    std::vector<stored> log;
+    if (c.model_auto) {
+        output none;
+        collector all(log);
+        read_inputs(o.files, all, none, read_counts);
+        m = choose_model(c, log);
+    }
+    decoder d(c, o, m);
+    if (c.model_auto) {
         for (const auto& r : log) d.frame({r.frame, r.time, r.interface, r.line});
-        d.stats().bad_lines = read_counts.bad_lines;
-        d.stats().skipped = read_counts.skipped;
+        d.stats().read = read_counts;
     } else {
-        read_inputs(o, d.out(), d.stats(), [&d](const logs::record& r) { d.frame(r); });
+        read_inputs(o.files, d, d.out(), d.stats().read);
     }
     d.out().flush();
-    summary(o, d.stats(), m);
-    return failures == 0 ? 0 : 1;
+    summary(c, o, d.stats(), m);
+    return status();
+}
+
+}  // namespace
+
+void add_decode(registry& r) {
+    static decode_options o;
+    auto& sub = r.add(
+        {"decode", "[--model M|auto] [--node N] [--json | --show] [FILE...]",
+         "every frame of a bus log, in text or JSON lines",
+         "  --json       JSON lines, one per frame (docs/cli.md has the schema)\n"
+         "  --show       draw the keypad after each frame that changes it (not with --json)\n",
+         model_use::or_auto},
+        [&r] {
+            if (o.json && o.show)
+                return usage_error(
+                    "--show draws pictures for people and --json writes lines for programs: use "
+                    "one");
+            if (o.nlohmann_writer && !o.json)
+                return usage_error("--nlohmann-writer is an option of decode --json");
+            return run_decode(r.common(), o);
+        });
+    sub.add_flag("--json", o.json);
+    sub.add_flag("--show", o.show);
+    sub.add_flag("--parse-only", o.parse_only);
+    sub.add_flag("--quiet", o.quiet);
+    sub.add_flag("--nlohmann-writer", o.nlohmann_writer);
+    sub.add_option("FILE", o.files);
 }
 
 }  // namespace tool

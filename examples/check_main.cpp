@@ -1,5 +1,0 @@
-// `powerkey check` as a program of its own too (the powerkey tool hosts it as `check`):
-// powerkey_check --model M [--node N] [--json] FILE... (examples/tool/cmd_check.cpp).
-int run_check(int argc, char** argv);
-
-int main(int argc, char** argv) { return run_check(argc - 1, argv + 1); }
