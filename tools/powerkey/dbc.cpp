@@ -7,8 +7,11 @@
 #include <powerkey/canopen/heartbeat.hpp>
 #include <powerkey/canopen/nmt.hpp>
 #include <powerkey/canopen/sdo.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
+#include <powerkey/keypad/j1939_models.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
@@ -18,6 +21,7 @@
 #include <bit>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 #include <utility>
 
 namespace tool::dbc {
@@ -819,6 +823,260 @@ void add_sdo(const context& c, database& db) {
     db.messages.push_back(std::move(response));
 }
 
+// --- J1939 (docs/j1939.md) ----------------------------------------------------------------------
+// Two messages on PGN EF00h (proprietary A), one per direction, each multiplexed on the command
+// byte: what the keypad sends (the key contact state 01h, the heartbeat F9h) and what it is sent
+// (the LED command 01h, the configuration commands, the switch to CANopen 80h). Which command a
+// model has is its J1939 row's word (keypad/j1939_models.hpp: documented or inferred); where each
+// field sits, its range and its value names are found by asking the library's J1939 codec: each
+// data byte is set to every value in turn, decoded, and the field that changed is the signal.
+
+// 04h 1Bh | command | data: the header and the command byte of every proprietary-A keypad frame
+// (docs/j1939.md, The data); byte 3 on is each command's data.
+constexpr unsigned j1939_command_byte = 2;
+constexpr unsigned j1939_first_data_byte = 3;
+
+// The section of the PKP1600SI and PKP2600SI J1939 manuals of each j1939::feature, in its order.
+constexpr std::string_view j1939_sections[] = {"6",  "7a", "7b", "8",  "9",  "10", "11", "12", "13",
+                                               "14", "15", "16", "17", "18", "19", "19", "20", "20",
+                                               "21", "21", "22", "23", "24", "25", "26", "27"};
+static_assert(std::size(j1939_sections) == j1939::feature_count);
+
+// "J1939 manuals section 6 (PKP1600SI, PKP2600SI); inferred for the pkp2400 (docs/j1939.md)".
+std::string j1939_cite(const context& c, const j1939::model_row& row, j1939::feature f) {
+    std::string s = "PKP1600SI and PKP2600SI J1939 manuals section ";
+    s.append(j1939_sections[static_cast<std::size_t>(f)]);
+    s.append("; ").append(to_string(row.frames.of(f))).append(" for the ").append(c.manual_name);
+    return s + " (docs/j1939.md)";
+}
+
+// One field of a decoded J1939 message: its name, its value as describe() prints it, and the
+// value's name when the field is a named enum.
+struct field_text {
+    std::string name, text, value_name;
+};
+
+std::vector<field_text> fields_of(const j1939::message& m) {
+    std::vector<field_text> out;
+    for_each_field(m, [&out](std::string_view name, const auto& v) {
+        std::array<char, 160> buf{};
+        text_writer w(buf);
+        describe_value(w, name, v);
+        field_text f{std::string(name), std::string(w.view()), {}};
+        if constexpr (named_enum<std::decay_t<decltype(v)>>) f.value_name = to_string(v);
+        out.push_back(std::move(f));
+    });
+    return out;
+}
+
+std::optional<j1939::message> j1939_decode(const context& c, const can::frame& f) {
+    const auto r = j1939::decode(f, c.id);
+    if (!r) return std::nullopt;
+    return *r;
+}
+
+can::frame with_byte(const can::frame& f, unsigned i, std::uint8_t v) {
+    auto bytes = f.bytes();
+    bytes[i] = v;
+    return can::frame::make(*f.ext_id(), std::span(bytes.data(), f.size())).value();
+}
+
+// The signals of the message that `base` decodes to, under multiplexor value `mux`: each data
+// byte whose values change one field of the decoded message (the same kind) is that field's
+// signal, named prefix + field, its range the values the codec takes, its value names the enum's.
+// A field spread over several bytes (a key set) is left to the caller: `skip` names it.
+void add_j1939_fields(const context& c, message& m, const can::frame& base, std::uint64_t mux,
+                      const std::string& prefix, std::string_view receiver,
+                      const std::string& source, std::string_view skip = {}) {
+    const auto decoded = j1939_decode(c, base);
+    if (!decoded) return;
+    const auto before = fields_of(*decoded);
+    for (unsigned i = j1939_first_data_byte; i < base.size(); ++i) {
+        std::string field;
+        bool one_field = true;
+        std::vector<std::uint64_t> taken;
+        std::vector<value_name> names;
+        for (unsigned v = 0; v < 256; ++v) {
+            const auto r = j1939_decode(c, with_byte(base, i, static_cast<std::uint8_t>(v)));
+            if (!r || r->index() != decoded->index()) continue;
+            const auto after = fields_of(*r);
+            taken.push_back(v);
+            for (std::size_t k = 0; k < after.size() && k < before.size(); ++k) {
+                if (after[k].text == before[k].text) continue;
+                if (!field.empty() && field != after[k].name) one_field = false;
+                field = after[k].name;
+            }
+            for (const auto& a : after)
+                if (a.name == field && !a.value_name.empty()) names.push_back({v, a.value_name});
+        }
+        // The base value's own name (the loop above names only values that changed the field).
+        if (!field.empty())
+            for (const auto& b : before)
+                if (b.name == field && !b.value_name.empty() &&
+                    std::none_of(names.begin(), names.end(),
+                                 [&](const value_name& n) { return n.value == base[i]; }))
+                    names.push_back({base[i], b.value_name});
+        if (field.empty() && taken.size() == 1 && taken.front() != 0xFF) {
+            // A byte the codec takes one value in, not "not used" (the switch's 00h): said, so
+            // that a tool that sends the message builds the frame the keypad takes.
+            auto s = number(
+                prefix + "byte" + std::to_string(i), 8 * i, 8,
+                static_cast<std::int64_t>(taken.front()), static_cast<std::int64_t>(taken.front()),
+                receiver,
+                with_source("Byte " + std::to_string(i) + ": always " + hex_h(taken.front(), 2),
+                            source));
+            s.mux = mux;
+            m.signals.push_back(std::move(s));
+            continue;
+        }
+        if (field.empty() || !one_field || field == skip) continue;
+        std::sort(names.begin(), names.end(),
+                  [](const value_name& a, const value_name& b) { return a.value < b.value; });
+        // The keypads' periods count 10 ms: the signal is in ms.
+        const bool tens = field.ends_with("_10ms");
+        const std::string stem = tens ? field.substr(0, field.size() - 5) : field;
+        // A command's one field named as the command ("baud_rate", not "baud_rate_baud_rate").
+        std::string name =
+            !prefix.empty() && (prefix.ends_with("_" + stem + "_") || prefix == stem + "_")
+                ? prefix.substr(0, prefix.size() - 1)
+                : prefix + stem;
+        const unsigned factor = tens ? 10 : 1;
+        const std::string unit = tens ? "ms" : "";
+        if (tens) name += "_ms";
+        const auto [lo, hi] = std::minmax_element(taken.begin(), taken.end());
+        auto s = number(name, 8 * i, 8, static_cast<std::int64_t>(*lo * factor),
+                        static_cast<std::int64_t>(*hi * factor), receiver,
+                        with_source("The field " + field + " (byte " + std::to_string(i) +
+                                        "): " + std::to_string(taken.size()) + " values decode, " +
+                                        hex_h(*lo, 2) + ".." + hex_h(*hi, 2),
+                                    source));
+        s.factor = factor;
+        s.unit = unit;
+        s.mux = mux;
+        s.values = std::move(names);
+        m.signals.push_back(std::move(s));
+    }
+}
+
+message new_j1939_message(const context& c, std::uint8_t destination, std::uint8_t source,
+                          std::string name, std::string_view from, std::string comment) {
+    const j1939::identifier id{6, j1939::proprietary_a_pgn, destination, source};
+    auto m = new_message(j1939::make_id(id).value().value(), std::move(name), 8, from,
+                         std::move(comment));
+    m.extended = true;
+    auto command = number("command", 8 * j1939_command_byte, 8, 0, 255,
+                          from == keypad_node ? controller_node : keypad_node,
+                          "Command byte of the proprietary-A frame (after 04h 1Bh): the "
+                          "multiplexor; named are the commands the " +
+                              c.manual_name + " has, documented or inferred (docs/j1939.md)");
+    command.multiplexor = true;
+    m.signals.push_back(std::move(command));
+    return m;
+}
+
+// One multiplexor value: its name in the command's value table, then its signals.
+void add_j1939_mux(const context& c, message& m, const can::frame& f, std::string name,
+                   const std::string& prefix, const std::string& source,
+                   std::string_view skip = {}) {
+    const std::uint64_t mux = f[j1939_command_byte];
+    m.signals.front().values.push_back({mux, std::move(name)});
+    add_j1939_fields(c, m, f, mux, prefix,
+                     m.transmitter == keypad_node ? controller_node : keypad_node, source, skip);
+}
+
+void add_j1939(const context& c, database& db) {
+    const auto row = j1939::row(c.id).value();
+    using j1939::feature;
+    const auto keypad_address = j1939::keypad_default_address;
+    const auto sender = j1939::set_led{}.source;  // the manuals' controller address, 00h
+    auto from = new_j1939_message(
+        c, j1939::global_address, keypad_address, "j1939_from_keypad", keypad_node,
+        "J1939 PGN EF00h (proprietary A), keypad at " + hex_h(keypad_address, 2) +
+            " to the global address FFh: the key contact state and the heartbeat, on the "
+            "command byte (docs/j1939.md)");
+    if (row.frames.has(feature::key_contact)) {
+        const auto f = j1939::encode(c.id, j1939::key_contact{});
+        if (f)
+            add_j1939_mux(c, from, *f, name_of<j1939::key_contact>(), "",
+                          j1939_cite(c, row, feature::key_contact));
+    }
+    if (row.frames.has(feature::heartbeat)) {
+        const j1939::heartbeat none{};
+        const auto f = j1939::encode(c.id, none);
+        if (f) {
+            const auto source = j1939_cite(c, row, feature::heartbeat);
+            add_j1939_mux(c, from, *f, name_of<j1939::heartbeat>(), "heartbeat_", source, "keys");
+            for (unsigned k = 1; k <= 16; ++k) {
+                j1939::heartbeat one = none;
+                one.keys = key_set{k};
+                const auto g = j1939::encode(c.id, one);
+                if (!g) continue;  // no key k on this model
+                const auto bit = one_bit(g->data_le() & ~f->data_le());
+                if (!bit) continue;
+                auto s = flag("heartbeat_key" + std::to_string(k), *bit, controller_node,
+                              with_source("Key " + std::to_string(k) + ": 1 pressed", source));
+                s.mux = (*f)[j1939_command_byte];
+                from.signals.push_back(std::move(s));
+            }
+        }
+    }
+    auto to = new_j1939_message(
+        c, keypad_address, sender, "j1939_to_keypad", controller_node,
+        "J1939 PGN EF00h (proprietary A), controller at " + hex_h(sender, 2) +
+            " to the keypad at " + hex_h(keypad_address, 2) +
+            ": the single-LED command, the configuration commands and the switch to CANopen, on "
+            "the command byte (docs/j1939.md)");
+    if (row.frames.has(feature::led_command)) {
+        const auto first = static_cast<std::uint8_t>(std::countr_zero(row.leds) + 1);
+        const auto source = j1939_cite(c, row, feature::led_command);
+        if (const auto f = j1939::encode(c.id, j1939::set_led{.key = first}))
+            add_j1939_mux(c, to, *f, name_of<j1939::set_led>(), "led_", source);
+        else if (const auto g = j1939::encode(c.id, j1939::set_led_code{.key = first}))
+            add_j1939_mux(c, to, *g, name_of<j1939::set_led_code>(), "led_", source);
+    }
+    for (unsigned code = 0; code < 0x80; ++code) {
+        const auto* command_row = j1939::find_command(static_cast<std::uint8_t>(code));
+        if (command_row == nullptr || !row.frames.has(command_row->what)) continue;
+        // A frame of the command that decodes: its data bytes swept until one does.
+        const bool two = command_row->p2 != j1939::command_param::none;
+        const bool one = command_row->p1 != j1939::command_param::none;
+        std::optional<can::frame> found;
+        for (unsigned b3 = one ? 0 : 0xFF; b3 < 256 && !found; ++b3)
+            for (unsigned b4 = two ? 0 : 0xFF; b4 < 256 && !found; ++b4) {
+                const std::array<std::uint8_t, 8> data{j1939::header_0,
+                                                       j1939::header_1,
+                                                       static_cast<std::uint8_t>(code),
+                                                       static_cast<std::uint8_t>(b3),
+                                                       static_cast<std::uint8_t>(b4),
+                                                       0xFF,
+                                                       0xFF,
+                                                       0xFF};
+                const can::frame f(can::extended_id::make(to.id).value(), data);
+                if (const auto r = j1939_decode(c, f);
+                    r && std::holds_alternative<j1939::command>(*r))
+                    found = f;
+            }
+        if (!found) continue;
+        std::string name(to_string(command_row->code));
+        std::string prefix = name.starts_with("set_") ? name.substr(4) : name;
+        add_j1939_mux(c, to, *found, name, prefix + "_", j1939_cite(c, row, command_row->what));
+    }
+    if (row.frames.has(feature::switch_to_canopen)) {
+        if (const auto f = j1939::encode(c.id, j1939::switch_to_canopen{}))
+            add_j1939_mux(c, to, *f, name_of<j1939::switch_to_canopen>(), "switch_to_canopen_",
+                          j1939_cite(c, row, feature::switch_to_canopen));
+    }
+    for (auto* m : {&from, &to}) {
+        auto& command = m->signals.front();
+        if (command.values.empty()) continue;
+        std::sort(command.values.begin(), command.values.end(),
+                  [](const value_name& a, const value_name& b) { return a.value < b.value; });
+        db.messages.push_back(std::move(*m));
+        db.keypad_address = keypad_address;
+        db.controller_address = sender;
+    }
+}
+
 }  // namespace
 
 database describe(model m, node_id node) {
@@ -829,9 +1087,8 @@ database describe(model m, node_id node) {
                         ") at node id " + hex_h(node.value(), 2) + "; frames as the " + c.manual +
                         " describes them, written by powerkey export dbc from its model table "
                         "(docs/dbc.md)";
-    // The frames every keypad has, then those its row of the model table gives it. J1939 (the
-    // key state and LED command, multiplexed on the command byte) will be one more function here
-    // that adds messages with 29-bit identifiers.
+    // The frames every keypad has, then those its row of the model table gives it, then its
+    // J1939 frames (its row of the J1939 model table).
     add_nmt(c, db);
     add_sync(c, db);
     add_heartbeat(c, db);
@@ -847,6 +1104,7 @@ database describe(model m, node_id node) {
         add_analog_inputs(c, db);
     }
     add_sdo(c, db);
+    add_j1939(c, db);
     std::stable_sort(db.messages.begin(), db.messages.end(),
                      [](const message& a, const message& b) { return a.id < b.id; });
     return db;
@@ -962,12 +1220,44 @@ std::string text(const database& db) {
             out.append(" ").append(s.name).append(" ").append(quoted(s.comment)).append(";\n");
         }
     }
+    // J1939: the attributes Vector's J1939 databases carry and canmatrix writes for them: the
+    // protocol, each J1939 message's frame format J1939PG (its identifier read as priority, PGN
+    // and addresses), and each node's J1939 address.
+    const bool j1939 = std::any_of(db.messages.begin(), db.messages.end(),
+                                   [](const message& m) { return m.extended; });
     out.append("BA_DEF_  \"BusType\" STRING ;\n");
     out.append("BA_DEF_  \"DBName\" STRING ;\n");
+    if (j1939) {
+        out.append("BA_DEF_  \"ProtocolType\" STRING ;\n");
+        out.append(
+            "BA_DEF_ BO_  \"VFrameFormat\" ENUM  "
+            "\"StandardCAN\",\"ExtendedCAN\",\"reserved\",\"J1939PG\";\n");
+        out.append("BA_DEF_ BU_  \"NmStationAddress\" INT 0 255;\n");
+    }
     out.append("BA_DEF_DEF_  \"BusType\" \"CAN\";\n");
     out.append("BA_DEF_DEF_  \"DBName\" \"\";\n");
+    if (j1939) {
+        out.append("BA_DEF_DEF_  \"ProtocolType\" \"\";\n");
+        out.append("BA_DEF_DEF_  \"VFrameFormat\" \"StandardCAN\";\n");
+        out.append("BA_DEF_DEF_  \"NmStationAddress\" 254;\n");
+    }
     out.append("BA_ \"BusType\" \"CAN\";\n");
     out.append("BA_ \"DBName\" ").append(quoted(db.name)).append(";\n");
+    if (j1939) {
+        out.append("BA_ \"ProtocolType\" \"J1939\";\n");
+        for (const auto& [node, address] : {std::pair(keypad_node, db.keypad_address),
+                                            std::pair(controller_node, db.controller_address)}) {
+            out.append("BA_ \"NmStationAddress\" BU_ ").append(node).append(" ");
+            append_decimal(out, address);
+            out.append(";\n");
+        }
+        for (const auto& m : db.messages) {
+            if (!m.extended) continue;
+            out.append("BA_ \"VFrameFormat\" BO_ ");
+            append_decimal(out, dbc_id(m));
+            out.append(" 3;\n");
+        }
+    }
     for (const auto& m : db.messages)
         for (const auto& s : m.signals) {
             if (s.values.empty()) continue;

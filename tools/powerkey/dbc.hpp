@@ -59,6 +59,8 @@ struct database {
     std::string name;            // DBName, "pkp2400_15h"
     std::string keypad_comment;  // the keypad node's comment: model, node id, sources
     std::vector<message> messages;
+    // The nodes' J1939 addresses (NmStationAddress), where the file has J1939 messages.
+    std::uint8_t keypad_address = 0xFE, controller_address = 0xFE;
 };
 
 // The two nodes (BU_) of every file.
