@@ -15,9 +15,10 @@ void add_models(registry& r);
 void add_simulate(registry& r);
 void add_check(registry& r);
 void add_convert(registry& r);
+void add_export(registry& r);
 
 inline constexpr void (*commands[])(registry&) = {
-    add_decode, add_encode, add_list, add_models, add_simulate, add_check, add_convert,
+    add_decode, add_encode, add_list, add_models, add_simulate, add_check, add_convert, add_export,
 };
 
 }  // namespace tool
