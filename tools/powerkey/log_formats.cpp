@@ -210,9 +210,14 @@ void reader::text_feed(std::string_view bytes) {
 // A line past limits::text_line_bytes (carry_, then `rest`): no log has one. Its beginning is
 // quoted and the input is read no further.
 void reader::too_long(std::string_view rest) {
+    // The line's first binary_sniff_bytes, however much of it was carried: the same text
+    // whatever pieces the input came in.
     std::string start = std::move(carry_);
     carry_.clear();
-    start.append(rest.substr(0, limits::binary_sniff_bytes));
+    if (start.size() < limits::binary_sniff_bytes)
+        start.append(rest.substr(0, limits::binary_sniff_bytes - start.size()));
+    else
+        start.resize(limits::binary_sniff_bytes);
     if (!sniffed_) {  // the first line: a binary file says so first
         sniffed_ = true;
         if (start.substr(0, limits::binary_sniff_bytes).find('\0') != std::string::npos) {
