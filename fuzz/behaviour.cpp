@@ -198,10 +198,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 break;
             case 7:
                 switch (in.u8() % 5) {
-                    case 0:
-                        (void)b.controller.set_led(in.u8() % 34, static_cast<colour>(in.u8() % 10),
-                                                   (op & 0x80) != 0);
+                    case 0: {  // (the arguments read in order: a call's are in no set order)
+                        const unsigned led = in.u8() % 34;
+                        const auto c = static_cast<colour>(in.u8() % 10);
+                        (void)b.controller.set_led(led, c, (op & 0x80) != 0);
                         break;
+                    }
                     case 1: {
                         leds on, blink;
                         fill_value(in, on);
@@ -210,10 +212,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                         break;
                     }
                     case 2: b.controller.set_brightness(level::make(in.u8() % 64).value()); break;
-                    case 3:
-                        b.controller.set_backlight(level::make(in.u8() % 64).value(),
-                                                   static_cast<backlight_colour>(in.u8() % 8));
-                        break;
+                    case 3: {
+                        const auto l = level::make(in.u8() % 64).value();
+                        b.controller.set_backlight(l, static_cast<backlight_colour>(in.u8() % 8));
+                    } break;
                     default: b.controller.change_node(take_node(in)); break;
                 }
                 b.after_call();

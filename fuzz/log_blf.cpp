@@ -141,8 +141,9 @@ std::string build(input& in) {
                 break;
             }
             case 7: {
-                const auto o = object_header(32, 1, in.integer<std::uint32_t>(), 1) +
-                               take_bytes(in, in.u8() % 48);
+                // (One read after the other: the operands of + are read in no set order.)
+                const auto size = in.integer<std::uint32_t>();
+                const auto o = object_header(32, 1, size, 1) + take_bytes(in, in.u8() % 48);
                 ((op & 0x10) != 0 ? stream : file) += o;
                 break;
             }
