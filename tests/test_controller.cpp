@@ -699,7 +699,7 @@ TEST_CASE("controller: one call's events fit the default queue (events_per_call)
     cfg.identify = false;
     cfg.keypad_heartbeat = duration_ms{0};
     cfg.lost_after = duration_ms{0};
-    auto run = [&cfg]<std::size_t Events>(controller<8, Events>& c) {
+    auto run = []<std::size_t Events>(controller<8, Events>& c) {
         c.step(f_("715#00"), millis{0});
         while (c.poll()) {
         }
