@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -81,6 +82,23 @@ private:
 std::vector<std::uint8_t> node_and_frame(std::uint8_t node_byte, const can::frame& f) {
     std::vector<std::uint8_t> out{node_byte};
     put_frame(out, f);
+    return out;
+}
+
+// Base64, as python-can's CSV writes data.
+std::string base64(std::span<const std::uint8_t> d) {
+    static constexpr char table[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < d.size(); i += 3) {
+        const std::uint32_t v = (std::uint32_t{d[i]} << 16) |
+                                (i + 1 < d.size() ? std::uint32_t{d[i + 1]} << 8 : 0) |
+                                (i + 2 < d.size() ? d[i + 2] : 0);
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < d.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < d.size() ? table[v & 63] : '=';
+    }
     return out;
 }
 
@@ -244,6 +262,89 @@ int main(int argc, char** argv) {
             v.insert(v.end(), zeros.begin(), zeros.end());
             w.add("encode", v);
         }
+    }
+    // The log readers: the manual frames as each form writes them (log_asc, log_trc and
+    // log_csv add the line that makes the form; see their files), and BLF recipes (log_blf.cpp).
+    std::string candump_l, screen, cansend, asc = "base hex  timestamps absolute\n", trc11, trc21,
+                                            csv = "arbitration_id,extended,remote,error,dlc,data\n";
+    trc11 = ";$FILEVERSION=1.1\n;$STARTTIME=45000.0\n";
+    trc21 = ";$FILEVERSION=2.1\n;$COLUMNS=N,O,T,B,I,d,R,L,D\n";
+    int n = 0;
+    for (auto text : core_frames) {
+        const auto f = can::parse_candump(text).value();
+        const std::string id(text.substr(0, text.find('#')));
+        std::string bytes_spaced, bytes_plain;
+        for (const auto b : f.data()) {
+            char h[4];
+            std::snprintf(h, sizeof h, "%02X", b);
+            bytes_spaced += std::string(bytes_spaced.empty() ? "" : " ") + h;
+            bytes_plain += h;
+        }
+        const std::string time = "1700000000." + std::to_string(100000 + n * 1000);
+        candump_l += "(" + time + ") can0 " + std::string(text) + "\n";
+        screen += "  can0  " + id + "   [" + std::to_string(f.size()) + "]  " + bytes_spaced + "\n";
+        cansend += std::string(text) + "\n";
+        const std::string x = f.is_extended() ? "x" : "";
+        asc += "   " + std::to_string(n) + ".500000 1  " + id + x + "             Rx   d " +
+               std::to_string(f.size()) + " " + bytes_spaced + "\n";
+        trc11 += "     " + std::to_string(n + 1) + ")  " + std::to_string(n * 100) + ".0  Rx  " +
+                 std::string(8 - std::min<std::size_t>(id.size(), 8), ' ') + id + "  " +
+                 std::to_string(f.size()) + "  " + bytes_spaced + "\n";
+        trc21 += "      " + std::to_string(n + 1) + "      " + std::to_string(n * 100) +
+                 ".250 DT  1     " + id + " Rx -  " + std::to_string(f.size()) + "    " +
+                 bytes_spaced + "\n";
+        csv += time + ",0x" + id + "," + (f.is_extended() ? "1" : "0") + ",0,0," +
+               std::to_string(f.size()) + "," + base64(f.data()) + "\n";
+        ++n;
+    }
+    w.add_text("log_candump", candump_l);
+    w.add_text("log_candump", screen);
+    w.add_text("log_candump", cansend);
+    w.add_text("log_candump", "615#R\n615##1000102030405060708090A0B\n(1) can0 20000080#00\n");
+    w.add_text(
+        "log_asc",
+        asc +
+            "   9.000000 1  ErrorFrame\n   9.500000 CANFD   1 Rx         80"
+            "                                   0 0 0  0   130000  130        0 0 0 0 0 0\n");
+    w.add_text("log_asc", "base dec  timestamps absolute\n   0.5 1  405             Rx   d 1 1\n");
+    w.add_text("log_trc", trc11);
+    w.add_text("log_trc", trc21);
+    w.add_text("log_trc", ";$FILEVERSION=1.0\n     1)       100 0195 5 09 00 00 00 12\n");
+    w.add_text("log_csv", csv);
+    // BLF: the writers' header, then six CAN messages of 48 bytes (op 0) put into a zlib
+    // container (op 2 with bit 3: zlib; k = 288, the whole stream), the same split across a zlib
+    // and a stored container (a message cut at byte 100, carried over), and nested.
+    std::vector<std::uint8_t> blf{0};
+    auto can_message = [&blf](std::uint32_t id, std::uint8_t dlc) {
+        blf.insert(blf.end(), {0, 0, 1, 0x40, 0x42, 0x0F, 0x00});  // op, type, flags, time
+        blf.insert(blf.end(), {1, 0, 0, dlc});                     // channel, flags, dlc
+        for (int i = 0; i < 4; ++i) blf.push_back(static_cast<std::uint8_t>(id >> (8 * i)));
+        for (std::uint8_t i = 0; i < 8; ++i)
+            blf.push_back(i < dlc ? static_cast<std::uint8_t>(i + 1) : 0);
+    };
+    for (std::uint32_t id : {0x000u, 0x195u, 0x215u, 0x615u, 0x595u, 0x715u}) can_message(id, 5);
+    auto whole = blf;
+    whole.insert(whole.end(), {2 | 8, 0x20, 0x01});
+    w.add("log_blf", whole);
+    auto split = blf;
+    split.insert(split.end(), {2 | 8, 100, 0});
+    split.insert(split.end(), {2, 188, 0});
+    w.add("log_blf", split);
+    auto nested = blf;
+    nested.insert(nested.end(), {5 | 8, 0x20, 0x01});
+    w.add("log_blf", nested);
+
+    // The behaviour layer: a PK1000 and a PKP-2400 powered on, the bus run 40 times 50 ms, key 3
+    // pressed and held, a fault, a reboot (fuzz/behaviour.cpp reads these bytes).
+    for (const std::uint8_t m : {std::uint8_t{0}, static_cast<std::uint8_t>(model::pkp2400)}) {
+        std::vector<std::uint8_t> b{
+            m, node_byte(0x15), 0, 1, 20, 60, 30, 2, 100, 100, 80, 50, 20, 2, 0, 4};
+        for (int i = 0; i < 40; ++i) b.insert(b.end(), {0, 50});
+        b.insert(b.end(), {4, 3});  // press key 3
+        for (int i = 0; i < 40; ++i) b.insert(b.end(), {0, 50});
+        b.insert(b.end(), {7, 0, 2, 2, 6, 0});  // set_led 2 green; power cycle
+        for (int i = 0; i < 20; ++i) b.insert(b.end(), {0, 50});
+        w.add("behaviour", b);
     }
     return 0;
 }

@@ -2,8 +2,9 @@
 # Long fuzzing runs: builds every libFuzzer target (clang, ASan + UBSan) and fuzzes each in turn
 # for SECONDS_PER_TARGET seconds (default 300), starting from the seed corpus, the regressions and
 # what earlier runs found (kept in fuzz/corpus-run/<target>, ignored by git). Crash inputs land in
-# $BUILD_DIR/artifacts/. Ends with a table of executions per target; exits non-zero if any target
-# failed.
+# $BUILD_DIR/artifacts/. Each target runs under its memory limit (fuzz/rss_limit_mb.txt, 2048 MB
+# when not listed). Ends with a table of executions and peak memory per target; exits non-zero if
+# any target failed.
 #   scripts/fuzz.sh                      every target
 #   scripts/fuzz.sh decode encode
 #   SECONDS_PER_TARGET=3600 JOBS=2 scripts/fuzz.sh
@@ -25,7 +26,7 @@ cmake --build "$build" -j 2 --target powerkey_fuzz_seeds $(printf 'powerkey_fuzz
 mkdir -p "$build/artifacts"
 
 summary="$build/fuzz-summary.txt"
-printf '%-16s %12s %10s %8s %s\n' target executions exec/s cov result | tee "$summary"
+printf '%-16s %12s %10s %8s %8s %s\n' target executions exec/s cov "peak MB" result | tee "$summary"
 status=0
 for t in "${targets[@]}"; do
   corpus=fuzz/corpus-run/$t
@@ -39,7 +40,8 @@ for t in "${targets[@]}"; do
   # With -jobs, libFuzzer writes each job's log to fuzz-<n>.log in the working directory.
   [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
   rm -f fuzz-[0-9]*.log
-  if ! "$build/fuzz/powerkey_fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  rss=$(awk -v t="$t" '$1 == t { print $2 }' fuzz/rss_limit_mb.txt)
+  if ! "$build/fuzz/powerkey_fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb="${rss:-2048}" \
       "${parallel[@]}" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" \
       "$corpus" "${inputs[@]}" >"$log" 2>&1; then
     result="FAILED (see $log)"
@@ -49,6 +51,7 @@ for t in "${targets[@]}"; do
   execs=$(grep -h 'stat::number_of_executed_units' "$log" | awk '{s += $2} END {print s + 0}' || true)
   rate=$(( execs / (seconds > 0 ? seconds : 1) ))
   cov=$(grep -hoE 'cov: [0-9]+' "$log" | tail -1 | awk '{print $2}' || true)
-  printf '%-16s %12s %10s %8s %s\n' "$t" "$execs" "$rate" "${cov:-?}" "$result" | tee -a "$summary"
+  peak=$(grep -h 'stat::peak_rss_mb' "$log" | awk '$2 > m { m = $2 } END { print m + 0 }' || true)
+  printf '%-16s %12s %10s %8s %8s %s\n' "$t" "$execs" "$rate" "${cov:-?}" "${peak:-?}" "$result" | tee -a "$summary"
 done
 exit $status

@@ -393,5 +393,175 @@ done
 [ "$("$pk" models | awk '{ print $1 }' | paste -sd' ')" = "$models" ] || fail "powerkey models: $("$pk" models | head -3)"
 [ "$("$pk" models PKP-3500-MT)" = pkp3500mt ] || fail "powerkey models PKP-3500-MT"
 
+# --- hostile input: bounded, loud, never silent (docs/security.md) ---------------------------------
+# Each hostile file is made here, cut to the limit it tests: a line one byte over the cap, not
+# gigabytes.
+py=/usr/bin/python3
+# A log line past logs::limits::text_line_bytes (65536): every subcommand stops reading there,
+# names the line and the limit, status 1, and reads no more of it (an endless line ends at once).
+{ echo '195#01'; head -c 65537 /dev/zero | tr '\0' A; echo; echo '195#02'; } > "$tmp/long.log"
+{ echo '195#01'; head -c 65536 /dev/zero | tr '\0' A; echo; echo '195#02'; } > "$tmp/longest.log"
+long_why="a line longer than 65536 bytes, the limit of a log line (the rest of the input is not read)"
+sixty_a=$(printf 'A%.0s' $(seq 60))
+for sub in $readers; do
+  run_sub $sub "$tmp/long.log" > "$tmp/out" 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/long.log:2: $long_why: '$sixty_a...'" "$tmp/err" ||
+    fail "$sub: a line over the limit: status $rc, $(head -c 300 "$tmp/err")"
+  grep -q "195#02" "$tmp/out" && fail "$sub: read past a line over the limit"
+  run_sub $sub "$tmp/longest.log" > /dev/null 2> "$tmp/err"
+  grep -q "limit of a log line" "$tmp/err" && fail "$sub: a line of exactly the limit refused"
+  # Endless, through a pipe: it ends at once, at flat memory.
+  tr '\0' A < /dev/zero | timeout 20 "$pk" $sub $([ $sub = simulate -o $sub = check ] && echo --model pk1000) > /dev/null 2> "$tmp/err"
+  rc=${PIPESTATUS[1]}
+  [ $rc -eq 1 ] && grep -qF "<stdin>:1: $long_why" "$tmp/err" || fail "$sub: an endless line: status $rc, $(head -c 200 "$tmp/err")"
+  # A directory: status 1 and its name, in every subcommand.
+  run_sub $sub "$tmp" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp: Is a directory" "$tmp/err" || fail "$sub: a directory: status $rc, $(cat "$tmp/err")"
+done
+# A bad frame holding an escape sequence, 60 KB long: escaped and cut to 60 bytes in every
+# subcommand (simulate wrote its ESC ... BEL raw, and the whole line).
+{ echo '000#0115'; printf '195#01\033]0;x\a'; head -c 60000 /dev/zero | tr '\0' A; echo; } > "$tmp/esc.log"
+for sub in $readers; do
+  run_sub $sub "$tmp/esc.log" > /dev/null 2> "$tmp/err"
+  grep -qxF "powerkey: $tmp/esc.log:2: malformed frame (expected ID#DATA): '195#01\x1B]0;x\x07$(printf 'A%.0s' $(seq 48))...'" "$tmp/err" ||
+    fail "$sub: a long bad frame with an escape sequence: $(head -c 300 "$tmp/err")"
+done
+# A binary file says so at once, whatever its length (decode /dev/zero read on to the end).
+timeout 20 "$pk" decode /dev/zero > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && grep -qxF "powerkey: /dev/zero: looks like a binary file that is not Vector BLF, not a CAN log powerkey reads; it reads candump and cansend lines, Vector ASC, PEAK TRC, python-can CSV and Vector BLF" "$tmp/err" ||
+  fail "decode /dev/zero: status $rc, $(head -2 "$tmp/err")"
+# ... the same from a file as through a pipe, whatever arrives first.
+printf 'abcd\0\0\0\n195#0115\n' > "$tmp/nul.log"
+"$pk" decode "$tmp/nul.log" > "$tmp/file.out" 2> /dev/null; rc1=$?
+{ printf 'abcd'; sleep 0.3; printf '\0\0\0\n195#0115\n'; } | "$pk" decode > "$tmp/pipe.out" 2> /dev/null; rc2=$?
+[ $rc1 -eq 1 ] && [ $rc2 -eq 1 ] && [ ! -s "$tmp/file.out" ] && [ ! -s "$tmp/pipe.out" ] ||
+  fail "a NUL in the first line: file $rc1 '$(cat "$tmp/file.out")', pipe $rc2 '$(cat "$tmp/pipe.out")'"
+# A JSON line past logs::limits::json_line_bytes: encode --json stops there.
+{ head -c 65537 /dev/zero | tr '\0' '{'; echo; } > "$tmp/long.json"
+"$pk" encode --json "$tmp/long.json" > /dev/null 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/long.json:1: a line longer than 65536 bytes, the limit of a JSON line (the rest of the input is not read): '$(printf '{%.0s' $(seq 60))...'" "$tmp/err" ||
+  fail "encode --json: a JSON line over the limit: status $rc, $(head -c 300 "$tmp/err")"
+tr '\0' x < /dev/zero | timeout 20 "$pk" encode --json > /dev/null 2> "$tmp/err"; rc=${PIPESTATUS[1]}
+[ $rc -eq 1 ] && grep -qF "<stdin>:1: a line longer than 65536 bytes" "$tmp/err" || fail "encode --json: an endless line: $rc"
+
+# TRC: a version, columns or a time the reader cannot use is an error, never 0 frames and 0.
+printf ';$FILEVERSION=3.0\n     1)  0.0  Rx  0195  1  01\n' > "$tmp/v3.trc"
+printf ';$FILEVERSION=2.1\n;$COLUMNS=\n      1      1.0 DT  1     0195 Rx -  1    01\n' > "$tmp/empty.trc"
+printf ';$FILEVERSION=2.1\n;$COLUMNS=N,T,B,I,d,R,L,D\n      1  DT  1     0195 Rx -  1    01\n' > "$tmp/notime.trc"
+printf ';$FILEVERSION=1.1\n     1)  1e308  Rx  0195  1  01\n' > "$tmp/time.trc"
+for f in v3 empty notime time; do
+  "$pk" decode "$tmp/$f.trc" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 1 ] || fail "TRC $f: status $rc, $(cat "$tmp/err")"
+done
+grep -qxF "powerkey: $tmp/time.trc:2: malformed TRC line (time): '1)  1e308  Rx  0195  1  01'" "$tmp/err" || fail "TRC time: $(cat "$tmp/err")"
+"$pk" decode "$tmp/v3.trc" > /dev/null 2> "$tmp/err"
+grep -qxF "powerkey: $tmp/v3.trc:1: a TRC file version powerkey does not read (it reads 1.0 to 1.3, 2.0 and 2.1): ';\$FILEVERSION=3.0'" "$tmp/err" ||
+  fail "TRC 3.0: $(cat "$tmp/err")"
+for f in empty notime; do
+  "$pk" decode "$tmp/$f.trc" > /dev/null 2> "$tmp/err"
+  grep -qF "$f.trc:2: unusable TRC columns" "$tmp/err" || fail "TRC $f: $(cat "$tmp/err")"
+done
+
+# Hostile BLF files, made by python3's struct and zlib.
+if [ -x "$py" ]; then
+  cat > "$tmp/blf.py" <<'PY'
+# The hostile BLF files of issue 26: blf.py KIND OUT
+import struct, sys, zlib
+kind, out = sys.argv[1], sys.argv[2]
+header = b"LOGG" + struct.pack("<I", 144) + bytes(136)
+def can(ident, size=48):  # CAN_MESSAGE: 32-byte header (10 us), channel 1, dlc 2, 8 bytes
+    return (b"LOBJ" + struct.pack("<HHII", 32, 1, size, 1) + struct.pack("<IIQ", 1, 0, 100000)
+            + struct.pack("<HBBI", 1, 0, 2, ident) + bytes([1, 0x15]) + bytes(6))
+def container(data, method=2):
+    payload = zlib.compress(data) if method == 2 else data
+    obj = (b"LOBJ" + struct.pack("<HHII", 16, 1, 32 + len(payload), 10)
+           + struct.pack("<H6xI4x", method, len(data)) + payload)
+    return obj + bytes(-len(obj) % 4)
+if kind == "tail":  # an object claiming 0xFFFFFFF0 bytes, then containers of 16 MiB of zeros
+    body = container(can(0x195, 0xFFFFFFF0)) + container(bytes(16 << 20)) * 15
+elif kind == "nested":  # 10,000 containers around one frame
+    body = can(0x195)
+    for level in range(10000):
+        body = (b"LOBJ" + struct.pack("<HHII", 16, 1, 32 + len(body), 10)
+                + struct.pack("<H6xI4x", 0, len(body)) + body)
+elif kind == "cut":  # a message cut short inside the last compressed container
+    body = container(can(0x195) + can(0x215)[:22])
+open(out, "wb").write(header + body)
+PY
+  for k in tail nested cut; do "$py" "$tmp/blf.py" $k "$tmp/$k.blf" || fail "blf.py $k"; done
+  [ "$(wc -c < "$tmp/tail.blf")" -lt 400000 ] || fail "tail.blf: $(wc -c < "$tmp/tail.blf") bytes"
+  for sub in $readers; do
+    run_sub $sub "$tmp/tail.blf" > /dev/null 2> "$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/tail.blf: object 2: a BLF object of 4294967280 bytes inside a container, more than the 1048576 the reader takes (damaged file?)" "$tmp/err" ||
+      fail "$sub: a BLF object claiming 4 GiB in a container: status $rc, $(cat "$tmp/err")"
+    run_sub $sub "$tmp/nested.blf" > /dev/null 2> "$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/nested.blf: object 2: a BLF container inside a container (no writer nests them; the reader takes containers at the top level only)" "$tmp/err" ||
+      fail "$sub: nested BLF containers: status $rc, $(cat "$tmp/err")"
+    run_sub $sub "$tmp/cut.blf" > /dev/null 2> "$tmp/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/cut.blf: object 3: the BLF file ends inside this object, in its last container (truncated?)" "$tmp/err" ||
+      fail "$sub: a message cut in the last container: status $rc, $(cat "$tmp/err")"
+  done
+  # A BLF file counts objects, never "line 0".
+  "$pk" decode "$tmp/cut.blf" 2>&1 | grep -q "line 0\|:0:" && fail "a BLF error at line 0"
+fi
+
+# --model auto keeps at most limits::model_auto_bytes (64 MiB) of frames before it chooses: a log
+# whose frames carry 60 KB times fills it after about 1,100 frames, and the rest is decoded as
+# it comes (it kept every frame: 160 bytes a frame of a 2.8 million-frame BLF).
+"$py" -c 'import sys; sys.stdout.write(("(1." + "0" * 60000 + ") can0 195#0100000010\n") * 1300)' |
+  "$pk" decode --model auto > /dev/null 2> "$tmp/err"; rc=${PIPESTATUS[1]}
+[ $rc -eq 0 ] && grep -qE "^powerkey: --model auto: the first 1[01][0-9][0-9] frames fill what it keeps \(64 MiB\): the model is chosen from them, the rest decoded as it comes$" "$tmp/err" &&
+  grep -q "^powerkey: summary: 1300 frames: 1300 decoded" "$tmp/err" || fail "--model auto past its memory: status $rc, $(head -c 400 "$tmp/err")"
+
+# check --json: a file name with control characters is JSON-escaped, every line valid JSON; the
+# text escapes it as every message does.
+odd="$tmp/a$(printf '\033')]0;x$(printf '\a').log"
+cp "$logs/check-problems.log" "$odd"
+"$pk" check --model pk1000 --json "$odd" "$logs/check-problems.log" > "$tmp/out" 2> /dev/null
+[ -s "$tmp/out" ] && "$py" -c 'import json, sys
+for line in open(sys.argv[1], encoding="ascii"): json.loads(line)' "$tmp/out" ||
+  fail "check --json with an odd file name: not JSON lines: $(head -c 300 "$tmp/out")"
+grep -qF '"file":"'"$tmp"'/a\u001B]0;x\u0007.log"' "$tmp/out" || fail "check --json file name: $(head -1 "$tmp/out")"
+"$pk" check --model pk1000 "$odd" "$logs/check-problems.log" > "$tmp/out" 2> "$tmp/err"
+LC_ALL=C grep -q $'\x1b' "$tmp/out" "$tmp/err" && fail "check: the file name's escape reached the terminal"
+grep -qF 'a\x1B]0;x\x07.log:' "$tmp/out" || fail "check: file name not escaped: $(head -1 "$tmp/out")"
+rm -f "$odd"
+
+# An empty option value is a usage error, never the default (--node '' was taken as 15h).
+for args in "decode --node" "decode --model" "simulate --model pk1000 --until" "check --model pk1000 --sdo-timeout" "convert --to"; do
+  "$pk" $args '' < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && [ "$(cat "$tmp/err")" = "powerkey: ${args##* }: an empty value (give one, or leave the option out for its default) (powerkey help shows the usage)" ] ||
+    fail "$args '': status $rc, $(cat "$tmp/err")"
+  # --opt= : CLI11 says the value is missing.
+  "$pk" $args= < /dev/null > /dev/null 2>&1; rc=$?
+  [ $rc -eq 2 ] || fail "$args=: status $rc"
+done
+
+# encode names the field that failed, and only it, with the range that applies.
+encode_error "powerkey: encode: led_on: red: '99' is outside 1..32" led-on red=99 green=1
+encode_error "powerkey: encode: sdo_write: period_ms: '65536' is more than a pk1000 takes (0..65535)" sdo-write object=heartbeat_time period_ms=65536
+encode_error "powerkey: encode: nmt_message: command: '3' is not what a pk1000 takes (start, stop, pre_operational, reset_node, reset_communication, legacy_stop)" nmt command=3
+
+# simulate: the keypad's clock is 32-bit milliseconds; a time past it is refused, never wrapped,
+# and the loop to its last millisecond ends.
+timeout 60 "$pk" simulate --model pk1000 --until 4294967.295 < /dev/null > "$tmp/out" 2> "$tmp/err"; rc=$?
+[ $rc -eq 0 ] && [ "$(cat "$tmp/out")" = "(0.000000) can0 715#00" ] || fail "simulate --until 4294967.295: status $rc, $(head -3 "$tmp/out" "$tmp/err")"
+for opt in "--until 4294967.296" "--press 4294967.296:1" "--release 5000000:1"; do
+  "$pk" simulate --model pk1000 $opt < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && grep -qF "s is past the keypad's clock (0..4294967.295 s, 32-bit milliseconds)" "$tmp/err" ||
+    fail "simulate $opt: status $rc, $(cat "$tmp/err")"
+done
+for opt in "--until 1e30" "--until inf" "--until -1" "--press 1e3:1"; do
+  "$pk" simulate --model pk1000 $opt < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && grep -qF "expected" "$tmp/err" || fail "simulate $opt: status $rc, $(cat "$tmp/err")"
+done
+# A log whose last time is 4294967.295 s after its first (the loop never ended), and a frame one
+# millisecond later: refused, and the simulation ends before it.
+printf '%s\n' '(1.000000) can0 000#0115' '(4294968.295) can0 000#0115' '(4294968.296) can0 000#8115' > "$tmp/late.log"
+timeout 60 "$pk" simulate --model pk1000 --press 4294967.000:1 "$tmp/late.log" > "$tmp/out" 2> "$tmp/err"; rc=$?
+[ $rc -eq 1 ] && grep -qxF "powerkey: $tmp/late.log:3: this frame comes 4294967.296 s after the first, past the keypad's clock (0..4294967.295 s, 32-bit milliseconds): the simulation ends before it" "$tmp/err" ||
+  fail "simulate past the clock: status $rc, $(cat "$tmp/err")"
+tail -1 "$tmp/out" | grep -q "^(4294968\.000000) can0 195#01" || fail "simulate to the clock's end: $(tail -1 "$tmp/out")"
+
 [ $failed -eq 0 ] && echo "cli: all checks passed"
 exit $failed

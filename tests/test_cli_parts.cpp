@@ -18,6 +18,8 @@
 #include <powerkey/canopen/nmt.hpp>
 #include <powerkey/canopen/sdo.hpp>
 
+#include <zlib.h>
+
 #include <array>
 #include <string>
 #include <string_view>
@@ -191,7 +193,245 @@ TEST_CASE("BLF: a truncated or damaged file is one problem, never a crash") {
     s.feed(blf);
     s.finish();
     CHECK(d.got ==
-          std::vector<std::string>{"!0 a BLF object without its LOBJ signature (damaged file?)"});
+          std::vector<std::string>{"!1 a BLF object without its LOBJ signature (damaged file?)"});
+    CHECK(s.done());
+}
+
+namespace {
+
+// --- hostile BLF files, made here (log_formats.cpp reads what these write) ---------------------
+
+void put_le(std::string& s, std::uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) s += static_cast<char>((v >> (8 * i)) & 0xFF);
+}
+// The file header as the writers make it: "LOGG", 144 bytes, no start time.
+std::string blf_header() {
+    std::string s = "LOGG";
+    put_le(s, 144, 4);
+    s.resize(144, '\0');
+    return s;
+}
+// A CAN_MESSAGE object (type 1): the base header, flags, client, version, time stamp (10 us),
+// then channel 1, flags, dlc 2, id, 8 data bytes. `size`: what its header says (0: the truth).
+std::string blf_can(std::uint32_t id, std::uint32_t size = 0) {
+    std::string s = "LOBJ";
+    put_le(s, 32, 2);
+    put_le(s, 1, 2);
+    put_le(s, size != 0 ? size : 48, 4);
+    put_le(s, 1, 4);
+    put_le(s, 1, 4);        // flags: 10 us
+    put_le(s, 0, 4);        // client index, object version
+    put_le(s, 100'000, 8);  // 1 s
+    put_le(s, 1, 2);        // channel 1
+    s += '\0';              // flags
+    s += '\2';              // dlc
+    put_le(s, id, 4);
+    s += std::string("\x01\x15\0\0\0\0\0\0", 8);
+    return s;
+}
+// A log container (type 10) of `data`: zlib-compressed (method 2) or stored (0), stating
+// `unpacked` bytes (0: the truth); padded to 4 bytes as at the top level.
+std::string blf_container(std::string_view data, bool zlib = true, std::uint32_t unpacked = 0) {
+    std::string payload(data);
+    if (zlib) {
+        uLongf n = compressBound(static_cast<uLong>(data.size()));
+        payload.resize(n);
+        REQUIRE(compress(reinterpret_cast<Bytef*>(payload.data()), &n,
+                         reinterpret_cast<const Bytef*>(data.data()),
+                         static_cast<uLong>(data.size())) == Z_OK);
+        payload.resize(n);
+    }
+    std::string s = "LOBJ";
+    put_le(s, 16, 2);
+    put_le(s, 1, 2);
+    put_le(s, 32 + payload.size(), 4);
+    put_le(s, 10, 4);
+    put_le(s, zlib ? 2 : 0, 2);
+    put_le(s, 0, 6);
+    put_le(s, unpacked != 0 ? unpacked : data.size(), 4);
+    put_le(s, 0, 4);
+    s += payload;
+    if (s.size() % 4 != 0) s.append(4 - s.size() % 4, '\0');
+    return s;
+}
+
+// `inner` in `depth` stored containers, one inside the other (built outside in: no copies).
+std::string blf_nested(std::string_view inner, std::size_t depth) {
+    std::string s;
+    s.reserve(depth * 32 + inner.size() + 3);
+    for (std::size_t level = depth; level > 0; --level) {
+        const std::size_t payload = inner.size() + 32 * (level - 1);
+        s += "LOBJ";
+        put_le(s, 16, 2);
+        put_le(s, 1, 2);
+        put_le(s, 32 + payload, 4);
+        put_le(s, 10, 4);
+        put_le(s, 0, 8);  // stored, reserved
+        put_le(s, payload, 4);
+        put_le(s, 0, 4);
+    }
+    s += inner;
+    if (s.size() % 4 != 0) s.append(4 - s.size() % 4, '\0');
+    return s;
+}
+
+// What a reader finds in `bytes` fed in pieces of `chunk` bytes, and whether it stopped.
+struct read_result {
+    std::vector<std::string> got;
+    bool done;
+};
+read_result read_bytes(std::string_view bytes, std::size_t chunk) {
+    collect c;
+    tool::logs::reader r(c);
+    for (std::size_t i = 0; i < bytes.size(); i += chunk) r.feed(bytes.substr(i, chunk));
+    r.finish();
+    return {c.got, r.done()};
+}
+
+}  // namespace
+
+TEST_CASE("limits: a text line past limits::text_line_bytes ends the input, in any chunks") {
+    constexpr auto most = tool::logs::limits::text_line_bytes;
+    // A line of exactly the limit is a line (a bad one); one byte more ends the input there.
+    const std::string at_limit = "195#01\n" + std::string(most, 'A') + "\n195#02\n";
+    const std::string over = "195#01\n" + std::string(most + 1, 'A') + "\n195#02\n";
+    for (const std::size_t chunk : {std::size_t{1000}, std::size_t{4096}, over.size()}) {
+        CAPTURE(chunk);
+        const auto a = read_bytes(at_limit, chunk);
+        CHECK(a.got == std::vector<std::string>{
+                           "195#01   1", "!2 not a frame (expected ID#DATA or a candump line)",
+                           "195#02   3"});
+        CHECK_FALSE(a.done);
+        const auto b = read_bytes(over, chunk);
+        CHECK(b.got ==
+              std::vector<std::string>{"195#01   1",
+                                       "!2 a line longer than 65536 bytes, the limit of a log "
+                                       "line (the rest of the input is not read)"});
+        CHECK(b.done);
+    }
+    // Without an end: stopped as soon as the limit is passed, not at the end of the input.
+    collect c;
+    tool::logs::reader r(c);
+    r.feed("195#01\n");
+    for (int i = 0; i < 20 && !r.done(); ++i) r.feed(std::string(8192, 'A'));
+    CHECK(r.done());
+    CHECK(c.got.size() == 2);
+}
+
+TEST_CASE("limits: a binary file is told by a NUL in its first line, however it arrives") {
+    const std::string_view nul("abcd\0\0\0\n195#0115\n", 16);
+    for (std::size_t chunk = 1; chunk <= nul.size(); ++chunk) {
+        CAPTURE(chunk);
+        collect c;
+        tool::logs::reader r(c);
+        for (std::size_t i = 0; i < nul.size(); i += chunk) r.feed(nul.substr(i, chunk));
+        r.finish();
+        CHECK(c.got.empty());
+        CHECK(r.detected() == tool::logs::format::not_a_log);
+        CHECK(r.looks_like() == "a binary file that is not Vector BLF");
+    }
+    // The byte-order mark and the signatures, one byte at a time.
+    CHECK(read_all("\xEF\xBB\xBF"
+                   "195#01\n",
+                   1) == std::vector<std::string>{"195#01   1"});
+    collect c;
+    tool::logs::reader r(c);
+    for (const char b : std::string_view("MDF     4.10    ")) r.feed(std::string_view(&b, 1));
+    r.finish();
+    CHECK(r.looks_like() == "an ASAM MDF (MF4) measurement file");
+    // A first line of text: a NUL later is a bad line, not a binary file.
+    CHECK(read_all(std::string_view("195#01\n19\0#01\n", 14)) ==
+          std::vector<std::string>{"195#01   1", "!2 malformed frame (expected ID#DATA)"});
+}
+
+TEST_CASE("limits: BLF objects, the tail a container carries, nested containers") {
+    const std::string two = blf_can(0x195) + blf_can(0x215);
+    // The reference: two messages in one container, and split across two (the tail carried).
+    CHECK(read_bytes(blf_header() + blf_container(two), 7).got ==
+          std::vector<std::string>{"195#0115 1.000000 can0 2", "215#0115 1.000000 can0 3"});
+    CHECK(read_bytes(blf_header() + blf_container(two.substr(0, 70)) +
+                         blf_container(two.substr(70), false),
+                     4096)
+              .got ==
+          std::vector<std::string>{"195#0115 1.000000 can0 2", "215#0115 1.000000 can0 4"});
+    // An object in a container claiming 0xFFFFFFF0 bytes, then containers of 16 MiB of zeros:
+    // refused at once, its containers never unpacked.
+    std::string huge = blf_header() + blf_container(blf_can(0x195, 0xFFFF'FFF0));
+    const std::string zeros(16u << 20, '\0');
+    huge += blf_container(zeros);
+    auto got = read_bytes(huge, 65536);
+    CHECK(got.got == std::vector<std::string>{
+                         "!2 a BLF object of 4294967280 bytes inside a container, more than the "
+                         "1048576 the reader takes (damaged file?)"});
+    CHECK(got.done);
+    // At the top level: refused when its header is read, not after its bytes.
+    got = read_bytes(blf_header() + blf_can(0x195, 0xFFFF'FFF0), 65536);
+    CHECK(got.got == std::vector<std::string>{
+                         "!1 a BLF object of 4294967280 bytes, more than the 16842752 the reader "
+                         "takes (damaged file?)"});
+    // A container stating more than 16 MiB unpacked.
+    got = read_bytes(blf_header() + blf_container(two, true, (16u << 20) + 1), 4096);
+    CHECK(got.got == std::vector<std::string>{
+                         "!1 a BLF container of 16777217 bytes unpacked, more than the 16777216 "
+                         "the reader takes (damaged file?)"});
+    // Containers in containers, 10,000 deep and 2 deep: refused at the first inner one.
+    got = read_bytes(blf_header() + blf_nested(blf_can(0x195), 10'000), 65536);
+    CHECK(got.got == std::vector<std::string>{
+                         "!2 a BLF container inside a container (no writer nests them; the reader "
+                         "takes containers at the top level only)"});
+    CHECK(got.done);
+    got = read_bytes(blf_header() + blf_container(blf_container(two)), 65536);
+    CHECK(got.got.size() == 1);
+    // A message cut short in the last compressed container: said, not dropped.
+    got = read_bytes(blf_header() + blf_container(two.substr(0, 70)), 4096);
+    CHECK(got.got ==
+          std::vector<std::string>{"195#0115 1.000000 can0 2",
+                                   "!3 the BLF file ends inside this object, in its last container "
+                                   "(truncated?)"});
+    // Padding after the last message is no object.
+    CHECK(read_bytes(blf_header() + blf_container(two + std::string(3, '\0')), 4096).got.size() ==
+          2);
+}
+
+TEST_CASE("TRC: a version, columns or a time the reader cannot use is an error") {
+    CHECK(read_all(";$FILEVERSION=3.0\n     1)  0.0  Rx  0195  1  01\n") ==
+          std::vector<std::string>{"!1 a TRC file version powerkey does not read (it reads 1.0 to "
+                                   "1.3, 2.0 and 2.1)"});
+    const std::string unusable =
+        "!2 unusable TRC columns (each of N,O,T,B,I,d,R,L,l,D at most once; a frame needs O, I, L "
+        "or l, T in 2.x, and D last)";
+    for (std::string_view columns :
+         {"", "N,T,I,d,l,D", "N,O,T,I,d,l", "N,O,T,I,I,l,D", "N,O,T,I,x,l,D", "N,O,I,l,D"}) {
+        CAPTURE(columns);
+        CHECK(read_all(";$FILEVERSION=2.1\n;$COLUMNS=" + std::string(columns) +
+                       "\n      1      1.0 DT  1     0195 Rx -  1    01\n") ==
+              std::vector<std::string>{unusable});
+    }
+    // A column list of 30,000 letters (a line within the limit) costs one pass, not one per line.
+    std::string many = ";$FILEVERSION=2.1\n;$COLUMNS=";
+    for (int i = 0; i < 30'000; ++i) many += "N,";
+    many += "\n";
+    for (int i = 0; i < 1000; ++i) many += "      1      1.0 DT  1     0195 Rx -  1    01\n";
+    CHECK(read_all(many, 4096) == std::vector<std::string>{unusable});
+    for (std::string_view time : {"abc", "nan", "-inf", "1e308", "-1", "0x10"}) {
+        CAPTURE(time);
+        CHECK(
+            read_all(";$FILEVERSION=1.1\n     1)  " + std::string(time) + "  Rx  0195  1  01\n") ==
+            std::vector<std::string>{"!2 malformed TRC line (time)"});
+    }
+}
+
+TEST_CASE("CSV: a time that is no number is an error, remote frames too") {
+    const std::string head = "timestamp,arbitration_id,extended,remote,error,dlc,data\n";
+    for (std::string_view time : {"abc", "nan", "inf", "-1", "1e12", "0x10", "1.5x"}) {
+        CAPTURE(time);
+        CHECK(read_all(head + std::string(time) + ",0x195,0,0,0,1,AQ==\n") ==
+              std::vector<std::string>{"!2 malformed CSV line (timestamp)"});
+        CHECK(read_all(head + std::string(time) + ",0x195,0,1,0,1,\n") ==
+              std::vector<std::string>{"!2 malformed CSV line (timestamp)"});
+    }
+    CHECK(read_all(head + "1.5e-05,0x195,0,1,0,1,\n") ==
+          std::vector<std::string>{"R 195 1 0.000015 2"});
 }
 
 TEST_CASE("base64 of python-can's CSV") {

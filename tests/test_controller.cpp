@@ -669,6 +669,129 @@ TEST_CASE("controller: an LED the model lacks is refused") {
     CHECK(!c.set_led(0, colour::white));
 }
 
+TEST_CASE("controller: a colour the keypad cannot show, or no colour, is refused") {
+    controller_config cfg;  // a PK1000: red and green planes
+    controller<> c(cfg);
+    CHECK(c.set_led(1, colour::amber));
+    CHECK(c.led_on().red.contains(1));
+    for (const colour no :
+         {colour::blue, colour::cyan, colour::magenta, colour::white, static_cast<colour>(99)}) {
+        CAPTURE(static_cast<int>(no));
+        CHECK(!c.set_led(1, no));
+        CHECK(c.led_on().red.contains(1));  // unchanged
+    }
+    leds blue;
+    blue.blue.insert(1);
+    CHECK(!c.set_leds(blue, {}));
+    leds led29;
+    led29.red.insert(29);
+    CHECK(!c.set_leds(led29, {}));
+    CHECK(c.set_leds({}, {}));
+    CHECK(c.led_on() == leds{});
+}
+
+TEST_CASE("controller: one call's events fit the default queue (events_per_call)") {
+    // Issue 26: 10 keys held past the long press and the repeat delay, one tick: 20 events, of
+    // which a queue of 16 dropped 4 although the application polled after every call.
+    static_assert(events_per_call(10) == 33 && default_event_capacity == events_per_call(16));
+    static_assert(controller<>::event_capacity() >= events_per_call(15));
+    controller_config cfg;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    cfg.lost_after = duration_ms{0};
+    auto run = []<std::size_t Events>(controller<8, Events>& c) {
+        c.step(f_("715#00"), millis{0});
+        while (c.poll()) {
+        }
+        while (c.next_frame()) {
+        }
+        c.step(f_("195#FF03000001"), millis{10});  // keys 1..10 pressed
+        std::size_t n = 0;
+        while (c.poll()) ++n;
+        CHECK(n == 10);
+        c.tick(millis{1000});  // past 800 ms (long press) and 500 ms (repeat): one call
+        n = 0;
+        while (const auto e = c.poll())
+            n += e->kind == event_kind::key_long_press || e->kind == event_kind::key_repeat;
+        return n;
+    };
+    controller<8> big(cfg);
+    CHECK(run(big) == 20);
+    CHECK(big.events_dropped() == 0);
+    // A queue smaller than events_per_call drops what one call reports past it, and counts it.
+    controller<8, 16> small(cfg);
+    CHECK(run(small) == 16);
+    CHECK(small.events_dropped() == 4);
+}
+
+TEST_CASE("controller: refused configuration entries wait for room in the queue") {
+    // 2014h is not in a PKP-2400's dictionary: every entry is refused, each an event. With a
+    // queue of 2, the setup goes on at each call as the application polls; none is dropped.
+    const message refused = sdo_write{object::startup_show, show_value(startup_show::disabled)};
+    const std::array<message, 7> config{refused, refused, refused, refused,
+                                        refused, refused, refused};
+    controller_config cfg;
+    cfg.keypad_model = model::pkp2400;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    cfg.lost_after = duration_ms{0};
+    cfg.configuration = config;
+    controller<16, 2> c(cfg);
+    c.step(f_("715#00"), millis{0});
+    std::vector<std::uint16_t> steps;
+    bool ready = false;
+    for (std::uint32_t t = 1; t < 20 && !ready; ++t) {
+        while (const auto e = c.poll()) {
+            if (e->kind == event_kind::sdo_refused) steps.push_back(e->step);
+            ready = ready || e->kind == event_kind::ready;
+        }
+        c.tick(millis{t});
+    }
+    while (const auto e = c.poll()) ready = ready || e->kind == event_kind::ready;
+    CHECK(ready);
+    CHECK(steps == std::vector<std::uint16_t>{0, 1, 2, 3, 4, 5, 6});
+    CHECK(c.events_dropped() == 0);
+}
+
+TEST_CASE("controller: a setup ended by a timeout is ready once, started once") {
+    const message config[] = {sdo_read{object::device_type}};
+    controller_config cfg;
+    cfg.configuration = config;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    cfg.lost_after = duration_ms{0};
+    cfg.sdo_retries = 0;
+    scripted s(cfg);
+    s.ctl.step(f_("715#00"), millis{0});
+    CHECK(s.sent() == std::vector<std::string>{"615#4000100000000000"});
+    (void)s.events();
+    s.ctl.tick(millis{300});  // no reply: timed out, and the setup ends in the same call
+    const auto ev = s.events();
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[0].kind == event_kind::sdo_timed_out);
+    CHECK(ev[1].kind == event_kind::ready);
+    CHECK(s.sent() ==
+          std::vector<std::string>{"000#0115", "215#0000000000000000", "315#0000000000000000"});
+}
+
+TEST_CASE("controller: a list longer than max_configuration is cut, and says so") {
+    static_assert(max_configuration == 65535);
+    std::vector<message> config(max_configuration + 2, message{led_on{}});  // no SDO: skipped
+    controller_config cfg;
+    cfg.configuration = config;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    scripted s(cfg);
+    s.ctl.step(f_("715#00"), millis{0});
+    const auto ev = s.events();
+    REQUIRE(ev.size() == 3);
+    CHECK(ev[0].kind == event_kind::found);
+    CHECK(ev[1].kind == event_kind::sdo_refused);
+    CHECK(ev[1].step == max_configuration);
+    CHECK(ev[1].value == static_cast<std::uint32_t>(errc::value_out_of_range));
+    CHECK(ev[2].kind == event_kind::ready);
+}
+
 // --- key modes ------------------------------------------------------------------------------
 
 TEST_CASE("key modes: momentary, toggle, cycle") {

@@ -15,6 +15,7 @@
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/session.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -197,7 +198,20 @@ TEST_CASE("controller: a full event queue keeps the first events and counts the 
     REQUIRE(small.events.size() == 2);
     CHECK(small.events[0] == big.events[0]);
     CHECK(small.events[1] == big.events[1]);
-    CHECK(small.ctl.events_dropped() == big.events.size() - 2);
+    // ready waits for room (controller.hpp): never polled, the setup does not end, and the
+    // events between the first two and the ready are dropped and counted.
+    const auto ready = std::find_if(big.events.begin(), big.events.end(),
+                                    [](const auto& e) { return e.kind == event_kind::ready; });
+    REQUIRE(ready != big.events.end());
+    REQUIRE(ready - big.events.begin() >= 2);
+    CHECK(small.ctl.state() == controller_state::setting_up);
+    CHECK(small.ctl.events_dropped() == static_cast<std::size_t>(ready - big.events.begin()) - 2);
+    // Polled, it ends: the ready comes at the next call.
+    while (small.ctl.poll()) {
+    }
+    small.ctl.tick(millis{small.now});
+    CHECK(small.ctl.poll()->kind == event_kind::ready);
+    CHECK(small.ctl.state() == controller_state::running);
 }
 
 TEST_CASE("controller: with a one-frame outbox the setup still completes") {

@@ -114,7 +114,8 @@ EOF
       [ $rc -eq 0 ] || fail "$m.$ext: exit status $rc: $(head -3 "$tmp/err")"
       # The remote, FD and error frames: named once each, where the format carries them.
       case $ext in
-        asc|blf|csv|log) grep -q "1 remote frame not decoded (not supported by powerkey), the first at line" "$tmp/err" ||
+        asc|blf|csv|log) unit=line; [ $ext = blf ] && unit=object  # a BLF file counts objects
+                         grep -q "1 remote frame not decoded (not supported by powerkey), the first at $unit" "$tmp/err" ||
                            fail "$m.$ext: remote frame not named: $(cat "$tmp/err")" ;;
       esac
       case $ext in

@@ -515,6 +515,26 @@ TEST_CASE("heartbeat producer: every heartbeat_time ms, the NMT state; 0 stops i
     CHECK(run_until(k, millis{60'001}, millis{60'010}) == strings{"60010 715#7F"});
 }
 
+TEST_CASE("next_due: the time advance() next has work, nothing before it") {
+    auto k = booted(model::pk1000);
+    CHECK_FALSE(k.next_due());  // pre-operational, no heartbeat, nothing pending
+    k.receive(frame_of("615#2B17100064000000"), millis{10});  // heartbeat 100 ms
+    REQUIRE(k.next_due());
+    CHECK(*k.next_due() == millis{11});  // the SDO reply (sdo_response_ms 1)
+    k.advance(millis{11});
+    CHECK(text_of(*k.transmit()) == "595#6017100000000000");
+    // Each due time: advance() before it sends nothing, at it sends.
+    for (int i = 0; i < 3; ++i) {
+        const auto due = *k.next_due();
+        k.advance(millis{due.value - 1});
+        CHECK_FALSE(k.transmit());
+        k.advance(due);
+        CHECK(text_of(*k.transmit()) == "715#7F");
+    }
+    k.power_off();
+    CHECK_FALSE(k.next_due());
+}
+
 TEST_CASE("heartbeat consumer: on a lost heartbeat LEDs and backlight off, pre-operational") {
     auto k = booted(model::pk1000);
     CHECK(ask(k, "615#2316100164000100") == "595#6016100100000000");  // 100 ms from node 1

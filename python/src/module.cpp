@@ -72,6 +72,52 @@ python_types& types() {
 
 std::string py_repr(py::handle o) { return py::repr(o).cast<std::string>(); }
 
+// --- plain ints, whatever their size ---------------------------------------------------------
+// Python ints have no size: they are compared as Python ints before any conversion, so that 2**64
+// is a ValueError naming the range, not pybind11's "Unable to cast".
+
+bool is_int(py::handle o) { return py::isinstance<py::int_>(o) && !py::isinstance<py::bool_>(o); }
+
+void expect_int(py::handle o, const std::string& what, const char* expected = "an int") {
+    if (!is_int(o)) throw py::type_error(what + ": expected " + expected + ", not " + py_repr(o));
+}
+
+bool int_within(py::handle o, std::uint64_t lo, std::uint64_t hi) {
+    return !(o < py::int_(lo)) && !(o > py::int_(hi));
+}
+
+// An int lo..hi: TypeError for no int, ArgumentError (a ValueError) naming the range.
+std::uint64_t int_arg(py::handle o, const std::string& what, std::uint64_t lo, std::uint64_t hi,
+                      const std::string& why = "") {
+    expect_int(o, what);
+    if (!int_within(o, lo, hi))
+        raise(types().argument_error,
+              what + ": " + py_repr(o) + " is outside " + std::to_string(lo) + ".." +
+                  std::to_string(hi) + why,
+              py::str("value_out_of_range"));
+    return o.cast<std::uint64_t>();
+}
+
+// A duration in ms: the library's clock compares times less than 2^31 ms apart.
+pb::duration_ms duration_arg(py::handle o, const std::string& what) {
+    return pb::duration_ms{static_cast<std::uint32_t>(int_arg(
+        o, what, 0, 0x7FFF'FFFF, " ms (the clock compares times less than 2^31 ms apart)"))};
+}
+
+// A time in ms on the library's wrapping 32-bit counter: any int, taken modulo 2^32.
+pb::millis millis_arg(py::handle o, const std::string& what = "t") {
+    expect_int(o, what);
+    const py::object low = py::reinterpret_borrow<py::object>(o) & py::int_(0xFFFF'FFFFu);
+    return pb::millis{low.cast<std::uint32_t>()};
+}
+
+// True or False (or 0 or 1): the flags of a frame.
+bool flag_arg(py::handle o, const std::string& what) {
+    if (py::isinstance<py::bool_>(o)) return o.cast<bool>();
+    if (is_int(o) && int_within(o, 0, 1)) return o.cast<std::uint64_t>() == 1;
+    throw py::type_error(what + ": expected True or False, not " + py_repr(o));
+}
+
 // --- names ----------------------------------------------------------------------------------
 
 template <named_enum E>
@@ -80,28 +126,38 @@ py::object enum_to_py(E e) {
     return py::int_(static_cast<std::uint64_t>(e));
 }
 
-// A value of E from its name (aliases too) or its number.
 template <named_enum E>
-E enum_from_py(py::handle o, const char* what) {
+std::string enum_names_text() {
+    std::string names;
+    for (const E v : enum_values<E>()) names.append(names.empty() ? "" : ", ").append(to_string(v));
+    return names;
+}
+
+// A value of E from its name (aliases too) or its number; `named_only`: a number must be one of
+// the named values (a colour, a mode), not any value of the enum's type (an abort code).
+template <named_enum E>
+E enum_from_py(py::handle o, const char* what, bool named_only = false) {
     if (py::isinstance<py::str>(o)) {
         const auto s = o.cast<std::string>();
         if (const auto v = from_string<E>(s)) return *v;
-        std::string names;
-        for (const E v : enum_values<E>())
-            names.append(names.empty() ? "" : ", ").append(to_string(v));
-        argument_error(std::string(what) + ": unknown name '" + s + "' (" + names + ")");
+        argument_error(std::string(what) + ": unknown name '" + s + "' (" + enum_names_text<E>() +
+                       ")");
     }
-    if (py::isinstance<py::int_>(o) && !py::isinstance<py::bool_>(o)) {
+    if (is_int(o)) {
         using U = std::underlying_type_t<E>;
-        const auto n = o.cast<long long>();
-        if (n < 0 || static_cast<unsigned long long>(n) > std::numeric_limits<U>::max())
-            argument_error(std::string(what) + ": " + std::to_string(n) + " is outside 0.." +
-                           std::to_string(std::numeric_limits<U>::max()));
-        return static_cast<E>(static_cast<U>(n));
+        if (!int_within(o, 0, std::numeric_limits<U>::max()))
+            argument_error(std::string(what) + ": " + py_repr(o) + " is outside 0.." +
+                           std::to_string(std::numeric_limits<U>::max()) +
+                           (named_only ? " (" + enum_names_text<E>() + ")" : std::string()));
+        const auto v = static_cast<E>(static_cast<U>(o.cast<std::uint64_t>()));
+        if (named_only && !is_named(v))
+            argument_error(std::string(what) + ": " + py_repr(o) + " names none of " +
+                           enum_names_text<E>());
+        return v;
     }
     // A bound enum (powerkey.Model): its int value.
-    if (py::hasattr(o, "value") && py::isinstance<py::int_>(o.attr("value")))
-        return enum_from_py<E>(o.attr("value"), what);
+    if (py::hasattr(o, "value") && is_int(o.attr("value")))
+        return enum_from_py<E>(o.attr("value"), what, named_only);
     throw py::type_error(std::string(what) + ": expected a name or a number, not " + py_repr(o));
 }
 
@@ -128,13 +184,13 @@ canopen::node_id node_from_py(py::handle o, const char* what = "node") {
             argument_error(std::string(what) + ": expected a node id 1..127 (0x15, 15h or 21), " +
                            "got " + py_repr(o));
         n = v > 0xFFFF ? 0xFFFF : static_cast<long long>(v);
-    } else if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o)) {
+    } else if (!is_int(o)) {
         throw py::type_error(std::string(what) +
                              ": expected an int 1..127 or a str like '15h', "
                              "not " +
                              py_repr(o));
     } else {
-        n = o.cast<long long>();
+        n = int_within(o, 0, 255) ? static_cast<long long>(o.cast<std::uint64_t>()) : 0;
     }
     const auto id = canopen::node_id::make(n < 0 || n > 255 ? 0u : static_cast<unsigned>(n));
     if (!id)
@@ -142,9 +198,6 @@ canopen::node_id node_from_py(py::handle o, const char* what = "node") {
               py::str("value_out_of_range"));
     return *id;
 }
-
-// A time in ms on the library's wrapping 32-bit counter.
-pb::millis millis_from(std::int64_t t) { return pb::millis{static_cast<std::uint32_t>(t)}; }
 
 // --- field values, both ways ----------------------------------------------------------------
 
@@ -187,9 +240,8 @@ py::object to_py(const T& v) {
 }
 
 std::uint64_t unsigned_from_py(py::handle o, std::string_view field, std::uint64_t max) {
-    if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
-        throw py::type_error(std::string(field) + ": expected an int, not " + py_repr(o));
-    if (o < py::int_(0) || o > py::int_(max))
+    expect_int(o, std::string(field));
+    if (!int_within(o, 0, max))
         field_out_of_range(field, py_repr(o) + " is outside 0.." + std::to_string(max));
     return o.cast<std::uint64_t>();
 }
@@ -227,10 +279,10 @@ void from_py(T& v, py::handle o, std::string_view field) {
                                  py_repr(o));
         T s{};
         for (const auto item : o) {
-            if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
+            if (!is_int(item))
                 throw py::type_error(std::string(field) + ": expected numbers like [1, 7], not " +
                                      py_repr(o));
-            if (item < py::int_(1) || item > py::int_(T::max))
+            if (!int_within(item, 1, T::max))
                 field_out_of_range(field,
                                    py_repr(item) + " is outside 1.." + std::to_string(T::max));
             s.insert(item.cast<unsigned>());
@@ -249,14 +301,13 @@ void from_py(T& v, py::handle o, std::string_view field) {
         v = out;
     } else {
         // bounded and plain integers: the tool's range text ("99 is outside 00h..3Fh")
-        if (!py::isinstance<py::int_>(o) || py::isinstance<py::bool_>(o))
+        if (!is_int(o))
             throw py::type_error(std::string(field) +
                                  ": expected an int or a str like '3Ah', "
                                  "not " +
                                  py_repr(o));
-        if (o < py::int_(0)) field_out_of_range(field, py_repr(o) + " is negative");
-        if (o > py::int_(std::numeric_limits<std::uint64_t>::max()))
-            field_out_of_range(field, py_repr(o) + " is too large");
+        if (!int_within(o, 0, std::numeric_limits<std::uint64_t>::max()))
+            field_out_of_range(field, py_repr(o) + " is outside " + tool::range_of<T>(field));
         const auto e = tool::set_from_number(v, o.cast<std::uint64_t>(), field);
         if (!e.empty()) field_out_of_range(field, e);
     }
@@ -368,9 +419,8 @@ message build_message(const std::string& kind_text, const py::dict& fields,
         for_each_field(m, [&](std::string_view n, const auto& v) {
             if (n == why.field) value = to_py(v);
         });
-        text = kind + ": " + std::string(why.field) + ": " + py_repr(value) +
-               (why.most > 0 ? " is more than a " : " is not what a ") + name + " takes" +
-               (why.most > 0 ? " (1.." + std::to_string(why.most) + ")" : "");
+        text = kind + ": " + std::string(why.field) + ": " +
+               tool::refusal_text(why, py_repr(value), name);
     } else {
         raise_code(types().encode_error, "encode " + kind + " for " + name, e);
     }
@@ -378,6 +428,16 @@ message build_message(const std::string& kind_text, const py::dict& fields,
 }
 
 // --- frames ---------------------------------------------------------------------------------
+
+// A frame's identifier: an int 0..1FFFFFFFh (a DecodeError past that: no frame has it).
+std::uint64_t frame_id_arg(py::handle o, const std::string& what) {
+    expect_int(o, what);
+    if (!int_within(o, 0, 0x1FFF'FFFF))
+        raise(types().decode_error,
+              "frame: " + what + ": " + py_repr(o) + " is outside 0..0x1FFFFFFF (11 or 29 bits)",
+              py::str("value_out_of_range"));
+    return o.cast<std::uint64_t>();
+}
 
 // A frame from a can.Message (or anything with arbitration_id, data, is_extended_id), or from an
 // (id, data[, extended]) tuple. Remote and error frames carry no keypad message.
@@ -390,23 +450,28 @@ can::frame frame_from_py(py::handle o) {
         for (const auto& [flag, what] :
              {std::pair{"is_remote_frame", "a remote frame"},
               std::pair{"is_error_frame", "an error frame"}, std::pair{"is_fd", "a CAN FD frame"}})
-            if (py::hasattr(o, flag) && o.attr(flag).cast<bool>())
+            if (py::hasattr(o, flag) && flag_arg(o.attr(flag), flag))
                 raise(types().decode_error,
                       std::string(what) +
                           " carries no keypad message (powerkey decodes classic "
                           "CAN data frames)",
                       py::str("unexpected_frame"));
-        id = o.attr("arbitration_id").cast<std::uint64_t>();
+        id = frame_id_arg(o.attr("arbitration_id"), "arbitration_id");
         data = o.attr("data");
-        if (py::hasattr(o, "is_extended_id")) ext = o.attr("is_extended_id").cast<bool>();
+        if (py::hasattr(o, "is_extended_id"))
+            ext = flag_arg(o.attr("is_extended_id"), "is_extended_id");
     } else if (py::isinstance<py::tuple>(o) && (py::len(o) == 2 || py::len(o) == 3)) {
         const auto t = py::reinterpret_borrow<py::tuple>(o);
-        id = unsigned_from_py(t[0], "id", 0x1FFF'FFFF);
+        id = frame_id_arg(t[0], "id");
         data = t[1];
-        if (py::len(t) == 3) ext = t[2].cast<bool>();
+        if (py::len(t) == 3) ext = flag_arg(t[2], "extended");
     } else {
         throw py::type_error("expected a can.Message or (id, data), not " + py_repr(o));
     }
+    // bytes(5) would be five zero bytes, bytes("ab") needs an encoding: neither is frame data.
+    if (is_int(data) || py::isinstance<py::str>(data) || py::isinstance<py::bool_>(data))
+        throw py::type_error("data: expected bytes (or a list of byte values), not " +
+                             py_repr(data));
     const auto bytes = py::module_::import("builtins")
                            .attr("bytes")(data.is_none() ? py::bytes() : data)
                            .cast<std::string>();
@@ -472,7 +537,7 @@ leds leds_from_py(py::handle o, std::string_view what) {
         throw py::type_error(std::string(what) + ": expected a dict like {'green': [3]}, not " +
                              py_repr(o));
     for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(o)) {
-        const auto p = enum_from_py<plane>(k, "plane");
+        const auto p = enum_from_py<plane>(k, "plane", true);
         from_py(l.of(p), v, what);
     }
     return l;
@@ -525,6 +590,12 @@ py::dict session_event_to_py(const py_session& ps, const session_event& e) {
     return d;
 }
 
+// A key number: any int; one the model lacks (0, 99, 2**64) is False from press/release, as in C++.
+unsigned key_arg(py::handle o) {
+    expect_int(o, "key");
+    return int_within(o, 1, key_set::max) ? static_cast<unsigned>(o.cast<std::uint64_t>()) : 0u;
+}
+
 using keypad_type = pb::virtual_keypad<64>;
 using controller_type = pb::controller<64, 128>;
 
@@ -538,6 +609,41 @@ struct py_controller {
     py_controller(const py_controller&) = delete;
     py_controller& operator=(const py_controller&) = delete;
 };
+
+// The colours a controller's keypad shows, for its refusals: "off, red, green, amber".
+std::string shown_colours(const py_controller& c) {
+    std::string names;
+    for (const colour v : enum_values<colour>())
+        if (c.c.shows(v)) names.append(names.empty() ? "" : ", ").append(to_string(v));
+    return names;
+}
+
+[[noreturn]] void refuse_colour(const py_controller& c, colour cl) {
+    raise(types().argument_error,
+          "colour: a " + std::string(to_string(c.c.model())) + " shows no " +
+              std::string(to_string(cl)) + " (" + shown_colours(c) + ")",
+          py::str("value_out_of_range"));
+}
+
+// An LED map names only the planes and LEDs the keypad has (else set_leds would be refused).
+void check_leds(const py_controller& c, const leds& l, const char* what) {
+    const auto row = info(c.c.model()).value();
+    for (const plane p : enum_values<plane>()) {
+        const auto& set = l.of(p);
+        if (set.empty()) continue;
+        if (static_cast<unsigned>(p) >= row.planes)
+            raise(types().argument_error,
+                  std::string(what) + ": a " + std::string(to_string(c.c.model())) + " has no " +
+                      std::string(to_string(p)) + " LEDs (" + shown_colours(c) + ")",
+                  py::str("value_out_of_range"));
+        for (unsigned k = 1; k <= 32; ++k)
+            if (set.contains(k) && (k > row.leds || ((row.led_mask >> (k - 1)) & 1u) == 0))
+                raise(types().argument_error,
+                      std::string(what) + ": " + std::string(to_string(p)) + ": a " +
+                          std::string(to_string(c.c.model())) + " has no LED " + std::to_string(k),
+                      py::str("value_out_of_range"));
+    }
+}
 
 py::dict controller_event_to_py(const pb::controller_event& e) {
     py::dict d;
@@ -807,31 +913,38 @@ PYBIND11_MODULE(_powerkey, mod) {
 
     // --- the virtual keypad --------------------------------------------------------------------
     py::class_<keypad_type>(mod, "VirtualKeypad")
-        .def(py::init([](py::handle md, py::handle node, bool drop, std::uint32_t response_ms) {
-                 return new keypad_type(model_from_py(md), node_from_py(node),
-                                        pb::keypad_options{drop, response_ms});
+        .def(py::init([](py::handle md, py::handle node, bool drop, py::handle response_ms) {
+                 return new keypad_type(
+                     model_from_py(md), node_from_py(node),
+                     pb::keypad_options{drop, duration_arg(response_ms, "sdo_response_ms").value});
              }),
              py::kw_only(), py::arg("model"), py::arg("node") = 0x15,
              py::arg("drop_sdo_while_busy") = true, py::arg("sdo_response_ms") = 1)
-        .def("power_on", [](keypad_type& k, std::int64_t t) { k.power_on(millis_from(t)); })
+        .def("power_on", [](keypad_type& k, py::handle t) { k.power_on(millis_arg(t)); })
         .def("power_off", [](keypad_type& k) { k.power_off(); })
-        .def("power_cycle", [](keypad_type& k, std::int64_t t) { k.power_cycle(millis_from(t)); })
-        .def("silence", [](keypad_type& k, std::int64_t t,
-                           std::uint32_t d) { k.silence(millis_from(t), pb::duration_ms{d}); })
-        .def("drop_received", [](keypad_type& k, std::uint32_t n) { k.drop_received(n); })
-        .def("drop_transmitted", [](keypad_type& k, std::uint32_t n) { k.drop_transmitted(n); })
+        .def("power_cycle", [](keypad_type& k, py::handle t) { k.power_cycle(millis_arg(t)); })
+        .def("silence", [](keypad_type& k, py::handle t,
+                           py::handle d) { k.silence(millis_arg(t), duration_arg(d, "ms")); })
+        .def("drop_received",
+             [](keypad_type& k, py::handle n) {
+                 k.drop_received(static_cast<std::uint32_t>(int_arg(n, "n", 0, 0xFFFF'FFFFu)));
+             })
+        .def("drop_transmitted",
+             [](keypad_type& k, py::handle n) {
+                 k.drop_transmitted(static_cast<std::uint32_t>(int_arg(n, "n", 0, 0xFFFF'FFFFu)));
+             })
         .def("receive", [](keypad_type& k, py::handle frame,
-                           std::int64_t t) { k.receive(frame_from_py(frame), millis_from(t)); })
-        .def("advance", [](keypad_type& k, std::int64_t t) { k.advance(millis_from(t)); })
-        .def("press", [](keypad_type& k, unsigned key,
-                         std::int64_t t) { return k.press(key, millis_from(t)); })
-        .def("release", [](keypad_type& k, unsigned key,
-                           std::int64_t t) { return k.release(key, millis_from(t)); })
+                           py::handle t) { k.receive(frame_from_py(frame), millis_arg(t)); })
+        .def("advance", [](keypad_type& k, py::handle t) { k.advance(millis_arg(t)); })
+        .def("press", [](keypad_type& k, py::handle key,
+                         py::handle t) { return k.press(key_arg(key), millis_arg(t)); })
+        .def("release", [](keypad_type& k, py::handle key,
+                           py::handle t) { return k.release(key_arg(key), millis_arg(t)); })
         .def("set_keys",
-             [](keypad_type& k, py::handle keys, std::int64_t t) {
+             [](keypad_type& k, py::handle keys, py::handle t) {
                  key_set s;
                  from_py(s, keys, "keys");
-                 k.set_keys(s, millis_from(t));
+                 k.set_keys(s, millis_arg(t));
              })
         .def("transmit", [](keypad_type& k) { return optional_frame(k.transmit()); })
         .def_property_readonly(
@@ -852,10 +965,10 @@ PYBIND11_MODULE(_powerkey, mod) {
                                                                    enum_to_py(b.colour));
                                })
         .def_property_readonly("baud", [](const keypad_type& k) { return enum_to_py(k.baud()); })
-        .def("tick", [](const keypad_type& k, std::int64_t t) { return k.tick(millis_from(t)); })
+        .def("tick", [](const keypad_type& k, py::handle t) { return k.tick(millis_arg(t)); })
         .def("read",
              [](const keypad_type& k, py::handle o) -> py::object {
-                 const auto v = k.read(enum_from_py<object>(o, "object"));
+                 const auto v = k.read(enum_from_py<object>(o, "object", true));
                  return v ? py::object(py::int_(*v)) : py::object(py::none());
              })
         .def_property_readonly("overflowed", [](const keypad_type& k) { return k.overflowed(); });
@@ -863,26 +976,34 @@ PYBIND11_MODULE(_powerkey, mod) {
     // --- the controller ------------------------------------------------------------------------
     py::class_<py_controller>(mod, "Controller")
         .def(py::init([](py::handle md, py::handle node, const py::list& configuration,
-                         bool any_node, bool identify, py::handle start, std::uint32_t heartbeat,
-                         std::uint32_t lost_after, std::uint32_t sdo_timeout,
-                         std::uint8_t sdo_retries, std::uint32_t probe_period,
-                         std::uint32_t refresh_period, std::uint32_t long_press,
-                         std::uint32_t repeat_delay, std::uint32_t repeat_period) {
+                         bool any_node, bool identify, py::handle start, py::handle heartbeat,
+                         py::handle lost_after, py::handle sdo_timeout, py::handle sdo_retries,
+                         py::handle probe_period, py::handle refresh_period, py::handle long_press,
+                         py::handle repeat_delay, py::handle repeat_period) {
                  pb::controller_config cfg;
                  cfg.keypad_model = model_from_py(md);
                  cfg.node = node_from_py(node);
                  cfg.any_node = any_node;
                  cfg.identify = identify;
-                 cfg.start = enum_from_py<pb::start_mode>(start, "start");
-                 cfg.keypad_heartbeat = pb::duration_ms{heartbeat};
-                 cfg.lost_after = pb::duration_ms{lost_after};
-                 cfg.sdo_timeout = pb::duration_ms{sdo_timeout};
-                 cfg.sdo_retries = sdo_retries;
-                 cfg.probe_period = pb::duration_ms{probe_period};
-                 cfg.refresh_period = pb::duration_ms{refresh_period};
-                 cfg.long_press = pb::duration_ms{long_press};
-                 cfg.repeat_delay = pb::duration_ms{repeat_delay};
-                 cfg.repeat_period = pb::duration_ms{repeat_period};
+                 cfg.start = enum_from_py<pb::start_mode>(start, "start", true);
+                 // 1017h holds 16 bits (PK1000 29, PKP 17).
+                 cfg.keypad_heartbeat = pb::duration_ms{static_cast<std::uint32_t>(
+                     int_arg(heartbeat, "keypad_heartbeat", 0, 0xFFFF, " ms (1017h: 16 bits)"))};
+                 cfg.lost_after = duration_arg(lost_after, "lost_after");
+                 cfg.sdo_timeout = duration_arg(sdo_timeout, "sdo_timeout");
+                 cfg.sdo_retries =
+                     static_cast<std::uint8_t>(int_arg(sdo_retries, "sdo_retries", 0, 255));
+                 cfg.probe_period = duration_arg(probe_period, "probe_period");
+                 cfg.refresh_period = duration_arg(refresh_period, "refresh_period");
+                 cfg.long_press = duration_arg(long_press, "long_press");
+                 cfg.repeat_delay = duration_arg(repeat_delay, "repeat_delay");
+                 cfg.repeat_period = duration_arg(repeat_period, "repeat_period");
+                 if (configuration.size() > pb::max_configuration)
+                     raise(types().argument_error,
+                           "configuration: " + std::to_string(configuration.size()) +
+                               " entries, more than the controller runs (" +
+                               std::to_string(pb::max_configuration) + ": events number them)",
+                           py::str("value_out_of_range"));
                  std::vector<message> list;
                  for (const auto item : configuration) {
                      if (!py::isinstance<py_message>(item))
@@ -902,8 +1023,8 @@ PYBIND11_MODULE(_powerkey, mod) {
              py::arg("long_press") = 800, py::arg("repeat_delay") = 500,
              py::arg("repeat_period") = 200)
         .def("step", [](py_controller& c, py::handle frame,
-                        std::int64_t t) { c.c.step(frame_from_py(frame), millis_from(t)); })
-        .def("tick", [](py_controller& c, std::int64_t t) { c.c.tick(millis_from(t)); })
+                        py::handle t) { c.c.step(frame_from_py(frame), millis_arg(t)); })
+        .def("tick", [](py_controller& c, py::handle t) { c.c.tick(millis_arg(t)); })
         .def("next_frame", [](py_controller& c) { return optional_frame(c.c.next_frame()); })
         .def("poll",
              [](py_controller& c) -> py::object {
@@ -912,14 +1033,19 @@ PYBIND11_MODULE(_powerkey, mod) {
              })
         .def(
             "set_led",
-            [](py_controller& c, unsigned k, py::handle col, bool blink) {
-                return c.c.set_led(k, enum_from_py<colour>(col, "colour"), blink);
+            [](py_controller& c, py::handle k, py::handle col, bool blink) {
+                const auto cl = enum_from_py<colour>(col, "colour", true);
+                if (!c.c.shows(cl)) refuse_colour(c, cl);
+                return c.c.set_led(key_arg(k), cl, blink);
             },
             py::arg("key"), py::arg("colour"), py::arg("blink") = false)
         .def(
             "set_leds",
             [](py_controller& c, py::handle on, py::handle blink) {
-                c.c.set_leds(leds_from_py(on, "on"), leds_from_py(blink, "blink"));
+                const auto o = leds_from_py(on, "on"), b = leds_from_py(blink, "blink");
+                for (const auto& [map, what] : {std::pair{&o, "on"}, std::pair{&b, "blink"}})
+                    check_leds(c, *map, what);
+                (void)c.c.set_leds(o, b);
             },
             py::arg("on"), py::arg("blink") = py::none())
         .def("set_brightness",
@@ -933,7 +1059,7 @@ PYBIND11_MODULE(_powerkey, mod) {
             [](py_controller& c, py::handle l, py::handle col) {
                 level v;
                 from_py(v, l, "level");
-                c.c.set_backlight(v, enum_from_py<backlight_colour>(col, "colour"));
+                c.c.set_backlight(v, enum_from_py<backlight_colour>(col, "colour", true));
             },
             py::arg("level"), py::arg("colour") = "keep")
         .def("change_node",

@@ -42,11 +42,14 @@ struct check_options {
 // in line order.
 class check_handler final : public frame_handler {
 public:
-    check_handler(const pb::checker_config& config, bool json, bool several, output& out)
-        : config_(config), json_(json), several_(several), out_(out) {}
+    check_handler(const pb::checker_config& config, bool json,
+                  const std::vector<std::string>& files, output& out)
+        : config_(config), json_(json), files_(files), several_(files.size() > 1), out_(out) {}
 
-    void begin(std::size_t, const std::string& label) override {
+    void begin(std::size_t input, const std::string& label) override {
         label_ = label;
+        // JSON gets the name itself, escaped by the JSON writer (the label is escaped for text).
+        path_ = input < files_.size() && files_[input] != "-" ? files_[input] : "<stdin>";
         checker_.emplace(config_);
         now_ = 0;
         problems_.clear();
@@ -81,7 +84,7 @@ private:
         auto& b = out_.buffer();
         if (json_) {
             json::object_writer w(b);
-            if (several_) w.field("file", label_);
+            if (several_) w.field("file", path_);
             w.field("line", p.line);
             w.field("kind", kind);
             w.key("detail");
@@ -106,7 +109,9 @@ private:
 
     pb::checker_config config_;
     bool json_;
+    const std::vector<std::string>& files_;
     bool several_;
+    std::string path_;
     output& out_;
     std::string label_;
     std::optional<pb::checker<>> checker_;
@@ -132,7 +137,7 @@ int run_check(const options& c, const check_options& o) {
     }
     output out;
     input_counts counts;
-    check_handler handler(config, o.json, o.files.size() > 1, out);
+    check_handler handler(config, o.json, o.files, out);
     read_inputs(o.files, handler, out, counts);
     out.flush();
     return handler.found() > 0 ? status_input : status();

@@ -17,6 +17,7 @@
 #include <charconv>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -113,8 +114,8 @@ struct counts {
 
 class decoder final : public frame_handler {
 public:
-    decoder(const options& c, const decode_options& o, model m)
-        : o_(o), session_(m, c.node), picture_(m), tty_(isatty(1) != 0) {}
+    decoder(const options& c, const decode_options& o, model m, output& out)
+        : o_(o), session_(m, c.node), picture_(m), tty_(isatty(1) != 0), out_(out) {}
 
     void frame(const logs::record& r) override {
         ++counts_.frames;
@@ -396,16 +397,17 @@ private:
     bool tty_;
     bool shown_ = false;
     counts counts_;
-    output out_;
+    output& out_;
 };
 
 // --- --model auto
 // -----------------------------------------------------------------------------------
 
-struct stored {
+// What --model auto keeps of a frame until it has chosen the model: the frame, its line, and its
+// time and interface as offsets into one string of text.
+struct kept_frame {
     can::frame frame;
-    std::string time;
-    std::string interface;
+    std::uint32_t time_at, time_size, interface_at, interface_size;
     std::size_t line;
 };
 
@@ -413,7 +415,7 @@ struct stored {
 // model_from_report), or a model name in any text it sent (device name upload); else the model
 // that refuses fewest of the keypad's frames (a key or LED map wider than a model's is refused
 // by it), the narrowest such model first. Says why on standard error.
-model choose_model(const options& o, const std::vector<stored>& log) {
+model choose_model(const options& o, const std::vector<kept_frame>& log) {
     struct score {
         model m;
         std::size_t refused = 0;
@@ -546,37 +548,71 @@ void summary(const options& c0, const decode_options& o, const counts& c, model 
     }
 }
 
-// Reads everything first (--model auto).
-class collector final : public frame_handler {
+// --model auto: keeps the frames until it has chosen the model (at the end of the input, or when
+// they fill logs::limits::model_auto_bytes), decodes them then, and the frames after them as they
+// come.
+class auto_decoder final : public frame_handler {
 public:
-    explicit collector(std::vector<stored>& log) : log_(log) {}
+    auto_decoder(const options& c, const decode_options& o, output& out)
+        : c_(c), o_(o), out_(out) {}
+
     void frame(const logs::record& r) override {
-        log_.push_back({r.frame, std::string(r.time), std::string(r.interface), r.line});
+        if (d_) return d_->frame(r);
+        const auto at = text_.size();
+        text_.append(r.time).append(r.interface);
+        kept_.push_back({r.frame, static_cast<std::uint32_t>(at),
+                         static_cast<std::uint32_t>(r.time.size()),
+                         static_cast<std::uint32_t>(at + r.time.size()),
+                         static_cast<std::uint32_t>(r.interface.size()), r.line});
+        if (kept_.capacity() * sizeof(kept_frame) + text_.capacity() >=
+            logs::limits::model_auto_bytes) {
+            out_.flush();
+            report("--model auto",
+                   "the first " + std::to_string(kept_.size()) + " frames fill what it keeps (" +
+                       std::to_string(logs::limits::model_auto_bytes >> 20) +
+                       " MiB): the model is chosen from them, the rest decoded as it comes",
+                   false);
+            choose();
+        }
+    }
+    // Chooses (if not yet), decodes what was kept; the decoder from then on.
+    decoder& choose() {
+        if (d_) return *d_;
+        d_.emplace(c_, o_, choose_model(c_, kept_), out_);
+        const std::string_view text = text_;
+        for (const auto& k : kept_)
+            d_->frame({k.frame, text.substr(k.time_at, k.time_size),
+                       text.substr(k.interface_at, k.interface_size), k.line});
+        kept_ = {};
+        text_ = {};
+        return *d_;
     }
 
 private:
-    std::vector<stored>& log_;
+    const options& c_;
+    const decode_options& o_;
+    output& out_;
+    std::vector<kept_frame> kept_;
+    std::string text_;
+    std::optional<decoder> d_;
 };
 
 int run_decode(const options& c, const decode_options& o) {
-    model m = c.keypad;
+    output out;
     input_counts read_counts;
-    std::vector<stored> log;
     if (c.model_auto) {
-        output none;
-        collector all(log);
-        read_inputs(o.files, all, none, read_counts);
-        m = choose_model(c, log);
-    }
-    decoder d(c, o, m);
-    if (c.model_auto) {
-        for (const auto& r : log) d.frame({r.frame, r.time, r.interface, r.line});
+        auto_decoder a(c, o, out);
+        read_inputs(o.files, a, out, read_counts);
+        auto& d = a.choose();
         d.stats().read = read_counts;
-    } else {
-        read_inputs(o.files, d, d.out(), d.stats().read);
+        out.flush();
+        summary(c, o, d.stats(), d.keypad());
+        return status();
     }
-    d.out().flush();
-    summary(c, o, d.stats(), m);
+    decoder d(c, o, c.keypad, out);
+    read_inputs(o.files, d, out, d.stats().read);
+    out.flush();
+    summary(c, o, d.stats(), c.keypad);
     return status();
 }
 

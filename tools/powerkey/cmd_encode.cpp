@@ -36,10 +36,11 @@ bool build_any(std::string_view kind, canopen::node_id node, bool broadcast, Get
         if (S::kind != kind) return false;
         S s{};
         apply_defaults(s, node, broadcast);
+        // Every field is looked at (so that each one given is known), the first error kept.
         S::fields(s, [&](std::string_view name, auto& value) {
-            if (!error.empty()) return;
             const auto e = get(name, value);
-            if (!e.empty()) error = std::string(kind) + ": " + std::string(name) + ": " + e;
+            if (!e.empty() && error.empty())
+                error = std::string(kind) + ": " + std::string(name) + ": " + e;
         });
         out = s;
         return true;
@@ -221,10 +222,8 @@ int run_encode(const options& o, const encode_options& eo) {
         std::string given = "its value";
         for (const auto& [field, value] : assignments)
             if (field == why.field) given = "'" + escape(value, 32) + "'";
-        report("encode", kind + ": " + std::string(why.field) + ": " + given +
-                             (why.most > 0 ? " is more than a " : " is not what a ") + model_name +
-                             " takes" +
-                             (why.most > 0 ? " (1.." + std::to_string(why.most) + ")" : ""));
+        report("encode",
+               kind + ": " + std::string(why.field) + ": " + refusal_text(why, given, model_name));
     } else {
         report("encode", "cannot encode " + kind + " for a " + model_name + ": " +
                              std::string(to_string(f.error())) + " (fields: " + field_names(msg) +
@@ -250,8 +249,9 @@ int run_encode_json(const options& o, const encode_options& eo) {
             if (text.find_first_not_of(" \t") == std::string_view::npos) return;
             std::string error, why;
             can::frame f;
-            if (nesting(text) > 4) {
-                why = "JSON nested too deeply (decode --json lines nest 2 deep)";
+            if (nesting(text) > logs::limits::json_depth) {
+                why = "JSON nested deeper than " + std::to_string(logs::limits::json_depth) +
+                      " levels (decode --json lines nest 2 deep)";
             } else {
                 const auto v = nlohmann::json::parse(text, nullptr, false);
                 if (v.is_discarded()) {

@@ -9,6 +9,11 @@
 // before it, so that each request of a log of bare ID#DATA lines meets an idle keypad. A request
 // the keypad drops anyway (it came before the keypad answered the one before) is said on
 // standard error, with the line of the request not yet answered.
+//
+// The keypad's clock is a 32-bit millisecond counter (behaviour::millis): a simulation spans at
+// most `last_ms` from power-on. A time past it (--press, --release, --until, or a frame of the
+// log) is refused, never wrapped: an option is a usage error; a frame is an error naming its
+// line, and the simulation ends before it (status 1).
 #include "cli.hpp"
 #include "commands.hpp"
 #include "input.hpp"
@@ -35,6 +40,14 @@ using namespace powerkey;
 // The time between two frames of the input that have no time, in ms: far more than the keypad
 // takes to answer a request (keypad_options::sdo_response_ms, 1 ms).
 constexpr std::int64_t untimed_step_ms = 10;
+
+// The last millisecond of the keypad's clock: 4294967.295 s after power-on.
+constexpr std::uint64_t last_ms = 0xFFFF'FFFFu;
+
+// "4294967.295 s" for messages.
+std::string seconds_text(std::uint64_t ms) {
+    return std::to_string(ms / 1000) + "." + std::to_string(1000 + ms % 1000).substr(1) + " s";
+}
 
 struct simulate_options {
     std::vector<std::string> press, release;  // T:K
@@ -86,12 +99,17 @@ int run_simulate(const options& c, const simulate_options& o) {
             if (!t || !key)
                 return usage_error(option + ": expected T:K, seconds and a key (2.5:3), got '" +
                                    escape(text, 32) + "'");
+            const auto ms = static_cast<std::uint64_t>((*t + 500) / 1000);
+            if (ms > last_ms)
+                return usage_error(option + ": " + escape(text.substr(0, colon), 32) +
+                                   " s is past the keypad's clock (0.." + seconds_text(last_ms) +
+                                   ", 32-bit milliseconds)");
             if (k < 1 || k > mi.keys)
                 return usage_error(option + ": a " + std::string(to_string(c.keypad)) +
                                    " has keys 1.." + std::to_string(mi.keys) + ", not " +
                                    std::to_string(k));
-            keys.push_back({static_cast<std::uint32_t>((*t + 500) / 1000), static_cast<unsigned>(k),
-                            list == &o.press});
+            keys.push_back(
+                {static_cast<std::uint32_t>(ms), static_cast<unsigned>(k), list == &o.press});
         }
     }
     std::optional<std::int64_t> until;
@@ -100,38 +118,54 @@ int run_simulate(const options& c, const simulate_options& o) {
         if (!until)
             return usage_error("--until: expected seconds (2.5), got '" + escape(o.until, 32) +
                                "'");
+        if (static_cast<std::uint64_t>(*until / 1000) > last_ms)
+            return usage_error("--until: " + escape(o.until, 32) +
+                               " s is past the keypad's clock (0.." + seconds_text(last_ms) +
+                               ", 32-bit milliseconds)");
     }
 
     collect in;
     output out;
     input_counts counts;
     read_inputs(o.files, in, out, counts);
-    const auto& frames = in.frames;
+    auto& frames = in.frames;
 
     // Times: the keypad powers on at the first time of the log; a frame without one comes
     // untimed_step_ms after the frame before it; a time that goes back counts as the last one.
+    // A frame past the keypad's clock ends the simulation before it.
     std::int64_t origin = 0;
     for (const auto& f : frames)
         if (f.us) {
             origin = *f.us;
             break;
         }
-    std::vector<std::uint32_t> at(frames.size());
+    std::vector<std::uint32_t> at;
+    at.reserve(frames.size());
     std::int64_t last = origin;
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (frames[i].us)
             last = std::max(last, *frames[i].us);
         else if (i > 0)
             last += untimed_step_ms * 1000;
-        at[i] = static_cast<std::uint32_t>((last - origin + 500) / 1000);
+        const auto ms = static_cast<std::uint64_t>((last - origin + 500) / 1000);
+        if (ms > last_ms) {
+            out.flush();
+            report(in.labels[frames[i].input] + ":" + std::to_string(frames[i].line),
+                   "this frame comes " + seconds_text(ms) +
+                       " after the first, past the keypad's clock (0.." + seconds_text(last_ms) +
+                       ", 32-bit milliseconds): the simulation ends before it");
+            frames.erase(frames.begin() + static_cast<std::ptrdiff_t>(i), frames.end());
+            break;
+        }
+        at.push_back(static_cast<std::uint32_t>(ms));
     }
     std::stable_sort(keys.begin(), keys.end(),
                      [](const key_event& a, const key_event& b) { return a.at_ms < b.at_ms; });
-    std::uint32_t end = 0;
+    std::uint64_t end = 0;
     if (!at.empty()) end = at.back();
-    if (!keys.empty()) end = std::max(end, keys.back().at_ms);
-    end += 100;
-    if (until) end = static_cast<std::uint32_t>(*until / 1000);
+    if (!keys.empty()) end = std::max<std::uint64_t>(end, keys.back().at_ms);
+    end = std::min(end + 100, last_ms);
+    if (until) end = static_cast<std::uint64_t>(*until / 1000);
 
     const std::string iface = in.interface.empty() ? std::string("can0") : in.interface;
     behaviour::virtual_keypad<64> k(c.keypad, c.node);
@@ -175,7 +209,11 @@ int run_simulate(const options& c, const simulate_options& o) {
     k.power_on(behaviour::millis{0});
     print(0);
     std::size_t fi = 0, ki = 0;
-    for (std::uint32_t t = 0; t <= end; ++t) {
+    // Millisecond by millisecond, skipping those in which nothing happens (no frame, no key, no
+    // keypad timer: virtual_keypad::next_due); 64 bits, so that a loop to the clock's last
+    // millisecond ends.
+    for (std::uint64_t tick = 0; tick <= end;) {
+        const auto t = static_cast<std::uint32_t>(tick);
         const behaviour::millis now{t};
         k.advance(now);
         while (ki < keys.size() && keys[ki].at_ms == t) {
@@ -192,6 +230,14 @@ int run_simulate(const options& c, const simulate_options& o) {
             ++fi;
         }
         print(t);
+        std::uint64_t next = end + 1;
+        if (fi < frames.size()) next = std::min<std::uint64_t>(next, at[fi]);
+        if (ki < keys.size()) next = std::min<std::uint64_t>(next, keys[ki].at_ms);
+        if (const auto due = k.next_due())  // (one already due: the next millisecond)
+            next = std::min(
+                next,
+                tick + (behaviour::before(*due, now) ? 0 : behaviour::elapsed(now, *due).value));
+        tick = std::max(next, tick + 1);
     }
     out.flush();
     for (auto& [input, cap] : drops) cap.finish();

@@ -12,7 +12,7 @@
 namespace tool {
 
 std::string file_label(const std::string& path) {
-    return path == "-" ? std::string("<stdin>") : escape(path, 200);
+    return path == "-" ? std::string("<stdin>") : escape(path, logs::limits::label_bytes);
 }
 
 // --- problem_cap --------------------------------------------------------------------------------
@@ -28,10 +28,10 @@ void problem_cap::add(std::size_t line, std::string_view why, std::string_view t
         return;
     }
     std::string m = label_;
-    if (line != 0) m += ":" + std::to_string(line);
+    if (line != 0) m += (objects_ ? ": object " : ":") + std::to_string(line);
     m += ": ";
     m += why;
-    if (!text.empty()) m += ": '" + escape(text, 60) + "'";
+    if (!text.empty()) m += ": '" + escape(text, logs::limits::echo_bytes) + "'";
     if (hold) {
         held_.push_back(std::move(m));
         if (failures_) ++failures;
@@ -49,6 +49,7 @@ std::string problem_cap::first_held() const {
     if (held_.empty()) return {};
     std::string first = held_.front();
     if (first.starts_with(label_ + ":")) first.erase(0, label_.size() + 1);
+    if (first.starts_with(" ")) first.erase(0, 1);
     return first;
 }
 
@@ -99,8 +100,18 @@ public:
     }
     void problem(std::size_t line, std::string_view why, std::string_view text) override {
         if (any_frame_) out_.flush();
+        problems_.count_objects(blf());
         problems_.add(line, why, text, !any_frame_);
     }
+    // Said at once, after what was held back: the reader reads no more of this input.
+    void stop(std::size_t line, std::string_view why, std::string_view text) override {
+        stopped_ = true;
+        out_.flush();
+        problems_.release();
+        problems_.count_objects(blf());
+        problems_.add(line, why, text, false, "the reader stopped");
+    }
+    void watch(const logs::reader& r) { reader_ = &r; }
 
     // At the end of the input: the notes, or the one message for a file that is no log.
     void finish(const logs::reader& r, input_counts& c) {
@@ -114,8 +125,8 @@ public:
             out_.flush();
             report(label,
                    std::to_string(n) + " " + std::string(to_string(s)) + (n == 1 ? "" : "s") + " " +
-                       std::string(handler_.skipped_note()) + ", the first at line " +
-                       std::to_string(r.first_skipped(s)),
+                       std::string(handler_.skipped_note()) + ", the first at " +
+                       (blf() ? "object " : "line ") + std::to_string(r.first_skipped(s)),
                    false);
         }
         if (r.detected() == logs::format::not_a_log) {
@@ -128,7 +139,7 @@ public:
         // A file of a known form (ASC, TRC, CSV, BLF) says what is wrong with it instead.
         const bool lines =
             r.detected() == logs::format::unknown || r.detected() == logs::format::candump;
-        if (!any_frame_ && problems_.count() > 0 && lines) {
+        if (!any_frame_ && problems_.count() > 0 && lines && !stopped_) {
             out_.flush();
             const std::string first = problems_.first_held();
             problems_.drop_held();
@@ -145,10 +156,14 @@ public:
     }
 
 private:
+    bool blf() const { return reader_ != nullptr && reader_->detected() == logs::format::blf; }
+
     problem_cap problems_;
     frame_handler& handler_;
     output& out_;
+    const logs::reader* reader_ = nullptr;
     bool any_frame_ = false;
+    bool stopped_ = false;
     std::array<std::size_t, logs::skip_kinds> used_{};
 };
 
@@ -156,8 +171,9 @@ private:
 
 namespace {
 
-// Reads one input in 64 KiB blocks: opened() once it is open, then feed(bytes) for each block;
-// false after reporting why it could not be opened.
+// Reads one input in 64 KiB blocks: opened() once it is open, then feed(bytes) for each block
+// until feed returns false (the reader needs no more) or the input ends; false after reporting
+// why it could not be opened.
 template <class Opened, class Feed>
 bool read_file(const std::string& path, const std::string& label, output& out, Opened&& opened,
                Feed&& feed) {
@@ -180,8 +196,9 @@ bool read_file(const std::string& path, const std::string& label, output& out, O
             break;
         }
         if (n == 0) break;
-        feed(std::string_view(buf.data(), static_cast<std::size_t>(n)));
+        const bool more = feed(std::string_view(buf.data(), static_cast<std::size_t>(n)));
         if (live) out.flush();
+        if (!more) break;
     }
     if (fd != 0) ::close(fd);
     return true;
@@ -201,9 +218,13 @@ void read_inputs(const std::vector<std::string>& paths, frame_handler& handler, 
         const auto label = file_label(files[i]);
         input_sink sink(label, handler, out);
         logs::reader reader(sink);
+        sink.watch(reader);
         if (!read_file(
                 files[i], label, out, [&] { handler.begin(i, label); },
-                [&](std::string_view b) { reader.feed(b); }))
+                [&](std::string_view b) {
+                    reader.feed(b);
+                    return !reader.done();
+                }))
             continue;
         reader.finish();
         counts.frames += reader.frames();
@@ -215,16 +236,29 @@ void read_inputs(const std::vector<std::string>& paths, frame_handler& handler, 
 void read_lines(
     const std::vector<std::string>& paths, output& out,
     const std::function<void(const std::string&, std::size_t, std::string_view)>& on_line) {
+    constexpr std::size_t most = logs::limits::json_line_bytes;
     for (const auto& path : or_stdin(paths)) {
         const auto label = file_label(path);
         std::string carry;
         std::size_t number = 0;
-        bool start = true;
+        bool start = true, stopped = false;
         const auto line = [&](std::string_view text) {
             if (start && text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
             start = false;
             if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
             on_line(label, ++number, text);
+        };
+        // A line past the limit: its beginning quoted, the rest of the input not read.
+        const auto too_long = [&](std::string_view rest) {
+            carry.append(rest.substr(0, logs::limits::echo_bytes + 1));
+            out.flush();
+            report(label + ":" + std::to_string(number + 1),
+                   "a line longer than " + std::to_string(most) +
+                       " bytes, the limit of a JSON line (the rest of the input is not read): '" +
+                       escape(carry, logs::limits::echo_bytes) + "'");
+            carry.clear();
+            stopped = true;
+            return false;
         };
         read_file(
             path, label, out, [] {},
@@ -232,9 +266,11 @@ void read_lines(
                 while (!data.empty()) {
                     const auto nl = data.find('\n');
                     if (nl == std::string_view::npos) {
+                        if (carry.size() + data.size() > most) return too_long(data);
                         carry.append(data);
                         break;
                     }
+                    if (carry.size() + nl > most) return too_long(data.substr(0, nl));
                     if (carry.empty()) {
                         line(data.substr(0, nl));
                     } else {
@@ -244,8 +280,9 @@ void read_lines(
                     }
                     data.remove_prefix(nl + 1);
                 }
+                return true;
             });
-        if (!carry.empty()) line(carry);
+        if (!carry.empty() && !stopped) line(carry);
     }
 }
 

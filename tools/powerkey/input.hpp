@@ -5,6 +5,8 @@
 //   - a line that should be a frame and is not: FILE:LINE: WHY: 'the line' (escaped, cut), at most
 //     `shown_per_kind` lines of each kind per file, then "N more lines like that";
 //   - a file in which no line is a frame, or that is no log at all: one message saying so;
+//   - a limit of logs::limits hit, or a file damaged past reading on: one message naming the
+//     file, the line or object and the limit, shown at once; the rest of the file is not read;
 //   - remote, CAN FD and error frames: one note per kind and file, with the count.
 // Live inputs (pipes, terminals) are read as the bytes come and the output is flushed after each
 // read, so that a line per frame appears as the frame arrives.
@@ -24,9 +26,10 @@
 
 namespace tool {
 
-// Problems of one input, reported as "powerkey: LABEL:LINE: WHY[: 'TEXT']": at most
-// shown_per_kind of each WHY (a constant phrase), the others counted and said at the end. Lines
-// can be held back until the input proves to be a log (a file of only bad lines gets one message).
+// Problems of one input, reported as "powerkey: LABEL:LINE: WHY[: 'TEXT']" (in a BLF file
+// "LABEL: object N: ..."): at most shown_per_kind of each WHY (a constant phrase), the others
+// counted and said at the end. Lines can be held back until the input proves to be a log (a file
+// of only bad lines gets one message). TEXT is escaped and cut to logs::limits::echo_bytes.
 class problem_cap {
 public:
     static constexpr std::size_t shown_per_kind = 3;
@@ -45,6 +48,8 @@ public:
     // The first held message (without the label), for a one-line summary of a file.
     [[nodiscard]] std::string first_held() const;
     void drop_held() { held_.clear(); }
+    // Whether the numbers are objects of a BLF file rather than lines.
+    void count_objects(bool objects) noexcept { objects_ = objects; }
     // "N more lines like that (WHY)" for every kind over the cap.
     void finish();
 
@@ -54,6 +59,7 @@ public:
 private:
     std::string label_;
     bool failures_;
+    bool objects_ = false;
     std::size_t count_ = 0;
     std::map<std::string, std::size_t, std::less<>> by_why_;
     std::vector<std::string> held_;
@@ -87,7 +93,9 @@ void read_inputs(const std::vector<std::string>& paths, frame_handler& handler, 
 
 // Reads every input in order as text lines (JSON lines for encode --json): on_line(label,
 // number, text) per line, without its line end; a UTF-8 byte-order mark is dropped. Files that
-// cannot be read are reported as read_inputs reports them. `out` as for read_inputs.
+// cannot be read are reported as read_inputs reports them; a line longer than
+// logs::limits::json_line_bytes is reported (its beginning quoted) and ends its input. `out` as
+// for read_inputs.
 void read_lines(
     const std::vector<std::string>& paths, output& out,
     const std::function<void(const std::string&, std::size_t, std::string_view)>& on_line);

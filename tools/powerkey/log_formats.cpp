@@ -8,6 +8,7 @@
 
 #include <zlib.h>
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -130,36 +131,70 @@ bool base64_decode(std::string_view in, std::vector<std::uint8_t>& out) {
 
 // --- the stream ---------------------------------------------------------------------------------
 
+namespace {
+
+// The first bytes that decide a form before any line is read: the binary forms' signatures, and
+// the UTF-8 byte-order mark. The reader waits until the bytes it has can no longer begin one of
+// them (or until 8 bytes), so that the form it finds does not depend on how the input arrives.
+constexpr std::string_view signatures[] = {
+    "LOGG",
+    "\xD4\xC3\xB2\xA1",
+    "\xA1\xB2\xC3\xD4",
+    "\x4D\x3C\xB2\xA1",
+    "\xA1\xB2\x3C\x4D",
+    std::string_view("\x0A\x0D\x0D\x0A", 4),
+    "MDF     ",
+    "UnFinMF",
+    "\x1F\x8B",
+    "PK\x03\x04",
+    "\xEF\xBB\xBF",
+};
+constexpr std::size_t longest_signature = 8;
+
+// Whether `first` is a proper beginning of a signature (more bytes could complete it).
+bool may_begin_signature(std::string_view first) {
+    for (const auto sig : signatures)
+        if (first.size() < sig.size() && sig.substr(0, first.size()) == first) return true;
+    return false;
+}
+
+}  // namespace
+
 void reader::feed(std::string_view bytes) {
+    if (done()) return;
     if (!started_) {
-        if (carry_.size() + bytes.size() < 4) {
-            carry_.append(bytes);  // too little to tell BLF from text yet
-            return;
-        }
-        started_ = true;
-        std::string all = std::move(carry_);
-        carry_.clear();
-        all.append(bytes);
-        std::string_view v = all;
-        if (starts_with(v, "LOGG")) {
-            format_ = format::blf;
-            return blf_feed(v);
-        }
-        if (detect_binary(v)) return;
-        if (starts_with(v, "\xEF\xBB\xBF")) v.remove_prefix(3);  // UTF-8 byte-order mark
-        return text_feed(v);
+        carry_.append(bytes);  // the first bytes, until the form can be told
+        if (carry_.size() < longest_signature && may_begin_signature(carry_)) return;
+        return start();
     }
     if (format_ == format::blf) return blf_feed(bytes);
     text_feed(bytes);
 }
 
+// The form, from the first bytes (carry_), then those bytes read in that form.
+void reader::start() {
+    started_ = true;
+    std::string all = std::move(carry_);
+    carry_.clear();
+    std::string_view v = all;
+    if (starts_with(v, "LOGG")) {
+        format_ = format::blf;
+        return blf_feed(v);
+    }
+    if (detect_binary(v)) return;
+    if (starts_with(v, "\xEF\xBB\xBF")) v.remove_prefix(3);  // UTF-8 byte-order mark
+    text_feed(v);
+}
+
 void reader::text_feed(std::string_view bytes) {
-    while (!bytes.empty() && format_ != format::not_a_log) {
+    while (!bytes.empty() && !done()) {
         const auto nl = bytes.find('\n');
         if (nl == std::string_view::npos) {
+            if (carry_.size() + bytes.size() > limits::text_line_bytes) return too_long(bytes);
             carry_.append(bytes);
             return;
         }
+        if (carry_.size() + nl > limits::text_line_bytes) return too_long(bytes.substr(0, nl));
         if (!carry_.empty()) {
             carry_.append(bytes.substr(0, nl));
             const std::string whole = std::move(carry_);
@@ -172,32 +207,50 @@ void reader::text_feed(std::string_view bytes) {
     }
 }
 
-void reader::finish() {
-    if (!started_) {
-        started_ = true;
-        std::string rest = std::move(carry_);
-        carry_.clear();
-        if (detect_binary(rest)) return;
-        if (starts_with(rest, "\xEF\xBB\xBF")) rest.erase(0, 3);
-        text_feed(rest);
-        if (!carry_.empty()) {
-            const std::string last = std::move(carry_);
-            carry_.clear();
-            if (format_ != format::not_a_log) line(last);
+// A line past limits::text_line_bytes (carry_, then `rest`): no log has one. Its beginning is
+// quoted and the input is read no further.
+void reader::too_long(std::string_view rest) {
+    // The line's first binary_sniff_bytes, however much of it was carried: the same text
+    // whatever pieces the input came in.
+    std::string start = std::move(carry_);
+    carry_.clear();
+    if (start.size() < limits::binary_sniff_bytes)
+        start.append(rest.substr(0, limits::binary_sniff_bytes - start.size()));
+    else
+        start.resize(limits::binary_sniff_bytes);
+    if (!sniffed_) {  // the first line: a binary file says so first
+        sniffed_ = true;
+        if (start.substr(0, limits::binary_sniff_bytes).find('\0') != std::string::npos) {
+            format_ = format::not_a_log;
+            looks_like_ = "a binary file that is not Vector BLF";
+            return;
         }
-        return;
     }
+    stop(line_ + 1,
+         "a line longer than " + std::to_string(limits::text_line_bytes) +
+             " bytes, the limit of a log line (the rest of the input is not read)",
+         start);
+}
+
+void reader::finish() {
+    if (!started_) start();
+    if (stopped_ || format_ == format::not_a_log) return;
     if (format_ == format::blf) {
-        if (blf_broken_) return;
-        if (!blf_header_done_) return bad("the BLF file ends inside its header (truncated?)", "");
+        if (!blf_header_done_) return stop(0, "the BLF file ends inside its header (truncated?)");
         std::size_t used = 0;
         blf_objects(blf_in_, true, true, used);
-        if (!blf_broken_ && used + 4 <= blf_in_.size())
-            bad("the BLF file ends inside an object (truncated?)", "");
+        if (stopped_) return;
+        if (used + 4 <= blf_in_.size())
+            return stop(line_ + 1, "the BLF file ends inside this object (truncated?)");
         blf_in_.clear();
+        // The last container's unfinished object (padding is at most 3 bytes).
+        if (blf_inner_.size() >= 4)
+            stop(line_ + 1,
+                 "the BLF file ends inside this object, in its last container (truncated?)");
+        blf_inner_.clear();
         return;
     }
-    if (!carry_.empty() && format_ != format::not_a_log) {
+    if (!carry_.empty()) {
         const std::string rest = std::move(carry_);
         carry_.clear();
         line(rest);
@@ -246,7 +299,22 @@ void reader::bad(std::string_view why, std::string_view text) {
     out_.problem(line_, why, text);
 }
 
+void reader::stop(std::size_t line, std::string_view why, std::string_view text) {
+    ++problems_;
+    stopped_ = true;
+    stop_why_ = why;  // `why` may be built for the message: the sink sees a stable copy
+    out_.stop(line, stop_why_, text);
+}
+
 void reader::line(std::string_view text) {
+    if (!sniffed_) {  // a NUL in the first line: a binary file, whichever way it arrives
+        sniffed_ = true;
+        if (text.substr(0, limits::binary_sniff_bytes).find('\0') != std::string_view::npos) {
+            format_ = format::not_a_log;
+            looks_like_ = "a binary file that is not Vector BLF";
+            return;
+        }
+    }
     ++line_;
     const auto s = trim(text);
     if (s.empty()) return;
@@ -262,7 +330,7 @@ void reader::line(std::string_view text) {
     }
 }
 
-// The forms that are no text, by their first bytes (before any line is split: a pcapng file
+// The forms that are no text, by their signatures (before any line is split: a pcapng file
 // begins with a line feed).
 bool reader::detect_binary(std::string_view s) {
     auto other = [&](std::string_view what) {
@@ -278,9 +346,7 @@ bool reader::detect_binary(std::string_view s) {
         return other("an ASAM MDF (MF4) measurement file");
     if (starts_with(s, "\x1F\x8B")) return other("a gzip-compressed file");
     if (starts_with(s, "PK\x03\x04")) return other("a zip archive");
-    if (s.substr(0, 512).find('\0') != std::string_view::npos)
-        return other("a binary file that is not Vector BLF");
-    return false;
+    return false;  // a NUL in the first line says binary too (line())
 }
 
 void reader::detect(std::string_view s) {
@@ -560,21 +626,51 @@ void reader::asc_line(std::string_view s) {
 // --- PEAK TRC
 // -------------------------------------------------------------------------------------
 
+// The column letters of PEAK's TRC file format document: N number, O time offset, T type, B bus,
+// I identifier, d direction, R reserved, L DLC, l length, D data bytes.
+constexpr std::string_view trc_letters = "NOTBIdRLlD";
+
 void reader::trc_line(std::string_view s) {
     if (s.front() == ';') {
         if (starts_with(s, ";$FILEVERSION=")) {
             const auto v = trim(s.substr(14));
             trc_v1_ = starts_with(v, "1.");
-            trc_columns_ = v == "1.1"   ? "NOTILD"
+            trc_columns_ = v == "1.0"   ? "NOILD"
+                           : v == "1.1" ? "NOTILD"
                            : v == "1.2" ? "NOBTILD"
                            : v == "1.3" ? "NOBTIRLD"
                            : v == "2.0" ? "NOTIdlD"
                            : v == "2.1" ? "NOTBIdRLD"
-                                        : "NOILD";
+                                        : "";
+            if (trc_columns_.empty())
+                return stop(line_,
+                            "a TRC file version powerkey does not read (it reads 1.0 to "
+                            "1.3, 2.0 and 2.1)",
+                            s);
         } else if (starts_with(s, ";$COLUMNS=")) {
+            // The letters of trc_letters, separated by commas, each at most once: at most ten
+            // columns, whatever the line holds.
             trc_columns_.clear();
-            for (char c : s.substr(10))
-                if (c != ',' && c != ' ' && c != '\r') trc_columns_ += c;
+            for (std::string_view rest = s.substr(10); !rest.empty();) {
+                const auto comma = rest.find(',');
+                const auto letter = trim(rest.substr(0, comma));
+                rest.remove_prefix(comma == std::string_view::npos ? rest.size() : comma + 1);
+                if (letter.size() != 1 || trc_letters.find(letter[0]) == std::string_view::npos ||
+                    trc_columns_.find(letter[0]) != std::string::npos) {
+                    trc_columns_.clear();
+                    break;
+                }
+                trc_columns_ += letter[0];
+            }
+            // What a frame needs: its time, identifier, length and data (the data last), and in
+            // a 2.x file its type (DT, RR, FD ...).
+            const auto has = [this](char c) { return trc_columns_.find(c) != std::string::npos; };
+            if (!has('O') || !has('I') || !(has('L') || has('l')) || trc_columns_.back() != 'D' ||
+                (!trc_v1_ && !has('T')))
+                return stop(line_,
+                            "unusable TRC columns (each of N,O,T,B,I,d,R,L,l,D at most "
+                            "once; a frame needs O, I, L or l, T in 2.x, and D last)",
+                            s);
         }
         return;
     }
@@ -674,26 +770,27 @@ void reader::csv_line(std::string_view s) {
     if (hex) id_text.remove_prefix(2);
     if (!parse_digits(id_text, id, hex ? 16 : 10)) return bad("malformed CSV line (identifier)", s);
     const bool extended = cell(2) == "1";
-    if (cell(3) == "1") {
-        std::uint32_t dlc = 0;
-        if (!cell(5).empty() && (!parse_digits(cell(5), dlc, 10) || dlc > 15))
-            return bad("malformed CSV line (dlc)", s);
-        return other(skip::remote, id, extended, dlc > 8 ? 8 : dlc, {},
-                     parse_seconds(cell(0)) ? cell(0) : std::string_view{}, {});
-    }
-    std::vector<std::uint8_t> data;
-    if (!base64_decode(cell(6), data)) return bad("malformed CSV line (data is not base64)", s);
-    if (data.size() > 64) return bad("malformed CSV line (more than 64 data bytes)", s);
     // python-can writes Python's repr of the float: 1700000000.5, or 5e-05 near 0.
     std::string_view time = cell(0);
     if (!time.empty() && !parse_seconds(time)) {
-        const double t = std::strtod(std::string(time).c_str(), nullptr);
-        if (!(t >= 0 && t < 1e12)) return bad("malformed CSV line (timestamp)", s);
+        double t = -1;  // the whole cell a number: no "abc" read as 0, no nan, no inf
+        const auto r = std::from_chars(time.data(), time.data() + time.size(), t);
+        if (r.ec != std::errc{} || r.ptr != time.data() + time.size() || !(t >= 0 && t < 1e12))
+            return bad("malformed CSV line (timestamp)", s);
         char b[40];
         std::snprintf(b, sizeof b, "%.6f", t);
         time_buf_ = b;
         time = time_buf_;
     }
+    if (cell(3) == "1") {
+        std::uint32_t dlc = 0;
+        if (!cell(5).empty() && (!parse_digits(cell(5), dlc, 10) || dlc > 15))
+            return bad("malformed CSV line (dlc)", s);
+        return other(skip::remote, id, extended, dlc > 8 ? 8 : dlc, {}, time, {});
+    }
+    std::vector<std::uint8_t> data;
+    if (!base64_decode(cell(6), data)) return bad("malformed CSV line (data is not base64)", s);
+    if (data.size() > 64) return bad("malformed CSV line (more than 64 data bytes)", s);
     if (data.size() > 8) return other(skip::fd, id, extended, data.size(), data, time, {});
     emit_raw(id, extended, data, time, {});
 }
@@ -702,16 +799,16 @@ void reader::csv_line(std::string_view s) {
 // -----------------------------------------------------------------------------------
 
 void reader::blf_feed(std::string_view bytes) {
-    if (blf_broken_) return;
+    if (stopped_) return;
     blf_in_.append(bytes);
     std::size_t pos = 0;
     if (!blf_header_done_) {
         if (blf_in_.size() < 8) return;
         const std::uint32_t header_size = le32(blf_in_, 4);
-        if (header_size < 8 || header_size > limits::blf_header_bytes) {
-            blf_broken_ = true;
-            return bad("the BLF file header has an impossible size", "");
-        }
+        if (header_size < 8 || header_size > limits::blf_header_bytes)
+            return stop(0, "the BLF file header has an impossible size (" +
+                               std::to_string(header_size) + " bytes; the limit is " +
+                               std::to_string(limits::blf_header_bytes) + ")");
         if (blf_in_.size() < header_size) return;
         if (header_size >= 56 && le16(blf_in_, 40) >= 1970) {  // start: a SYSTEMTIME at byte 40
             std::tm t{};
@@ -728,15 +825,18 @@ void reader::blf_feed(std::string_view bytes) {
     }
     std::size_t used = 0;
     blf_objects(std::string_view(blf_in_).substr(pos), true, false, used);
+    if (stopped_) return blf_in_.clear();
     blf_in_.erase(0, pos + used);
 }
 
-// Walks the objects of `data`; `used` says how far the complete ones reach.
+// Walks the objects of `data` (the file's top level, or a container's unpacked data); `used`
+// says how far the complete ones reach. Objects are numbered in the order they come, those inside
+// a container included (line_).
 void reader::blf_objects(std::string_view data, bool top, bool final, std::size_t& used) {
     std::size_t pos = 0;
     used = 0;
     for (;;) {
-        if (blf_broken_) return;
+        if (stopped_) return;
         // Objects are padded to 4 bytes (inside containers not always): find the next signature.
         std::size_t at = pos;
         bool found = false;
@@ -745,20 +845,23 @@ void reader::blf_objects(std::string_view data, bool top, bool final, std::size_
                 found = true;
                 break;
             }
-        if (!found && pos + 12 <= data.size()) {
-            blf_broken_ = true;
-            return bad("a BLF object without its LOBJ signature (damaged file?)", "");
-        }
+        if (!found && pos + 12 <= data.size())
+            return stop(line_ + 1, "a BLF object without its LOBJ signature (damaged file?)");
         if (!found || at + blf_base_header > data.size()) {
             used = pos;
             return;
         }
         const std::uint32_t size = le32(data, at + 8);
         const std::uint32_t type = le32(data, at + 12);
-        if (size < blf_base_header) {
-            blf_broken_ = true;
-            return bad("a BLF object with an impossible size (damaged file?)", "");
-        }
+        if (size < blf_base_header)
+            return stop(line_ + 1, "a BLF object of " + std::to_string(size) +
+                                       " bytes, less than its own header (damaged file?)");
+        // The limits, before the reader waits for an object's bytes.
+        const std::uint32_t most = top ? limits::blf_object_bytes : limits::blf_tail_bytes;
+        if (size > most)
+            return stop(line_ + 1, "a BLF object of " + std::to_string(size) + " bytes" +
+                                       (top ? "" : " inside a container") + ", more than the " +
+                                       std::to_string(most) + " the reader takes (damaged file?)");
         // Top-level objects are followed by size % 4 padding bytes (the last one maybe not).
         const std::size_t pad = top ? size % 4 : 0;
         if (at + size > data.size() || (top && !final && at + size + pad > data.size())) {
@@ -766,30 +869,43 @@ void reader::blf_objects(std::string_view data, bool top, bool final, std::size_
             return;
         }
         ++line_;
-        blf_object(data.substr(at, size), type);
+        blf_object(data.substr(at, size), type, top);
         pos = at + size + pad;
         if (pos > data.size()) pos = data.size();
         used = pos;
     }
 }
 
-void reader::blf_object(std::string_view obj, std::uint32_t type) {
+void reader::blf_object(std::string_view obj, std::uint32_t type, bool top) {
     constexpr std::uint32_t can_message = 1, log_container = 10, can_error_ext = 73,
                             can_message2 = 86, can_fd_message = 100, can_fd_message_64 = 101;
     if (type == log_container) {
+        static_assert(limits::blf_container_depth == 1, "containers in containers are refused");
+        if (!top)
+            return stop(line_,
+                        "a BLF container inside a container (no writer nests them; the reader "
+                        "takes containers at the top level only)");
         if (obj.size() < blf_base_header + 16) return bad("a BLF container too short", "");
         const std::uint16_t method = le16(obj, blf_base_header);
         const std::uint32_t size = le32(obj, blf_base_header + 8);
         const auto payload = obj.substr(blf_base_header + 16);
         // Writers use containers of about 128 KiB; a size from a damaged file is not allocated.
-        if (size > limits::blf_container_bytes)
-            return bad("a BLF container larger than 16 MiB (damaged file?)", "");
-        std::string inner = std::move(blf_inner_);  // the tail of the previous container
+        if (size > limits::blf_container_bytes ||
+            (method == 0 && payload.size() > limits::blf_container_bytes))
+            return stop(line_, "a BLF container of " +
+                                   std::to_string(method == 0 ? payload.size() : size) +
+                                   " bytes unpacked, more than the " +
+                                   std::to_string(limits::blf_container_bytes) +
+                                   " the reader takes (damaged file?)");
+        // The data: the unfinished object of the previous container (blf_inner_, at most
+        // limits::blf_tail_bytes: blf_objects refuses a larger object inside a container), then
+        // this container's.
+        std::string inner = std::move(blf_inner_);
         blf_inner_.clear();
+        const std::size_t old = inner.size();
         if (method == 0) {
             inner.append(payload);
         } else if (method == 2) {
-            const std::size_t old = inner.size();
             inner.resize(old + size);
             uLongf out = size;
             const int rc = uncompress(reinterpret_cast<Bytef*>(inner.data() + old), &out,
@@ -801,11 +917,12 @@ void reader::blf_object(std::string_view obj, std::uint32_t type) {
             }
             inner.resize(old + out);
         } else {
+            blf_inner_ = std::move(inner);
             return bad("a BLF container compressed by an unknown method", "");
         }
         std::size_t used = 0;
         blf_objects(inner, false, false, used);
-        blf_inner_.assign(inner, used);
+        if (!stopped_) blf_inner_.assign(inner, used);
         return;
     }
     if (type != can_message && type != can_message2 && type != can_error_ext &&

@@ -62,13 +62,44 @@ struct other_record {
     std::size_t line = 0;
 };
 
-// The caps on what untrusted input can make a reader hold. One place, so that hardening has one
-// place to change.
+// The caps on what untrusted input can make the tool hold or do: one place, so that each limit has
+// one home (docs/security.md says what happens when each is hit). A reader that hits one stops
+// reading its input and says so (sink::stop): an error naming the file, the line or object and
+// the limit; the exit status is then 1.
 struct limits {
-    // A BLF log container is unpacked into memory: writers use about 128 KiB.
-    static constexpr std::uint32_t blf_container_bytes = 16u << 20;
+    // A line of a text log (candump, ASC, TRC, CSV). The longest lines real writers make (an ASC
+    // CAN FD line of 64 bytes, a TRC header) are under 1 KiB; a longer line is no log line.
+    static constexpr std::size_t text_line_bytes = 64u << 10;
+    // A JSON line of encode --json: decode --json writes lines of at most about 2 KiB.
+    static constexpr std::size_t json_line_bytes = 64u << 10;
+    // How deep the brackets of a JSON line may nest before nlohmann/json parses it (its parser
+    // recurses): decode --json lines nest 2 deep. A deeper line is a bad line, not a stop.
+    static constexpr std::size_t json_depth = 4;
+    // The bytes of the first line in which a NUL makes the input a binary file (not a text log).
+    static constexpr std::size_t binary_sniff_bytes = 512;
     // A BLF file header (the writers' is 144 bytes).
     static constexpr std::uint32_t blf_header_bytes = 4096;
+    // A BLF log container is unpacked into memory: writers use about 128 KiB.
+    static constexpr std::uint32_t blf_container_bytes = 16u << 20;
+    // A BLF object at the top level of the file: a container with its packed data (zlib may make
+    // incompressible data a little larger), or an object outside any container.
+    static constexpr std::uint32_t blf_object_bytes = blf_container_bytes + (64u << 10);
+    // An object inside a container, and so the unfinished object at the end of a container that
+    // is carried into the next one (writers split objects across containers). CAN messages are
+    // under 100 bytes; the largest objects writers put in containers are a few KiB.
+    static constexpr std::uint32_t blf_tail_bytes = 1u << 20;
+    // Containers inside containers: no writer nests them, and each level would keep a copy of
+    // its data; a container found inside a container is refused.
+    static constexpr unsigned blf_container_depth = 1;
+    // What decode --model auto keeps of the frames it reads to choose the model before it
+    // decodes them (a frame with its time and interface takes about 70 bytes, so about 900,000
+    // frames): past that, the model is chosen from these frames, and the rest of the input is
+    // decoded as it comes.
+    static constexpr std::size_t model_auto_bytes = 64u << 20;
+    // What an error message quotes of a line or value from the input (escaped, then "...").
+    static constexpr std::size_t echo_bytes = 60;
+    // What a message shows of a file name (escaped, then "...").
+    static constexpr std::size_t label_bytes = 200;
 };
 
 // Receives what a reader finds. `problem` is a line that should have been a frame and is not:
@@ -80,6 +111,11 @@ public:
     virtual void problem(std::size_t line, std::string_view why, std::string_view text) = 0;
     // A remote or CAN FD frame (already counted in skipped()); most sinks ignore them.
     virtual void other(const other_record&) {}
+    // The reader stops reading this input: a limit was hit, or the input is damaged past
+    // reading on (a BLF object without its signature). `line` as for problem (0: the file).
+    virtual void stop(std::size_t line, std::string_view why, std::string_view text) {
+        problem(line, why, text);
+    }
 };
 
 // One input stream. Feed it the bytes in any chunks; finish() at the end.
@@ -88,6 +124,9 @@ public:
     explicit reader(sink& out) : out_(out) {}
     void feed(std::string_view bytes);
     void finish();
+    // True once the reader needs no more input: it stopped (sink::stop), or the input is no log.
+    // The caller may stop reading then; finish() is still to be called.
+    [[nodiscard]] bool done() const noexcept { return stopped_ || format_ == format::not_a_log; }
 
     [[nodiscard]] format detected() const noexcept { return format_; }
     [[nodiscard]] std::size_t frames() const noexcept { return frames_; }
@@ -103,7 +142,9 @@ public:
     [[nodiscard]] const std::string& looks_like() const noexcept { return looks_like_; }
 
 private:
+    void start();
     void text_feed(std::string_view bytes);
+    void too_long(std::string_view rest);
     void line(std::string_view text);
     bool detect_binary(std::string_view first_bytes);
     void detect(std::string_view first);
@@ -114,7 +155,7 @@ private:
     void csv_line(std::string_view s);
     void blf_feed(std::string_view bytes);
     void blf_objects(std::string_view data, bool top, bool final, std::size_t& used);
-    void blf_object(std::string_view obj, std::uint32_t type);
+    void blf_object(std::string_view obj, std::uint32_t type, bool top);
     void emit(const powerkey::can::frame& f, std::string_view time, std::string_view interface);
     void emit_raw(std::uint32_t id, bool extended, std::span<const std::uint8_t> data,
                   std::string_view time, std::string_view interface);
@@ -123,12 +164,16 @@ private:
                std::span<const std::uint8_t> data, std::string_view time,
                std::string_view interface, bool brs = false);
     void bad(std::string_view why, std::string_view text);
+    void stop(std::size_t line, std::string_view why, std::string_view text = {});
 
     sink& out_;
     format format_ = format::unknown;
     std::string carry_;
     std::size_t line_ = 0;
     bool started_ = false;
+    bool sniffed_ = false;  // the first line was looked at for NUL bytes
+    bool stopped_ = false;
+    std::string stop_why_;
     std::size_t frames_ = 0;
     std::size_t problems_ = 0;
     std::array<std::size_t, skip_kinds> skipped_{};
@@ -147,7 +192,6 @@ private:
     std::string blf_in_;
     std::string blf_inner_;
     bool blf_header_done_ = false;
-    bool blf_broken_ = false;
     double blf_start_ = 0;
 };
 

@@ -163,11 +163,24 @@ int main(int argc, char** argv) {
         print(usage_text(r), stderr);
         return tool::status_usage;
     }
+    // An option given an empty value (--until '', --node=) is a usage error, never its default.
+    for (const CLI::App* a :
+         {static_cast<const CLI::App*>(&app), static_cast<const CLI::App*>(chosen->app)})
+        for (const CLI::Option* opt : a->get_options())
+            if (!opt->get_positional() && opt->get_type_size_max() > 0)
+                for (const auto& value : opt->results())
+                    if (value.empty())
+                        return tool::usage_error(opt->get_name() +
+                                                 ": an empty value (give one, or leave the "
+                                                 "option out for its default)");
     const auto use = chosen->spec.model;
     const std::string name(chosen->spec.name);
-    if (use == model_use::none && (!model_text.empty() || !node_text.empty()))
+    // Given, even empty (--node ''): an empty value is an error, never the default.
+    const bool model_given = app.get_option("--model")->count() > 0;
+    const bool node_given = app.get_option("--node")->count() > 0;
+    if (use == model_use::none && (model_given || node_given))
         return tool::usage_error(name + " takes no --model or --node (it reads logs of any bus)");
-    if (!model_text.empty()) {
+    if (model_given) {
         if (use == model_use::or_auto && (model_text == "auto" || model_text == "AUTO")) {
             common.model_auto = true;
         } else if (const auto m = tool::model_from_name(model_text)) {
@@ -181,7 +194,7 @@ int main(int argc, char** argv) {
     } else if (use == model_use::required) {
         return tool::usage_error(name + " needs --model M (" + tool::model_names() + ")");
     }
-    if (!node_text.empty()) {
+    if (node_given) {
         std::uint64_t n = 0;
         const bool number = tool::parse_number(node_text, n);
         const auto id = powerkey::canopen::node_id::make(number ? n : 0);

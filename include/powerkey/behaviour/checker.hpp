@@ -87,7 +87,10 @@ struct checker_config {
 template <std::size_t TextCapacity = 64>
 class checker {
 public:
-    static constexpr std::size_t max_problems_per_frame = 4;
+    // The most problems one step() finds: the three the time brings (sdo_no_reply,
+    // heartbeat_silence, key_state_silence) and two the frame does (a segment response with the
+    // wrong toggle that ends an upload of the wrong size; any other frame shows at most one).
+    static constexpr std::size_t max_problems_per_frame = 5;
 
     constexpr explicit checker(const checker_config& c) noexcept
         : cfg_(c),
@@ -131,6 +134,10 @@ public:
         return {found_.data(), count_};
     }
 
+    // Problems a step() or finish() found past max_problems_per_frame, not returned (0 unless
+    // the bound above is wrong: the fuzz target `behaviour` checks it).
+    [[nodiscard]] constexpr std::size_t problems_dropped() const noexcept { return dropped_; }
+
     [[nodiscard]] constexpr const session<TextCapacity>& follower() const noexcept {
         return session_;
     }
@@ -141,7 +148,10 @@ public:
 private:
     constexpr void report(std::uint32_t line, problem_kind k, std::uint32_t a, std::uint32_t b,
                           std::uint32_t c) noexcept {
-        if (count_ < found_.size()) found_[count_++] = problem{line, k, {a, b, c}};
+        if (count_ < found_.size())
+            found_[count_++] = problem{line, k, {a, b, c}};
+        else
+            ++dropped_;
     }
 
     constexpr std::uint32_t allowed(std::uint32_t period) const noexcept {
@@ -400,6 +410,7 @@ private:
     bool ks_reported_ = false;
     std::array<problem, max_problems_per_frame> found_{};
     std::size_t count_ = 0;
+    std::size_t dropped_ = 0;
 };
 
 // --- explanations -------------------------------------------------------------------------------

@@ -51,6 +51,7 @@
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
+#include <powerkey/names.hpp>
 
 #include <array>
 #include <cstddef>
@@ -133,7 +134,7 @@ struct controller_event {
     std::uint8_t key = 0;  // key events: 1..the model's keys
     canopen::node_id node = canopen::default_node_id;
     sdo_origin origin = sdo_origin::configuration;
-    std::uint8_t step = 0;       // configuration index (origin configuration)
+    std::uint16_t step = 0;      // configuration index (origin configuration)
     object what = object::keys;  // SDO events: the object
     std::uint32_t value = 0;     // sdo_done: the value read (little endian); sdo_aborted: the code
     friend constexpr bool operator==(const controller_event&,
@@ -150,7 +151,26 @@ enum class controller_state : std::uint8_t {
     POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
-template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = 16>
+// The most events one call (step() or tick()) reports for a keypad with `keys` keys: each key
+// at most twice (pressed or released; or, held, its long press and a repeat), and at most 13
+// others: found, rebooted or lost; ready; node_changed; 3 answers to SDO requests (one the frame
+// brings, one timeout in setup and one after it); 3 refused setup requests (identify, heartbeat,
+// active on startup) and 4 refused running ones (node change, brightness, backlight level and
+// colour). A refused configuration entry, and the ready that ends the setup, are reported only
+// when the queue has room: the setup waits for the next call otherwise. An application that polls
+// after every call loses no event when EventCapacity is at least this for the model it runs.
+[[nodiscard]] constexpr std::size_t events_per_call(std::size_t keys) noexcept {
+    return 2 * keys + 13;
+}
+// Enough for any model: a key set holds 16 keys (the table's largest keypads have 15).
+inline constexpr std::size_t default_event_capacity = events_per_call(key_set::max);
+
+// The longest configuration list the controller runs: its events number the entries 0..65534
+// (controller_event::step). The entries of a longer list past these are not run, and one
+// sdo_refused event with step max_configuration and value value_out_of_range says so.
+inline constexpr std::size_t max_configuration = 65535;
+
+template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = default_event_capacity>
 class controller {
 public:
     constexpr explicit controller(const controller_config& c) noexcept
@@ -186,26 +206,34 @@ public:
         --events_size_;
         return e;
     }
-    // Events refused because the application polled too slowly.
+    // Events refused because the queue was full: the application polled too slowly, or one call
+    // reported more than EventCapacity (see events_per_call).
     [[nodiscard]] constexpr std::size_t events_dropped() const noexcept { return events_dropped_; }
+    [[nodiscard]] static constexpr std::size_t event_capacity() noexcept { return EventCapacity; }
 
     // --- what the application shows ---------------------------------------------------------
 
-    // LED k (1..the model's LEDs) in colour c, steady or blinking; false for an LED it lacks.
+    // LED k (1..the model's LEDs) in colour c, steady or blinking; false (nothing changed) for
+    // an LED it lacks, or a colour its planes cannot show (blue, cyan, magenta and white on a
+    // keypad of red and green, or a value that is no colour).
     constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
         if (k < 1 || k > info_->leds || ((info_->led_mask >> (k - 1)) & 1u) == 0) return false;
+        if (!shows(c)) return false;
         leds on = on_, bl = blink_;
         on.set(k, blink ? colour::off : c);
         bl.set(k, blink ? c : colour::off);
-        set_leds(on, bl);
-        return true;
+        return set_leds(on, bl);
     }
-    // The whole picture: the LEDs on, and those that blink (both: alternate, PK1000 13).
-    constexpr void set_leds(const leds& on, const leds& blink) noexcept {
+    // The whole picture: the LEDs on, and those that blink (both: alternate, PK1000 13); false
+    // (nothing changed) when a map names an LED or a colour plane the keypad lacks, which its LED
+    // PDOs cannot carry.
+    constexpr bool set_leds(const leds& on, const leds& blink) noexcept {
+        if (!fits(on) || !fits(blink)) return false;
         if (!(on == on_)) dirty_ |= dirty_on;
         if (!(blink == blink_)) dirty_ |= dirty_blink;
         on_ = on;
         blink_ = blink;
+        return true;
     }
     constexpr void set_brightness(level l) noexcept {
         if (!has_brightness_ || !(l == brightness_)) dirty_ |= dirty_brightness;
@@ -219,6 +247,20 @@ public:
         has_backlight_ = true;
         backlight_level_ = l;
         backlight_colour_ = c;
+    }
+    // Whether an LED map holds only LEDs and colour planes the keypad has.
+    [[nodiscard]] constexpr bool fits(const leds& l) const noexcept {
+        for (unsigned p = 0; p < 3; ++p) {
+            const std::uint64_t mask = l.of(static_cast<plane>(p)).mask();
+            const std::uint64_t has = p < info_->planes ? info_->led_mask : 0u;
+            if ((mask & ~has) != 0) return false;
+        }
+        return true;
+    }
+    // Whether the keypad can show colour c: a named colour within its colour planes.
+    [[nodiscard]] constexpr bool shows(colour c) const noexcept {
+        const auto planes = powerkey::detail::planes_of(c);
+        return is_named(c) && (planes >> info_->planes) == 0;
     }
     // Move the keypad to node id n (PK1000 2013h, PKP command 70h), after the requests before it.
     constexpr void change_node(canopen::node_id n) noexcept { pending_node_change_ = n; }
@@ -249,7 +291,7 @@ private:
     struct sdo_job {
         message request;
         sdo_origin origin = sdo_origin::configuration;
-        std::uint8_t step = 0;
+        std::uint16_t step = 0;
         object what = object::keys;
         canopen::sdo_address address{};
         bool read = false;
@@ -358,6 +400,7 @@ private:
         job_.reset();
         setup_pos_ = first ? setup_identify : setup_heartbeat;
         list_pos_ = 0;
+        list_cut_said_ = false;
         if (first) start_written_ = false;
     }
 
@@ -489,7 +532,8 @@ private:
         if (state_ == controller_state::searching) probe();
         if (state_ == controller_state::setting_up) {
             sdo_timer();
-            if (!job_) next_setup_job();
+            // (The timeout may have ended the setup: then it is not run again.)
+            if (!job_ && state_ == controller_state::setting_up) next_setup_job();
         }
         // Not `else`: the setup may have just finished, and the picture goes out at once.
         if (state_ == controller_state::running) {
@@ -547,12 +591,27 @@ private:
                 if (begin_job(active_message(), sdo_origin::start, 0)) return;
             }
         }
-        while (list_pos_ < cfg_.configuration.size()) {
+        const std::size_t entries = cfg_.configuration.size() < max_configuration
+                                        ? cfg_.configuration.size()
+                                        : max_configuration;
+        while (list_pos_ < entries) {
+            // A refused entry is an event: with the queue full, the setup waits for a poll.
+            if (events_size_ == EventCapacity) return;
             const auto i = list_pos_++;
             if (begin_job(cfg_.configuration[i], sdo_origin::configuration,
-                          static_cast<std::uint8_t>(i)))
+                          static_cast<std::uint16_t>(i)))
                 return;
         }
+        if (cfg_.configuration.size() > max_configuration && !list_cut_said_) {
+            if (events_size_ == EventCapacity) return;
+            list_cut_said_ = true;
+            controller_event e{event_kind::sdo_refused};
+            e.step = static_cast<std::uint16_t>(max_configuration);
+            e.value = static_cast<std::uint32_t>(errc::value_out_of_range);
+            emit(e);
+        }
+        // Ready is an event too: it waits for room as the refusals do.
+        if (events_size_ == EventCapacity) return;
         // Set up: start it and show the picture.
         done_setup_once_ = true;
         state_ = controller_state::running;
@@ -645,7 +704,7 @@ private:
     }
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
-    constexpr bool begin_job(const message& msg, sdo_origin origin, std::uint8_t step) noexcept {
+    constexpr bool begin_job(const message& msg, sdo_origin origin, std::uint16_t step) noexcept {
         sdo_job j;
         j.request = msg;
         j.origin = origin;
@@ -732,6 +791,7 @@ private:
     bool awaiting_boot_from_new_ = false;
     std::uint8_t setup_pos_ = setup_identify;
     std::size_t list_pos_ = 0;
+    bool list_cut_said_ = false;
 
     // The one SDO request in flight.
     std::optional<sdo_job> job_;

@@ -187,6 +187,25 @@ public:
         }
     }
 
+    // The earliest time at which advance() has something to do (a due SDO reply, a heartbeat, a
+    // heartbeat-consumer deadline, a periodic key state, the end of a silence); nullopt when
+    // nothing is scheduled. Between now and then, advance() changes nothing and sends nothing,
+    // so a caller may sleep (or a simulation jump) until then or the next frame or key,
+    // whichever comes first.
+    [[nodiscard]] constexpr std::optional<millis> next_due() const noexcept {
+        std::optional<millis> due;
+        const auto take = [&](millis t) {
+            if (!due || before(t, *due)) due = t;
+        };
+        if (silent_) take(silent_until_);
+        if (state_ == run_state::off || state_ == run_state::j1939) return due;
+        if (pending_) take(pending_->due);
+        if (value(object::heartbeat_time) != 0) take(next_heartbeat_);
+        if (monitoring_) take(consumer_deadline_);
+        if (state_ == run_state::operational && periodic_ms() != 0) take(next_periodic_);
+        return due;
+    }
+
     // Scripted keys: press or release key k (1..the model's keys) at t. False for a key the
     // model lacks. A change sends the key state when the keypad is operational and event-driven
     // (PK1000 11, 46: transmission type FEh; PKP 10).
