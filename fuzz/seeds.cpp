@@ -3,10 +3,10 @@
 // The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
 // binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic;
 // the encoder's seeds are the same frames decoded, written in the form fill_any reads (put_any).
-// The rows are tests/decoder_rows.hpp's types: every table (core, PK1000, PKP, the SI manuals'
+// The rows are tests/codec_rows.hpp's types: every table (core, PK1000, PKP, the SI manuals'
 // rows and the SI reference rows) seeds the decoder for each model of its row, and the
 // encode_error_rows seed the encoder with refused messages.
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "fuzz.hpp"
 #include "j1939_rows.hpp"
 #include "pk1000_rows.hpp"
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     };
     auto for_models = [](std::uint16_t models, auto f) {
         for (std::size_t i = 0; i < model_count; ++i)
-            if (decoder_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+            if (codec_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
     };
     auto model_node = [](model m, unsigned node) {
         return std::vector<std::uint8_t>{static_cast<std::uint8_t>(m), node_byte(node)};
@@ -160,16 +160,16 @@ int main(int argc, char** argv) {
             const auto f = add_frame(r.frame, r.models, r.node);
             add_message(r.models, r.node, r.expected);
             if (log != nullptr && r.node == 0x15 &&
-                decoder_rows::applies(r.models, static_cast<model>(log->front())))
+                codec_rows::applies(r.models, static_cast<model>(log->front())))
                 log_frame(*log, f);
         }
     };
-    add_table(decoder_rows::core_rows, nullptr);
+    add_table(codec_rows::core_rows, nullptr);
     add_table(pk1000_rows::rows, &pk1000_log);
     add_table(pkp_rows::rows, &pkp_log);
     add_table(si_rows::rows, &mt_log);
     add_table(si_reference_rows::rows, nullptr);
-    for (const auto& r : decoder_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : codec_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pkp_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : si_rows::error_rows) add_frame(r.frame, r.models, r.node);
@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     for (const auto& r : si_reference_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
     for (const auto& r : pkp_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
-    for (const auto& r : decoder_rows::core_rows)
+    for (const auto& r : codec_rows::core_rows)
         w.add("core_decode", node_and_frame(node_byte(0x15), can::parse_candump(r.frame).value()));
     w.add("session", pk1000_log);
     w.add("session", pkp_log);

@@ -11,14 +11,14 @@
 #include <cstddef>
 #include <iterator>
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"
 
 namespace {
 using namespace powerkey;
-using namespace decoder_rows;
+using namespace codec_rows;
 using powerkey_tests::check_rows;
 using powerkey_tests::first_failing;
 using powerkey_tests::frame_of;

@@ -6,7 +6,7 @@
 #include <powerkey/describe.hpp>
 #include <powerkey/keypad/codec.hpp>
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"
@@ -166,12 +166,12 @@ void check_fits(const Row (&table)[N]) {
         std::array<char, 160> buf{};
         CAPTURE(r.section);
         CAPTURE(r.frame);
-        CHECK(describe(r.expected, decoder_rows::node_of(r.node), buf).has_value());
+        CHECK(describe(r.expected, codec_rows::node_of(r.node), buf).has_value());
     }
 }
 
 TEST_CASE("every manual row of every keypad has a description that fits 160 characters") {
-    check_fits(decoder_rows::core_rows);
+    check_fits(codec_rows::core_rows);
     check_fits(pk1000_rows::rows);
     check_fits(pkp_rows::rows);
 }

@@ -6,7 +6,7 @@
 #include <doctest/doctest.h>
 
 #include "../fuzz/fuzz.hpp"
-#include "test_invariants.hpp"
+#include "invariants.hpp"
 
 #include <set>
 #include <string_view>

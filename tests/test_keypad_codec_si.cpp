@@ -22,7 +22,7 @@
 
 namespace {
 using namespace powerkey;
-using namespace decoder_rows;
+using namespace codec_rows;
 using powerkey_tests::check_rows;
 using powerkey_tests::first_failing;
 using powerkey_tests::frame_of;

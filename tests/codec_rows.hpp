@@ -13,8 +13,8 @@
 //
 //   static_assert(first_failing(rows, round_trips) == std::size(rows));
 //   TEST_CASE("...") { check_rows(rows, round_trips); }
-#ifndef POWERKEY_TESTS_DECODER_ROWS_HPP
-#define POWERKEY_TESTS_DECODER_ROWS_HPP
+#ifndef POWERKEY_TESTS_CODEC_ROWS_HPP
+#define POWERKEY_TESTS_CODEC_ROWS_HPP
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/cob_id.hpp>
@@ -27,7 +27,7 @@
 #include <cstdint>
 #include <string_view>
 
-namespace decoder_rows {
+namespace codec_rows {
 using namespace powerkey;
 using canopen::nmt_command;
 using canopen::nmt_state;
@@ -254,6 +254,6 @@ inline constexpr error_row core_error_rows[] = {
      errc::wrong_id_format},
 };
 
-}  // namespace decoder_rows
+}  // namespace codec_rows
 
-#endif  // POWERKEY_TESTS_DECODER_ROWS_HPP
+#endif  // POWERKEY_TESTS_CODEC_ROWS_HPP

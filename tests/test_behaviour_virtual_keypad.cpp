@@ -115,11 +115,11 @@ struct expected_difference {
     std::string_view note;
 };
 
-using decoder_rows::m1000;
-using decoder_rows::m2200;
-using decoder_rows::m2400;
-using decoder_rows::m2600;
-constexpr std::uint16_t pkp_all = decoder_rows::pkp;
+using codec_rows::m1000;
+using codec_rows::m2200;
+using codec_rows::m2400;
+using codec_rows::m2600;
+constexpr std::uint16_t pkp_all = codec_rows::pkp;
 constexpr std::uint16_t not2200 = m2400 | m2600;
 constexpr std::uint16_t si2600 = 1u << static_cast<unsigned>(model::pkp2600si);
 constexpr std::uint16_t mt3500 = 1u << static_cast<unsigned>(model::pkp3500mt);
@@ -245,7 +245,7 @@ constexpr expected_difference differences[] = {
 std::optional<expected_difference> difference_of(model m, std::string_view section,
                                                  std::string_view frame) {
     for (const auto& d : differences)
-        if (decoder_rows::applies(d.models, m) &&
+        if (codec_rows::applies(d.models, m) &&
             (d.frame == "*" ? d.section == section_of(section)
                             : d.section == section && d.frame == frame))
             return d;
@@ -277,7 +277,7 @@ transcript_result run_transcript(const Row (&rows)[N], model m) {
         while (end < N && section_of(rows[end].section) == sec) ++end;
         std::vector<const Row*> rs;
         for (std::size_t j = i; j < end; ++j)
-            if (decoder_rows::applies(rows[j].models, m)) rs.push_back(&rows[j]);
+            if (codec_rows::applies(rows[j].models, m)) rs.push_back(&rows[j]);
         i = end;
         if (rs.empty()) continue;
 
