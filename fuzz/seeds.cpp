@@ -130,14 +130,14 @@ int main(int argc, char** argv) {
         log.push_back(0);
         put_frame(log, f);
     };
-    auto for_models = [](std::uint16_t models, auto f) {
+    auto for_models = [](const model_set& models, auto f) {
         for (std::size_t i = 0; i < model_count; ++i)
-            if (codec_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+            if (models.contains(static_cast<model>(i))) f(static_cast<model>(i));
     };
     auto model_node = [](model m, unsigned node) {
         return std::vector<std::uint8_t>{static_cast<std::uint8_t>(m), node_byte(node)};
     };
-    auto add_frame = [&](std::string_view text, std::uint16_t models, unsigned node) {
+    auto add_frame = [&](std::string_view text, const model_set& models, unsigned node) {
         const auto f = can::parse_candump(text).value();
         w.add_text("candump", text);
         for_models(models, [&](model m) {
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
         });
         return f;
     };
-    auto add_message = [&](std::uint16_t models, unsigned node, const message& msg) {
+    auto add_message = [&](const model_set& models, unsigned node, const message& msg) {
         for_models(models, [&](model m) {
             auto e = model_node(m, node);
             put_any(e, msg);
@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
             const auto f = add_frame(r.frame, r.models, r.node);
             add_message(r.models, r.node, r.expected);
             if (log != nullptr && r.node == 0x15 &&
-                codec_rows::applies(r.models, static_cast<model>(log->front())))
+                r.models.contains(static_cast<model>(log->front())))
                 log_frame(*log, f);
         }
     };
@@ -186,9 +186,9 @@ int main(int argc, char** argv) {
     // The J1939 rows: the decoder (model byte, keypad selector, frame) with any keypad and
     // narrowed to the row's, the encoder (model byte, selector, the row's message), both for
     // every model the row applies to; the refusals likewise.
-    auto j1939_models = [](j1939_rows::model_mask models, auto f) {
+    auto j1939_models = [](const model_set& models, auto f) {
         for (std::size_t i = 0; i < j1939::model_row_count; ++i)
-            if (j1939_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+            if (models.contains(static_cast<model>(i))) f(static_cast<model>(i));
     };
     auto j1939_seed = [](model m, j1939::keypad_address keypad) {
         std::vector<std::uint8_t> v{static_cast<std::uint8_t>(m)};
@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
         }
         return v;
     };
-    auto j1939_frame = [&](std::string_view text, j1939_rows::model_mask models,
+    auto j1939_frame = [&](std::string_view text, const model_set& models,
                            j1939::keypad_address keypad) {
         const auto f = can::parse_candump(text).value();
         w.add_text("candump", text);
@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
             w.add("j1939_decode", d);
         });
     };
-    auto j1939_message = [&](const j1939::message& msg, j1939_rows::model_mask models,
+    auto j1939_message = [&](const j1939::message& msg, const model_set& models,
                              j1939::keypad_address keypad) {
         j1939_models(models, [&](model m) {
             auto e = j1939_seed(m, keypad);

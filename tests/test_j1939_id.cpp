@@ -1,9 +1,9 @@
-// J1939: the 29-bit identifier both ways, and the keypad's switch-back frame (PK1000 49).
+// j1939/id.hpp: the 29-bit J1939 identifier (priority, PGN, destination, source) both ways, and the
+// identifiers a PGN cannot have.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/j1939/id.hpp>
-#include <powerkey/j1939/protocol_switch.hpp>
 
 #include "support.hpp"
 
@@ -37,62 +37,12 @@ constexpr bool id_holds(const id_row& r) {
 }
 static_assert(first_failing(id_rows, id_holds) == std::size(id_rows));
 
-// PDU1 PGNs keep the destination in its own field; a PDU2 message has none.
+// J1939-21: a PDU1 PGN's low byte is the destination field, 00h in the PGN (PK1000 49: PGN
+// EF00h); a PDU2 PGN (PF F0h and above) is broadcast and has no destination.
 static_assert(make_id({6, 0xEF21, 0x21, 0}) == errc::value_out_of_range);
 static_assert(make_id({6, 0xFEF1, 0x21, 0}) == errc::value_out_of_range);
+// An 11-bit frame has no J1939 identifier.
 static_assert(!parse_id(can::candump("615#00")).has_value());
-
-// The switch-back frame, built for the default addresses and for others.
-static_assert(encode(switch_to_canopen{}) == can::candump("18EF2100#041B8000FFFFFFFF"));
-static_assert(encode(switch_to_canopen{6, 0x30, 0xF9}) ==
-              can::candump("18EF30F9#041B8000FFFFFFFF"));
-static_assert(encode(switch_to_canopen{3, 0x21, 0x00}) ==
-              can::candump("0CEF2100#041B8000FFFFFFFF"));
-static_assert(decode_switch_to_canopen(can::candump("18EF2100#041B8000FFFFFFFF")).value() ==
-              switch_to_canopen{});
-
-struct bad_row {
-    std::string_view section;
-    std::string_view frame;
-    errc error;
-};
-constexpr bad_row bad_rows[] = {
-    {"an 11-bit id", "615#041B8000FFFFFFFF", errc::wrong_id_format},
-    {"another PGN", "18EE2100#041B8000FFFFFFFF", errc::wrong_id},
-    {"PDU2", "18FEF100#041B8000FFFFFFFF", errc::wrong_id},
-    {"7 bytes", "18EF2100#041B8000FFFFFF", errc::wrong_length},
-    {"other proprietary data", "18EF2100#041B8000FFFFFFFE", errc::unknown_command},
-};
-constexpr bool refused(const bad_row& r) {
-    return decode_switch_to_canopen(powerkey_tests::frame_of(r.frame)) == r.error;
-}
-static_assert(first_failing(bad_rows, refused) == std::size(bad_rows));
 }  // namespace
 
-TEST_CASE("J1939 identifiers both ways") {
-    check_rows(id_rows, id_holds);
-    for (const auto& r : id_rows) {
-        CAPTURE(r.section);
-        const auto made = make_id(r.fields);
-        REQUIRE(made.has_value());
-        CHECK(made->value() == powerkey_tests::frame_of(r.frame).raw_id());
-        CHECK(parse_id(*made) == r.fields);
-    }
-}
-
-TEST_CASE("the switch back to CANopen, PK1000 49") {
-    const auto f = can::parse_candump("18EF2100#041B8000FFFFFFFF");
-    REQUIRE(f.has_value());
-    CHECK(encode(switch_to_canopen{}) == *f);
-    const auto m = decode_switch_to_canopen(*f);
-    REQUIRE(m.has_value());
-    constexpr priority six = 6;
-    CHECK(m->priority == six);
-    CHECK(m->destination == 0x21);
-    CHECK(m->source == 0x00);
-    check_rows(bad_rows, refused);
-    for (const auto& r : bad_rows) {
-        CAPTURE(r.section);
-        CHECK(decode_switch_to_canopen(can::parse_candump(r.frame).value()).error() == r.error);
-    }
-}
+TEST_CASE("J1939 identifiers both ways") { check_rows(id_rows, id_holds); }

@@ -1,32 +1,54 @@
-// The shared values: LED maps set with a run-time key number, colours and modes, bit rates, and
-// every enum's one name table (names unique, each value reads back, aliases, "" for no name).
+// keypad/values.hpp: the values the keypads share. LED maps: a key's colour set with a run-time
+// key number, the colours as mixes of the planes (PKP sections 11, 12) and the modes of on and
+// blink together (PK1000 12, 13); the bit rates of the baud-rate codes (PK1000 20); and the
+// name table of every value, row by row, with the aliases the other manual's wording gives.
 #include <doctest/doctest.h>
 
-#include <powerkey/canopen/cob_id.hpp>
-#include <powerkey/canopen/heartbeat.hpp>
-#include <powerkey/canopen/nmt.hpp>
-#include <powerkey/canopen/sdo.hpp>
-#include <powerkey/error.hpp>
-#include <powerkey/keypad/commands.hpp>
-#include <powerkey/keypad/lookup.hpp>
-#include <powerkey/keypad/models.hpp>
-#include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/names.hpp>
-#include <powerkey/session.hpp>
 
 #include "support.hpp"
 
-#include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string_view>
-#include <type_traits>
 
 namespace {
 using namespace powerkey;
+using powerkey_tests::first_failing;
+using powerkey_tests::name_row;
+using powerkey_tests::name_table_is;
 
-// --- LED maps ---------------------------------------------------------------------------------
+// --- LED maps ------------------------------------------------------------------------------------
+
+// PKP sections 11, 12: amber = red + green, magenta = red + blue, cyan = green + blue, white all.
+struct colour_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    colour c;
+    bool red, green, blue;
+};
+constexpr colour_row colour_rows[] = {
+    {"PKP 11", "", colour::off, false, false, false},
+    {"PKP 11", "", colour::red, true, false, false},
+    {"PKP 11", "", colour::green, false, true, false},
+    {"PKP 11", "", colour::blue, false, false, true},
+    {"PKP 11: amber", "", colour::amber, true, true, false},
+    {"PKP 11: cyan", "", colour::cyan, false, true, true},
+    {"PKP 11: magenta", "", colour::magenta, true, false, true},
+    {"PKP 11: white", "", colour::white, true, true, true},
+};
+// set() replaces the colour of its key (key 2 is white first: set() clears what c lacks) and
+// leaves the other keys alone.
+constexpr bool colour_holds(const colour_row& r) {
+    leds l{{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};
+    l.set(2, r.c);
+    const leds& cl = l;
+    return cl.of(plane::red).contains(2) == r.red && cl.of(plane::green).contains(2) == r.green &&
+           cl.of(plane::blue).contains(2) == r.blue && l.colour_of(2) == r.c &&
+           l.colour_of(1) == colour::white && l.colour_of(3) == colour::white && l.empty() == false;
+}
+static_assert(powerkey_tests::all_rows_pass<first_failing(colour_rows, colour_holds),
+                                            std::size(colour_rows)>);
 
 // A key number known only at run time (a function argument here, a CAN frame in firmware).
 constexpr leds lit(unsigned k, colour c) {
@@ -34,18 +56,13 @@ constexpr leds lit(unsigned k, colour c) {
     l.set(k, c);
     return l;
 }
-static_assert(lit(3, colour::green) == leds{{}, {3}, {}});
-static_assert(lit(3, colour::amber) == leds{{3}, {3}, {}});
-static_assert(lit(3, colour::magenta) == leds{{3}, {}, {3}});
-static_assert(lit(3, colour::cyan) == leds{{}, {3}, {3}});
 static_assert(lit(32, colour::white) == leds{{32}, {32}, {32}});
-// Outside 1..32 changes nothing.
+// Outside 1..32 changes nothing; a value outside the enum sets no plane.
 static_assert(lit(0, colour::white).empty());
 static_assert(lit(33, colour::white).empty());
-// off clears every plane; set replaces the colour, and leaves the other keys alone.
-static_assert(leds{{3, 4}, {3}, {3}}.set(3, colour::off) == leds{{4}, {}, {}});
-static_assert(leds{{3}, {}, {}}.set(3, colour::blue) == leds{{}, {}, {3}});
+static_assert(leds{{5}, {5}, {5}}.set(5, static_cast<colour>(8)).colour_of(5) == colour::off);
 static_assert(leds{}.set(1, colour::red).set(2, colour::green) == leds{{1}, {2}, {}});
+static_assert(leds{}.colour_of(0) == colour::off);
 
 constexpr bool every_colour_reads_back() {
     for (const colour c : enum_values<colour>())
@@ -55,132 +72,145 @@ constexpr bool every_colour_reads_back() {
     return true;
 }
 static_assert(every_colour_reads_back());
-static_assert(leds{}.colour_of(0) == colour::off);
 
-static_assert(leds{{1}, {2}, {3}}.of(plane::red) == led_set{1});
-static_assert(leds{{1}, {2}, {3}}.of(plane::green) == led_set{2});
-static_assert(leds{{1}, {2}, {3}}.of(plane::blue) == led_set{3});
-
-// On and blink together blink alternately (PK1000 12, 13; PKP 12, 16).
-constexpr leds on_map{{1, 3}, {}, {}};
-constexpr leds blink_map{{2, 3}, {}, {}};
-static_assert(mode_of(on_map, blink_map, plane::red, 1) == led_mode::on);
-static_assert(mode_of(on_map, blink_map, plane::red, 2) == led_mode::blink);
-static_assert(mode_of(on_map, blink_map, plane::red, 3) == led_mode::alternate_blink);
-static_assert(mode_of(on_map, blink_map, plane::red, 4) == led_mode::off);
-static_assert(mode_of(on_map, blink_map, plane::green, 1) == led_mode::off);
-
-// --- bit rates (PK1000 20: the reserved codes run at 125 kbit/s) ------------------------------
-static_assert(bits_per_second(baud_rate::kbit_1000) == 1'000'000);
-static_assert(bits_per_second(baud_rate::kbit_500) == 500'000);
-static_assert(bits_per_second(baud_rate::kbit_250) == 250'000);
-static_assert(bits_per_second(baud_rate::kbit_125) == 125'000);
-static_assert(bits_per_second(baud_rate::kbit_50) == 50'000);
-static_assert(bits_per_second(baud_rate::kbit_20) == 20'000);
-static_assert(bits_per_second(baud_rate::reserved_1) == 125'000);
-static_assert(bits_per_second(baud_rate::reserved_5) == 125'000);
-static_assert(bits_per_second(static_cast<baud_rate>(0xFA)) == 125'000);
-
-// --- name tables --------------------------------------------------------------------------------
-
-// from_string<E>(name) == v, and nullopt for a name the table lacks (errc included).
-template <named_enum E>
-constexpr bool reads_back(std::string_view name, E v) {
-    return from_string<E>(name) == std::optional<E>(v);
+// PK1000 sections 12, 13: on, blink, and both = alternate blink.
+struct mode_row {
+    std::string_view section;
+    std::string_view frame;  // unused
+    bool on, blink;
+    led_mode mode;
+};
+constexpr mode_row mode_rows[] = {
+    {"PK1000 12", "", false, false, led_mode::off},
+    {"PK1000 12", "", true, false, led_mode::on},
+    {"PK1000 13", "", false, true, led_mode::blink},
+    {"PK1000 13", "", true, true, led_mode::alternate_blink},
+};
+constexpr bool mode_holds(const mode_row& r) {
+    leds on, blink;
+    if (r.on) on.of(plane::green).insert(7);
+    if (r.blink) blink.of(plane::green).insert(7);
+    return mode_of(on, blink, plane::green, 7) == r.mode &&
+           mode_of(on, blink, plane::red, 7) == led_mode::off &&
+           mode_of(on, blink, plane::blue, 7) == led_mode::off;
 }
-template <named_enum E>
-constexpr bool refuses(std::string_view name) {
-    return !from_string<E>(name).has_value();
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(mode_rows, mode_holds), std::size(mode_rows)>);
+// PKP 12: "LED #4 blinks red and green in alternate mode" is green on, red and green blinking:
+// green blinks alternately, red blinks, blue is off.
+constexpr leds on4 = leds{}.set(4, colour::green);
+constexpr leds blink4 = leds{}.set(4, colour::amber);
+static_assert(mode_of(on4, blink4, plane::green, 4) == led_mode::alternate_blink);
+static_assert(mode_of(on4, blink4, plane::red, 4) == led_mode::blink);
+static_assert(mode_of(on4, blink4, plane::blue, 4) == led_mode::off);
+
+// --- bit rates -----------------------------------------------------------------------------------
+
+// PK1000 section 20: "01h Reserved (force to 125k)", "05h Reserved (force to 125k)".
+struct rate_row {
+    std::uint8_t code;
+    std::uint32_t bits_per_second;
+};
+constexpr rate_row rate_rows[] = {{0x00, 1'000'000}, {0x01, 125'000}, {0x02, 500'000},
+                                  {0x03, 250'000},   {0x04, 125'000}, {0x05, 125'000},
+                                  {0x06, 50'000},    {0x07, 20'000}};
+constexpr bool rates_hold() {
+    for (const auto& r : rate_rows)
+        if (bits_per_second(static_cast<baud_rate>(r.code)) != r.bits_per_second) return false;
+    // A code outside the table: the keypad's fallback, 125k.
+    return bits_per_second(static_cast<baud_rate>(0x08)) == 125'000 &&
+           bits_per_second(static_cast<baud_rate>(0xFF)) == 125'000;
 }
-static_assert(from_string<errc>("wrong_id") == errc::wrong_id);
+static_assert(rates_hold());
 
-// Every name of the table (aliases too) names one value only; every value reads back from its
-// name; a named value prints a non-empty name.
-template <named_enum E>
-constexpr bool table_holds() {
-    const auto& t = enum_names<E>::entries;
-    for (std::size_t i = 0; i < std::size(t); ++i) {
-        if (t[i].name.empty()) return false;
-        for (std::size_t j = 0; j < i; ++j)
-            if (t[j].name == t[i].name) return false;
-        if (!reads_back<E>(t[i].name, t[i].value)) return false;  // aliases too
-    }
-    for (const E v : enum_values<E>()) {
-        if (!is_named(v)) return false;
-        if (!reads_back<E>(to_string(v), v)) return false;
-    }
-    return refuses<E>("") && refuses<E>("no such name");
-}
+// --- names ---------------------------------------------------------------------------------------
 
-// For the one-byte enums: exactly the values of enum_values are named, all others print "".
-template <named_enum E>
-constexpr bool unnamed_print_empty() {
-    if constexpr (sizeof(E) == 1) {
-        std::size_t named = 0;
-        for (unsigned v = 0; v < 256; ++v) {
-            const auto e = static_cast<E>(v);
-            bool listed = false;
-            for (const E w : enum_values<E>()) listed = listed || w == e;
-            if (listed != is_named(e) || listed != !to_string(e).empty()) return false;
-            named += listed ? 1 : 0;
-        }
-        return named == enum_values<E>().size();
-    } else {
-        return true;
-    }
-}
+// PK1000 sections 15, 19 c/d (2003h sub 3, 4): 01h..09h; the manual's "white/light blue" and
+// "amber/orange" are aliases; 00h only in the backlight PDO, where it keeps the colour (15 note 2).
+constexpr name_row backlight_colour_rows[] = {
+    {"PK1000 15 note 2", 0x00, "keep"},
+    {"PK1000 19 c", 0x01, "red"},
+    {"PK1000 19 c", 0x02, "green"},
+    {"PK1000 19 c", 0x03, "blue"},
+    {"PK1000 19 c", 0x04, "yellow"},
+    {"PK1000 19 c", 0x05, "cyan"},
+    {"PK1000 19 c", 0x06, "violet"},
+    {"PKP 13 c (white)", 0x07, "white"},
+    {"PKP 13 c (amber)", 0x08, "amber"},
+    {"PK1000 19 c (yellow/green)", 0x09, "yellow_green"},
+    {"PK1000 19 c white/light blue", 0x07, "white_light_blue", true},
+    {"PK1000 19 c amber/orange", 0x08, "amber_orange", true},
+};
+static_assert(name_table_is<backlight_colour>(backlight_colour_rows, 0x0A));
 
-// At compile time the table itself; the sweep over every byte value runs at run time
-// (check_names below), which keeps clang's constexpr step limit out of the way for `object`.
-template <named_enum E>
-constexpr bool names_hold() {
-    return table_holds<E>();
-}
+// PK1000 section 20 (2010h): the codes; 01h and 05h are reserved. The "1000k" .. "20k" spellings
+// are the manual's, accepted as aliases.
+constexpr name_row baud_rate_rows[] = {
+    {"PK1000 20", 0x00, "kbit_1000"},   {"PK1000 20", 0x02, "kbit_500"},
+    {"PK1000 20", 0x03, "kbit_250"},    {"PK1000 20", 0x04, "kbit_125"},
+    {"PK1000 20", 0x06, "kbit_50"},     {"PK1000 20", 0x07, "kbit_20"},
+    {"PK1000 20", 0x01, "reserved_1"},  {"PK1000 20", 0x05, "reserved_5"},
+    {"PK1000 20", 0x00, "1000k", true}, {"PK1000 20", 0x02, "500k", true},
+    {"PK1000 20", 0x03, "250k", true},  {"PK1000 20", 0x04, "125k", true},
+    {"PK1000 20", 0x06, "50k", true},   {"PK1000 20", 0x07, "20k", true},
+};
+static_assert(name_table_is<baud_rate>(baud_rate_rows, 0x08));
 
-static_assert(names_hold<errc>());
-static_assert(names_hold<model>());
-static_assert(names_hold<object>());
-static_assert(names_hold<value_kind>());
-static_assert(names_hold<access>());
-static_assert(names_hold<dictionary>());
-static_assert(names_hold<backlight_colour>());
-static_assert(names_hold<baud_rate>());
-static_assert(names_hold<startup_show>());
-static_assert(names_hold<led_state>());
-static_assert(names_hold<plane>());
-static_assert(names_hold<colour>());
-static_assert(names_hold<led_mode>());
-static_assert(names_hold<command_code>());
-static_assert(names_hold<canopen::function>());
-static_assert(names_hold<canopen::nmt_command>());
-static_assert(names_hold<canopen::nmt_state>());
-static_assert(names_hold<canopen::sdo_abort_code>());
-static_assert(names_hold<bus_protocol>());
-static_assert(names_hold<sdo_pairing>());
+// PK1000 section 24 (2014h): 00h disable, 01h complete show, 02h fast flash; the PKP manual's
+// command 50h calls the last "Amber fast flash" (PKP 13 m).
+constexpr name_row startup_show_rows[] = {
+    {"PK1000 24", 0x00, "disabled"},
+    {"PK1000 24", 0x01, "complete"},
+    {"PK1000 24", 0x02, "fast_flash"},
+    {"PKP 13 m", 0x02, "amber_fast_flash", true},
+};
+static_assert(name_table_is<startup_show>(startup_show_rows, 0x03));
 
-// The manuals' other names are aliases: they read, but the one name is what prints.
-static_assert(from_string<backlight_colour>("white_light_blue").value() == backlight_colour::white);
-static_assert(from_string<backlight_colour>("amber_orange").value() == backlight_colour::amber);
-static_assert(to_string(backlight_colour::white) == "white");
-static_assert(to_string(backlight_colour::amber) == "amber");
-static_assert(from_string<baud_rate>("125k").value() == baud_rate::kbit_125);
-static_assert(from_string<baud_rate>("1000k").value() == baud_rate::kbit_1000);
-static_assert(to_string(baud_rate::kbit_125) == "kbit_125");
-static_assert(from_string<startup_show>("amber_fast_flash").value() == startup_show::fast_flash);
-static_assert(to_string(startup_show::fast_flash) == "fast_flash");
-// The aliases add no value: one value per colour of the table.
-static_assert(enum_values<backlight_colour>().size() == 10);
-static_assert(enum_values<baud_rate>().size() == 8);
-static_assert(enum_values<startup_show>().size() == 3);
-static_assert(enum_values<errc>().size() == 16);
-// Unnamed values print "".
-static_assert(to_string(static_cast<errc>(0)).empty());
-static_assert(to_string(static_cast<backlight_colour>(0x0A)).empty());
-static_assert(to_string(static_cast<led_state>(0x0B)).empty());
-static_assert(to_string(static_cast<command_code>(0x05)).empty());
-static_assert(to_string(static_cast<canopen::sdo_abort_code>(0x1234'5678)).empty());
-static_assert(to_string(static_cast<model>(model_count)).empty());
+// PKP section 13 a, byte 6: 00h off, 01h..09h red/green/blue on, blink, alternate blink, 0Ah
+// red/green, 0Ch amber/red, 0Eh green/amber blink (0Bh, 0Dh and 0Fh are not states).
+constexpr name_row led_state_rows[] = {
+    {"PKP 13 a", 0x00, "off"},
+    {"PKP 13 a", 0x01, "red_on"},
+    {"PKP 13 a", 0x02, "red_blink"},
+    {"PKP 13 a", 0x03, "red_alternate_blink"},
+    {"PKP 13 a", 0x04, "green_on"},
+    {"PKP 13 a", 0x05, "green_blink"},
+    {"PKP 13 a", 0x06, "green_alternate_blink"},
+    {"PKP 13 a", 0x07, "blue_on"},
+    {"PKP 13 a", 0x08, "blue_blink"},
+    {"PKP 13 a", 0x09, "blue_alternate_blink"},
+    {"PKP 13 a", 0x0A, "red_green_blink"},
+    {"PKP 13 a", 0x0C, "amber_red_blink"},
+    {"PKP 13 a", 0x0E, "green_amber_blink"},
+};
+static_assert(name_table_is<led_state>(led_state_rows, 0x0B));
+static_assert(!is_named(static_cast<led_state>(0x0D)) && !is_named(static_cast<led_state>(0x0F)));
+
+// The planes of an LED map in the one LED-map rule (models.hpp): red 0, green 1, blue 2.
+constexpr name_row plane_rows[] = {
+    {"PK1000 12", 0, "red"}, {"PK1000 12", 1, "green"}, {"PKP 11", 2, "blue"}};
+static_assert(name_table_is<plane>(plane_rows, 3));
+
+// The colours of one key's LEDs (PKP sections 11, 12).
+constexpr name_row colour_name_rows[] = {
+    {"PKP 11", 0, "off"},   {"PKP 11", 1, "red"},  {"PKP 11", 2, "green"},   {"PKP 11", 3, "blue"},
+    {"PKP 11", 4, "amber"}, {"PKP 11", 5, "cyan"}, {"PKP 11", 6, "magenta"}, {"PKP 11", 7, "white"},
+};
+static_assert(name_table_is<colour>(colour_name_rows, 8));
+
+// PK1000 sections 12, 13; PKP sections 12, 16: on, blink, and on + blink = alternate blink.
+constexpr name_row led_mode_rows[] = {{"PK1000 12", 0, "off"},
+                                      {"PK1000 12", 1, "on"},
+                                      {"PK1000 13", 2, "blink"},
+                                      {"PK1000 13", 3, "alternate_blink"}};
+static_assert(name_table_is<led_mode>(led_mode_rows, 4));
 }  // namespace
+
+TEST_CASE("LED colours and modes") {
+    powerkey_tests::check_rows(colour_rows, colour_holds);
+    powerkey_tests::check_rows(mode_rows, mode_holds);
+    CHECK(every_colour_reads_back());
+}
 
 TEST_CASE("an LED map set with a run-time key number") {
     for (unsigned k = 0; k <= 33; ++k) {
@@ -192,58 +222,18 @@ TEST_CASE("an LED map set with a run-time key number") {
         CHECK(l.blue.empty());
         CHECK(l.colour_of(k) == (k >= 1 && k <= 32 ? colour::green : colour::off));
     }
-    CHECK(every_colour_reads_back());
-    CHECK(mode_of(on_map, blink_map, plane::red, 3) == led_mode::alternate_blink);
 }
 
-template <named_enum E>
-void check_names(std::string_view what) {
-    CAPTURE(what);
-    CHECK(table_holds<E>());
-    CHECK(unnamed_print_empty<E>());
-    for (const E v : enum_values<E>()) {
-        CAPTURE(to_string(v));
-        CHECK(reads_back<E>(to_string(v), v));
-    }
+TEST_CASE("bits per second of every PK1000 baud-rate code, reserved codes forced to 125k") {
+    CHECK(rates_hold());
 }
 
-TEST_CASE("every enum: names unique, each value reads back, unnamed values print \"\"") {
-    check_names<errc>("errc");
-    check_names<model>("model");
-    check_names<object>("object");
-    check_names<value_kind>("value_kind");
-    check_names<access>("access");
-    check_names<dictionary>("dictionary");
-    check_names<backlight_colour>("backlight_colour");
-    check_names<baud_rate>("baud_rate");
-    check_names<startup_show>("startup_show");
-    check_names<led_state>("led_state");
-    check_names<plane>("plane");
-    check_names<colour>("colour");
-    check_names<led_mode>("led_mode");
-    check_names<command_code>("command_code");
-    check_names<canopen::function>("canopen::function");
-    check_names<canopen::nmt_command>("nmt_command");
-    check_names<canopen::nmt_state>("nmt_state");
-    check_names<canopen::sdo_abort_code>("sdo_abort_code");
-    check_names<bus_protocol>("bus_protocol");
-    check_names<sdo_pairing>("sdo_pairing");
-    CHECK(from_string<backlight_colour>("white_light_blue") ==
-          std::optional<backlight_colour>(backlight_colour::white));
-    CHECK(from_string<backlight_colour>("amber_orange") ==
-          std::optional<backlight_colour>(backlight_colour::amber));
-    CHECK(from_string<baud_rate>("125k") == std::optional<baud_rate>(baud_rate::kbit_125));
-    CHECK(from_string<startup_show>("amber_fast_flash") ==
-          std::optional<startup_show>(startup_show::fast_flash));
-}
-
-// Every dictionary a model uses has a name (the tool prints it, and enum_values<dictionary>()
-// must list it for code that walks every dictionary).
-TEST_CASE("every model's dictionary is named") {
-    for (const model m : enum_values<model>()) {
-        CAPTURE(to_string(m));
-        const auto i = info(m);
-        REQUIRE(i.has_value());
-        CHECK(is_named(i->dictionary));
-    }
+TEST_CASE("the name tables of the keypad values, row by row, with their aliases") {
+    CHECK(name_table_is<backlight_colour>(backlight_colour_rows, 0x0A));
+    CHECK(name_table_is<baud_rate>(baud_rate_rows, 0x08));
+    CHECK(name_table_is<startup_show>(startup_show_rows, 0x03));
+    CHECK(name_table_is<led_state>(led_state_rows, 0x0B));
+    CHECK(name_table_is<plane>(plane_rows, 3));
+    CHECK(name_table_is<colour>(colour_name_rows, 8));
+    CHECK(name_table_is<led_mode>(led_mode_rows, 4));
 }

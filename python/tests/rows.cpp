@@ -38,7 +38,6 @@
 
 namespace {
 using namespace powerkey;
-using codec_rows::applies;
 
 void put_fields(tool::json::object_writer& w, std::string& out, const message& m) {
     w.field("kind", kind_of(m));
@@ -158,7 +157,7 @@ template <class Rows, class F>
 void each_row_and_model(const Rows& rows, F f) {
     for (const auto& r : rows)
         for (std::size_t i = 0; i < model_count; ++i)
-            if (applies(r.models, static_cast<model>(i))) f(r, static_cast<model>(i));
+            if (r.models.contains(static_cast<model>(i))) f(r, static_cast<model>(i));
 }
 
 // The encoded frame's data as hex, or the encode error.
