@@ -2,7 +2,8 @@
 """Writes tests/si_rows.hpp from tests/data/si_rows.txt: every example frame of the PKP2600SI and
 PKP3500-MT manuals as rows of the types of tests/codec_rows.hpp; and from
 tests/data/si_models.txt the facts of each SI size (keys, plane stride, 2001h/2002h scheme,
-backlight PDO, reported 100Bh string) that tests/test_keypad_codec_si.cpp checks against the model table.
+backlight PDO, reported 100Bh string) that tests/test_keypad_models.cpp checks against the model
+table.
 
     scripts/si_rows.py            rewrite tests/si_rows.hpp
     scripts/si_rows.py --check    exit 1 when tests/si_rows.hpp is not what this script writes
