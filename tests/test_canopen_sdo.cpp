@@ -93,23 +93,25 @@ constexpr bool response_both_ways(const sdo_response_row& r) {
 }
 static_assert(first_failing(sdo_request_rows, request_both_ways) == std::size(sdo_request_rows));
 static_assert(first_failing(sdo_response_rows, response_both_ways) == std::size(sdo_response_rows));
-// A client abort as a message of its own keeps its direction: 600h + node.
-static_assert(encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
-              can::candump("615#8000200100000405"));
-// And the keypad's abort: 580h + node.
-static_assert(encode(keypad,
-                     sdo_abort_response{{{0x2001, 0}, sdo_abort_code::object_does_not_exist}}) ==
-              can::candump("595#8001200000000206"));
-static_assert(expedited_data::u32(0x000B0191).value() == 0x000B0191);
-
-// One request kind through canopen::encode, the expedited data of 1, 2 and 4 bytes: PK1000 23,
-// node id 3Ah in one byte; 29, 50 ms in two; 28, 100 ms from producer 7Eh in four.
-static_assert(encode(keypad, sdo_download_request{{0x2013, 0}, expedited_data::u8(0x3A)}) ==
-              can::candump("615#2F1320003A000000"));
-static_assert(encode(keypad, sdo_download_request{{0x1017, 0}, expedited_data::u16(50)}) ==
-              can::candump("615#2B17100032000000"));
-static_assert(encode(keypad, sdo_download_request{{0x1016, 1}, expedited_data::u32(0x007E'0064)}) ==
-              can::candump("615#2316100164007E00"));
+// One message kind at a time through canopen::encode. A client abort as a message of its own
+// keeps its direction, 600h + node; the keypad's abort, 580h + node. The expedited data of 1, 2
+// and 4 bytes: PK1000 23, node id 3Ah in one byte; 29, 50 ms in two; 28, 100 ms from producer
+// 7Eh in four.
+constexpr bool encodes_each_kind() {
+    return encode(keypad, sdo_abort_request{{{0x2000, 1}, sdo_abort_code::timed_out}}) ==
+               can::candump("615#8000200100000405") &&
+           encode(keypad,
+                  sdo_abort_response{{{0x2001, 0}, sdo_abort_code::object_does_not_exist}}) ==
+               can::candump("595#8001200000000206") &&
+           expedited_data::u32(0x000B0191).value() == 0x000B0191 &&
+           encode(keypad, sdo_download_request{{0x2013, 0}, expedited_data::u8(0x3A)}) ==
+               can::candump("615#2F1320003A000000") &&
+           encode(keypad, sdo_download_request{{0x1017, 0}, expedited_data::u16(50)}) ==
+               can::candump("615#2B17100032000000") &&
+           encode(keypad, sdo_download_request{{0x1016, 1}, expedited_data::u32(0x007E'0064)}) ==
+               can::candump("615#2316100164007E00");
+}
+static_assert(encodes_each_kind());
 
 // The value of an expedited transfer: its counted bytes, least significant first (CiA 301); the
 // bytes past the size do not count. PK1000 29: 2B 17 10 00 | F4 01 00 00 is 500 ms.
@@ -178,6 +180,7 @@ static_assert(to_string(static_cast<sdo_abort_code>(0x12345678)).empty());
 TEST_CASE("SDO rows both ways") {
     check_rows(sdo_request_rows, request_both_ways);
     check_rows(sdo_response_rows, response_both_ways);
+    CHECK(encodes_each_kind());
 }
 
 TEST_CASE("expedited_data::value counts the sized bytes, least significant first") {
