@@ -77,7 +77,8 @@ constexpr bool kinds_unique() {
     });
     return ok && n > 0;
 }
-static_assert(kinds_unique<message>());
+// At run time only: clang 14 cannot assign a std::variant of libstdc++ 12 to another alternative
+// in a constant expression.
 }  // namespace
 
 TEST_CASE("enumerator names of every message field are unique") {
