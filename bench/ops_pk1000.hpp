@@ -42,7 +42,7 @@ constexpr pc::frame frame_of(const Row& r) {
 template <co::function Fn, class Row>
 constexpr bool in_family(const Row& r) {
     if constexpr (requires { r.models; })
-        if (((r.models >> static_cast<unsigned>(pk1000)) & 1u) == 0) return false;
+        if (!r.models.contains(pk1000)) return false;
     if (node_of(r) != node.value()) return false;
     const auto f = pc::parse_candump(r.frame);
     if (!f || co::classify(*f).fn != Fn) return false;

@@ -89,18 +89,18 @@ int main(int argc, char** argv) {
         std::printf("# from the %s CANopen UM (tests/data/si_rows.txt, tests/si_rows.hpp)\n",
                     m == model::pkp2600si ? "PKP-2600-SI rev 1.5" : "PKP-3500-MT rev 1.3");
         for (const auto& r : si_rows::rows)
-            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
+            if (r.models.contains(m)) w.row(r.section, r.node, r.frame);
     } else if (reference) {
         std::printf(
             "# from docs/si-family.md, \"The other sizes\": the manual pages available and the\n"
             "# inferred layouts, marked so (tests/si_reference_rows.hpp)\n");
         for (const auto& r : si_reference_rows::rows)
-            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
+            if (r.models.contains(m)) w.row(r.section, r.node, r.frame);
     } else {
         std::printf(
             "# from PKP-2200-2400-LI_CANopen_UM_rev1.1 and docs/pkp.md (tests/pkp_rows.hpp)\n");
         for (const auto& r : pkp_rows::rows)
-            if (decoder_rows::applies(r.models, m)) w.row(r.section, r.node, r.frame);
+            if (r.models.contains(m)) w.row(r.section, r.node, r.frame);
     }
     if (w.s.node() != canopen::default_node_id) w.move_to(canopen::default_node_id);
 }

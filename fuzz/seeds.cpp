@@ -3,10 +3,10 @@
 // The seeds are the manual examples (the frames printed in the PK1000 and PKP manuals), in the
 // binary frame form of fuzz.hpp or as candump text, so that every run starts from real traffic;
 // the encoder's seeds are the same frames decoded, written in the form fill_any reads (put_any).
-// The rows are tests/decoder_rows.hpp's types: every table (core, PK1000, PKP, the SI manuals'
+// The rows are tests/codec_rows.hpp's types: every table (core, PK1000, PKP, the SI manuals'
 // rows and the SI reference rows) seeds the decoder for each model of its row, and the
 // encode_error_rows seed the encoder with refused messages.
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "fuzz.hpp"
 #include "j1939_rows.hpp"
 #include "pk1000_rows.hpp"
@@ -148,14 +148,14 @@ int main(int argc, char** argv) {
         log.push_back(0);
         put_frame(log, f);
     };
-    auto for_models = [](std::uint16_t models, auto f) {
+    auto for_models = [](const model_set& models, auto f) {
         for (std::size_t i = 0; i < model_count; ++i)
-            if (decoder_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+            if (models.contains(static_cast<model>(i))) f(static_cast<model>(i));
     };
     auto model_node = [](model m, unsigned node) {
         return std::vector<std::uint8_t>{static_cast<std::uint8_t>(m), node_byte(node)};
     };
-    auto add_frame = [&](std::string_view text, std::uint16_t models, unsigned node) {
+    auto add_frame = [&](std::string_view text, const model_set& models, unsigned node) {
         const auto f = can::parse_candump(text).value();
         w.add_text("candump", text);
         for_models(models, [&](model m) {
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
         });
         return f;
     };
-    auto add_message = [&](std::uint16_t models, unsigned node, const message& msg) {
+    auto add_message = [&](const model_set& models, unsigned node, const message& msg) {
         for_models(models, [&](model m) {
             auto e = model_node(m, node);
             put_any(e, msg);
@@ -178,16 +178,16 @@ int main(int argc, char** argv) {
             const auto f = add_frame(r.frame, r.models, r.node);
             add_message(r.models, r.node, r.expected);
             if (log != nullptr && r.node == 0x15 &&
-                decoder_rows::applies(r.models, static_cast<model>(log->front())))
+                r.models.contains(static_cast<model>(log->front())))
                 log_frame(*log, f);
         }
     };
-    add_table(decoder_rows::core_rows, nullptr);
+    add_table(codec_rows::core_rows, nullptr);
     add_table(pk1000_rows::rows, &pk1000_log);
     add_table(pkp_rows::rows, &pkp_log);
     add_table(si_rows::rows, &mt_log);
     add_table(si_reference_rows::rows, nullptr);
-    for (const auto& r : decoder_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
+    for (const auto& r : codec_rows::core_error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pkp_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : si_rows::error_rows) add_frame(r.frame, r.models, r.node);
@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
     for (const auto& r : si_reference_rows::error_rows) add_frame(r.frame, r.models, r.node);
     for (const auto& r : pk1000_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
     for (const auto& r : pkp_rows::encode_error_rows) add_message(r.models, r.node, r.msg);
-    for (const auto& r : decoder_rows::core_rows)
+    for (const auto& r : codec_rows::core_rows)
         w.add("core_decode", node_and_frame(node_byte(0x15), can::parse_candump(r.frame).value()));
     w.add("session", pk1000_log);
     w.add("session", pkp_log);
@@ -204,9 +204,9 @@ int main(int argc, char** argv) {
     // The J1939 rows: the decoder (model byte, keypad selector, frame) with any keypad and
     // narrowed to the row's, the encoder (model byte, selector, the row's message), both for
     // every model the row applies to; the refusals likewise.
-    auto j1939_models = [](j1939_rows::model_mask models, auto f) {
+    auto j1939_models = [](const model_set& models, auto f) {
         for (std::size_t i = 0; i < j1939::model_row_count; ++i)
-            if (j1939_rows::applies(models, static_cast<model>(i))) f(static_cast<model>(i));
+            if (models.contains(static_cast<model>(i))) f(static_cast<model>(i));
     };
     auto j1939_seed = [](model m, j1939::keypad_address keypad) {
         std::vector<std::uint8_t> v{static_cast<std::uint8_t>(m)};
@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
         }
         return v;
     };
-    auto j1939_frame = [&](std::string_view text, j1939_rows::model_mask models,
+    auto j1939_frame = [&](std::string_view text, const model_set& models,
                            j1939::keypad_address keypad) {
         const auto f = can::parse_candump(text).value();
         w.add_text("candump", text);
@@ -228,7 +228,7 @@ int main(int argc, char** argv) {
             w.add("j1939_decode", d);
         });
     };
-    auto j1939_message = [&](const j1939::message& msg, j1939_rows::model_mask models,
+    auto j1939_message = [&](const j1939::message& msg, const model_set& models,
                              j1939::keypad_address keypad) {
         j1939_models(models, [&](model m) {
             auto e = j1939_seed(m, keypad);

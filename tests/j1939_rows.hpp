@@ -1,7 +1,7 @@
 // The J1939 frames of the keypads, one row each: every example frame of the two complete manuals
 // (PKP1600SI_J1939_UM_rev1.0 "PKP1600SI n", PKP2600SI_J1939_UM_rev1.5 "PKP2600SI n", n the
 // section), the identifier and bytes exactly as printed, the models the row applies to and the
-// decoded meaning; then the frames of the other models that shared/reference/j1939.md describes
+// decoded meaning; then the frames of the other models that docs/j1939.md describes
 // by field ("ref", with the source it names, and "inferred" where the layout is); the decoder's
 // refusals (error_rows) and the encoder's (encode_error_rows). Where a manual prints a placeholder
 // (the revision "V2.XX") the row puts 2Ah in its place, as tests/pk1000_rows.hpp does for the
@@ -41,50 +41,42 @@ using powerkey::startup_show;
 using cc = command_code;
 using lc = led_colour;
 
-// --- models
-// ---------------------------------------------------------------------------------------
+// --- models --------------------------------------------------------------------------------------
 
-using model_mask = std::uint32_t;
-constexpr model_mask bit(model m) noexcept { return model_mask{1} << static_cast<unsigned>(m); }
-inline constexpr model_mask m1000 = bit(model::pk1000), m2200li = bit(model::pkp2200),
-                            m2400li = bit(model::pkp2400), m2600li = bit(model::pkp2600),
-                            m2600si = bit(model::pkp2600si), m3500mt = bit(model::pkp3500mt),
-                            m3500si = bit(model::pkp3500si), m2500si = bit(model::pkp2500si),
-                            m1500li = bit(model::pkp1500li), m2200si = bit(model::pkp2200si),
-                            m2300si = bit(model::pkp2300si), m2400si = bit(model::pkp2400si),
-                            m1600si = bit(model::pkp1600si);
+// The models a row applies to (models.hpp's model_set, sized from the table).
+using powerkey::model_set;
+inline constexpr model_set m1000{model::pk1000}, m2200li{model::pkp2200}, m2400li{model::pkp2400},
+    m2600li{model::pkp2600}, m2600si{model::pkp2600si}, m3500mt{model::pkp3500mt},
+    m3500si{model::pkp3500si}, m2500si{model::pkp2500si}, m1500li{model::pkp1500li},
+    m2200si{model::pkp2200si}, m2300si{model::pkp2300si}, m2400si{model::pkp2400si},
+    m1600si{model::pkp1600si};
 // The two complete manuals; the SI keypads without one; the LI keypads; every model.
-inline constexpr model_mask complete = m1600si | m2600si;
-inline constexpr model_mask si_others =
+inline constexpr model_set complete = m1600si | m2600si;
+inline constexpr model_set si_others =
     m3500mt | m3500si | m2500si | m1500li | m2200si | m2300si | m2400si;
-inline constexpr model_mask li = m2200li | m2400li | m2600li;
-inline constexpr model_mask every = complete | si_others | li | m1000;
+inline constexpr model_set li = m2200li | m2400li | m2600li;
+inline constexpr model_set every = complete | si_others | li | m1000;
 // The SI-form LED command and acknowledgement (every SI model; not the PK1000, not LI).
-inline constexpr model_mask si_leds = complete | si_others;
+inline constexpr model_set si_leds = complete | si_others;
 
-constexpr bool applies(model_mask models, model m) noexcept {
-    return ((models >> static_cast<unsigned>(m)) & 1u) != 0;
-}
-
-// Calls f(m) for every model of the mask; false when the mask names none or f fails once.
+// Calls f(m) for every model of the set; false when the set names none or f fails once.
 template <class F>
-constexpr bool for_models(model_mask models, F f) {
+constexpr bool for_models(const model_set& models, F f) {
     bool any = false;
     for (std::size_t i = 0; i < model_row_count; ++i) {
         const auto m = static_cast<model>(i);
-        if (!applies(models, m)) continue;
+        if (!models.contains(m)) continue;
         any = true;
         if (!f(m)) return false;
     }
     return any;
 }
 
-// --- row types and their checks
-// -------------------------------------------------------------------
+// --- row types and their checks ------------------------------------------------------------------
 
 struct row {
     std::string_view section;
-    model_mask models;
+    model_set models;
     std::string_view frame;
     message expected;
     std::uint8_t keypad = keypad_default_address;  // the keypad's address when the frame is sent
@@ -92,7 +84,7 @@ struct row {
 
 struct error_row {
     std::string_view section;
-    model_mask models;
+    model_set models;
     std::string_view frame;
     errc error;
     keypad_address keypad = std::nullopt;
@@ -100,7 +92,7 @@ struct error_row {
 
 struct encode_error_row {
     std::string_view section;
-    model_mask models;
+    model_set models;
     std::string_view frame;
     message msg;
     errc error;
@@ -140,8 +132,7 @@ constexpr bool encode_refused(const encode_error_row& r) {
     });
 }
 
-// --- builders
-// -------------------------------------------------------------------------------------
+// --- builders ------------------------------------------------------------------------------------
 
 // From keypad 21h to the global address, as every manual example.
 constexpr message contact(std::uint8_t key, bool pressed, std::uint8_t identifier = 0x21) {
@@ -242,8 +233,7 @@ constexpr message colour_cmd(backlight_colour colour) {
 }
 constexpr message to_canopen() { return switch_to_canopen{}; }
 
-// --- the two complete manuals
-// ---------------------------------------------------------------------
+// --- the two complete manuals --------------------------------------------------------------------
 
 inline constexpr row pkp1600si_rows[] = {
     {"PKP1600SI 6", m1600si, "18EFFF21#041B01010121FFFF", contact(1, true)},
@@ -388,8 +378,7 @@ inline constexpr row pkp2600si_rows[] = {
     {"PKP2600SI 27", m2600si, "18EF2100#041B8000FFFFFFFF", to_canopen()},
 };
 
-// --- the other models (shared/reference/j1939.md), and values at the edges
-// -------------------------
+// --- the other models (docs/j1939.md), and values at the edges -----------------------------------
 
 inline constexpr row other_rows[] = {
     // Frames every manual shares, on every model that has them (documented or inferred).
@@ -459,7 +448,7 @@ inline constexpr row other_rows[] = {
     {"ref 8: PKP-2400-LI byte 7 FFh (table)", every, "18EFFF21#041BF9010100FFFF",
      beat(1, {1}, 0xFF)},
     // 1500-LI (5 keys, as the 5-key J1939 manual page 12): key 5 its last.
-    {"ref 8: 5 keys, key 5", every & ~(m2200si | m2200li), "18EFFF21#041BF9001000FF21",
+    {"ref 8: 5 keys, key 5", every - (m2200si | m2200li), "18EFFF21#041BF9001000FF21",
      beat(0, {5})},
     // PKP-2400-SI driven by hobby code (r51-ecu): from its own address 19h to the keypad at 24h,
     // FFh as the unused secondary colour, 7Dh at run time.
@@ -603,7 +592,7 @@ inline constexpr error_row error_rows[] = {
     {"multiple LEDs on the SI keypads without a manual",
      m2300si | m2400si | m2500si | m1500li | m3500mt | m2200li | m2600li,
      "18A72100#1101FFFFFFFFFFFF", errc::undocumented},
-    {"6Eh on the SI keypads without a manual", (si_others & ~m2200si) | m2200li | m2600li,
+    {"6Eh on the SI keypads without a manual", (si_others - m2200si) | m2200li | m2600li,
      "18EF2100#041B6E05FFFFFFFF", errc::undocumented},
     {"PK1000: its LED command is not known", m1000, "18EF2100#041B0102010100FF",
      errc::undocumented},

@@ -1,6 +1,6 @@
 // The PK1000 manual's example frames (PK1000_CANopen_UM_rev1.13), one row each: the section, the
 // model, the keypad's node id, the frame as printed (candump form) and the decoded meaning, in the
-// row types of tests/decoder_rows.hpp. Shared by the doctest suite, the freestanding check, and
+// row types of tests/codec_rows.hpp. Shared by the doctest suite, the freestanding check, and
 // the tools that want sample logs and seed corpora. Rows marked E-PK-n are errata
 // (docs/errata.md): `rows` holds the frames that decode, with the meaning the library gives them;
 // `error_rows` the printed frames the library refuses (each with its corrected frame in `rows`)
@@ -9,17 +9,17 @@
 #ifndef POWERKEY_TESTS_PK1000_ROWS_HPP
 #define POWERKEY_TESTS_PK1000_ROWS_HPP
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 
 #include <cstdint>
 
 namespace pk1000_rows {
 
 using namespace powerkey;
-using namespace decoder_rows;
-using decoder_rows::encode_error_row;
-using decoder_rows::error_row;
-using decoder_rows::row;
+using namespace codec_rows;
+using codec_rows::encode_error_row;
+using codec_rows::error_row;
+using codec_rows::row;
 using o = object;
 
 // A PDO COB-ID read: valid, no RTR (bit 30), the 11-bit id.

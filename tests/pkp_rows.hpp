@@ -1,6 +1,6 @@
 // Every example frame of the PKP manual (PKP-2200-2400-LI_CANopen_UM_rev1.1, "PKP n" = section n)
 // and the PKP-2600 rows of docs/pkp.md ("ref"), with the models each row applies to, the keypad's
-// node id and the decoded meaning, in the row types of tests/decoder_rows.hpp. Shared by the
+// node id and the decoded meaning, in the row types of tests/codec_rows.hpp. Shared by the
 // doctest suite, the freestanding check, and any tool that wants sample logs or fuzz seeds.
 //
 // Where the manual prints XX for the tick timer of the key-state PDO (section 10), the rows put a
@@ -9,7 +9,7 @@
 #ifndef POWERKEY_TESTS_PKP_ROWS_HPP
 #define POWERKEY_TESTS_PKP_ROWS_HPP
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 
 #include <cstdint>
 #include <initializer_list>
@@ -18,10 +18,10 @@
 namespace pkp_rows {
 
 using namespace powerkey;
-using namespace decoder_rows;
-using decoder_rows::encode_error_row;
-using decoder_rows::error_row;
-using decoder_rows::row;
+using namespace codec_rows;
+using codec_rows::encode_error_row;
+using codec_rows::error_row;
+using codec_rows::row;
 using cc = command_code;
 
 // --- builders ---------------------------------------------------------------------------------
@@ -579,7 +579,7 @@ inline constexpr error_row error_rows[] = {
     {"write to read-only 1000h", pkp, 0x15, "615#2300100091010300", errc::unknown_command},
     {"write reply for read-only 1000h", pkp, 0x15, "595#6000100000000000", errc::unknown_command},
     // (an expedited reply of string 1008h, 595#4308100042000000, was refused here before issue 10:
-    // one rule for both dictionaries now accepts it, tests/test_pkp.cpp)
+    // one rule for both dictionaries now accepts it, tests/test_keypad_codec_pkp.cpp)
     {"segmented reply for number 1000h", pkp, 0x15, "595#4100100004000000", errc::unknown_object},
     {"PKP 17 heartbeat 5 ms", pkp, 0x15, "615#2B17100005000000", errc::value_out_of_range},
     {"PKP 17 heartbeat in 4 bytes", pkp, 0x15, "615#2317100064000000", errc::size_mismatch},

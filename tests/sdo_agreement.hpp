@@ -2,7 +2,7 @@
 // (canopen::sdo_request_op / sdo_response_op) on the same frame: the CiA 301 decoders
 // (canopen::decode_sdo_request / decode_sdo_response) and the keypad codec (decode(frame, node,
 // model)) for every model, and the session (which takes what decode returned). Shared by the
-// sweep of tests/test_invariants.cpp (every manual row and thousands of frames around them) and
+// sweep of tests/test_powerkey.cpp (every manual row and thousands of frames around them) and
 // the `decode` fuzz target (every corpus entry).
 #ifndef POWERKEY_TESTS_SDO_AGREEMENT_HPP
 #define POWERKEY_TESTS_SDO_AGREEMENT_HPP

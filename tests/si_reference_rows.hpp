@@ -1,13 +1,14 @@
 // The SI sizes without a complete manual (PKP-3500-SI, 2500-SI, 1500-LI, 2200/2300/2400-SI), in
-// the row types of tests/decoder_rows.hpp: the facts docs/si-family.md ("The other sizes")
+// the row types of tests/codec_rows.hpp: the facts docs/si-family.md ("The other sizes")
 // gives, one row each, and the check frames it proposes for what is inferred. The section names
 // the source: "PKP3500SI manual 12" where a manual page prints it, "inferred: S = 8" where the
 // layout is inferred (docs/si-family.md says why), "check" for a frame a user with the keypad
-// should try. Shared by tests/test_si.cpp and examples/sample_logs.cpp (one log per model).
+// should try. Shared by tests/test_keypad_codec_si.cpp and examples/sample_logs.cpp (one log per
+// model).
 #ifndef POWERKEY_TESTS_SI_REFERENCE_ROWS_HPP
 #define POWERKEY_TESTS_SI_REFERENCE_ROWS_HPP
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "si_rows.hpp"
 
 #include <cstdint>
@@ -15,9 +16,9 @@
 namespace si_reference_rows {
 
 using namespace powerkey;
-using namespace decoder_rows;
-using decoder_rows::error_row;
-using decoder_rows::row;
+using namespace codec_rows;
+using codec_rows::error_row;
+using codec_rows::row;
 using o = object;
 using si_rows::ring;
 

@@ -1,7 +1,8 @@
 // Test support shared by every test file: doctest printers for the library's types, so that a
 // failing CHECK prints an errc by name, a frame in candump form and a message as the description
-// writer does; and the row runner every table uses, so that a failing row names itself both at
-// compile time and at run time.
+// writer does; the row runner every table uses, so that a failing row names itself both at
+// compile time and at run time; the rows of frames one decoder refuses; and the check of an
+// enum's name table against rows from the manuals.
 //
 //   constexpr bool decodes(const row& r) { ... }             // one check, written once
 //   static_assert(all_rows_pass<first_failing(rows, decodes), std::size(rows)>);
@@ -21,6 +22,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -100,6 +103,62 @@ void check_rows(const Row (&rows)[N], Check check) {
 
 constexpr powerkey::can::frame frame_of(std::string_view text) {
     return powerkey::can::parse_candump(text).value();
+}
+
+// --- frames a decoder refuses --------------------------------------------------------------------
+
+// A frame and the error one decoder refuses it with; refused_by(decode) is the row check.
+struct bad_row {
+    std::string_view section;
+    std::string_view frame;
+    powerkey::errc error;
+};
+template <class Decode>
+constexpr auto refused_by(Decode decode) {
+    return [decode](const bad_row& r) { return decode(frame_of(r.frame)) == r.error; };
+}
+
+// --- name tables ---------------------------------------------------------------------------------
+
+// One value of an enum's name table: the byte a manual gives it and the name the library prints;
+// an alias is a second name of the same value, which from_string takes and to_string never prints.
+struct name_row {
+    std::string_view section;  // where the value's byte comes from
+    std::uint8_t byte;         // the value on the wire (or the enumerator's number)
+    std::string_view name;
+    bool alias = false;
+};
+
+// The name table of E is the rows, written in the table's order:
+//   - every row's name reads back to its value (aliases too), and a non-alias row's value prints
+//     as its name and is_named;
+//   - enum_values<E>() lists the non-alias rows' values, in that order, once each;
+//   - `unnamed` (a value with no row) prints "" and is not named; text that names nothing (an
+//     unknown name, the empty string, a name in upper case or with a space) reads back as nullopt.
+template <class E, std::size_t N>
+constexpr bool name_table_is(const name_row (&rows)[N], std::uint8_t unnamed) {
+    using powerkey::enum_values;
+    using powerkey::from_string;
+    using powerkey::is_named;
+    using powerkey::to_string;
+    std::size_t values = 0;
+    for (const auto& r : rows) {
+        const auto v = static_cast<E>(r.byte);
+        if (from_string<E>(r.name) != std::optional<E>(v)) return false;
+        if (r.alias) {
+            if (to_string(v) == r.name) return false;
+            continue;
+        }
+        if (to_string(v) != r.name || !is_named(v)) return false;
+        const auto listed = enum_values<E>();
+        if (values >= listed.size() || listed[values] != v) return false;
+        ++values;
+    }
+    if (enum_values<E>().size() != values) return false;
+    const auto u = static_cast<E>(unnamed);
+    if (!to_string(u).empty() || is_named(u)) return false;
+    return !from_string<E>("no_such_name") && !from_string<E>("") && !from_string<E>("RED") &&
+           !from_string<E>(" red");
 }
 
 }  // namespace powerkey_tests

@@ -1,9 +1,10 @@
-// The controller (behaviour/controller.hpp) in a closed loop with the virtual keypad
+// behaviour/controller.hpp: the controller in a closed loop with the virtual keypad
 // (behaviour/virtual_keypad.hpp), for every model, with the faults of issue 12: the keypad reboots
 // mid-session, goes silent, loses frames, aborts an SDO, changes node id. Every session's bus log
 // is also handed to the checker (behaviour/checker.hpp): a controller session has no problem
-// except those the fault itself causes. Then the controller alone against scripted replies, and
-// the key modes.
+// except those the fault itself causes. Then small queues and outboxes, the controller alone
+// against scripted replies, the key modes (behaviour/key_modes.hpp), and the same session at
+// compile time.
 #include "support.hpp"
 
 #include <powerkey/behaviour/checker.hpp>
@@ -13,8 +14,11 @@
 #include <powerkey/names.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 using namespace powerkey;
@@ -462,6 +466,184 @@ TEST_CASE("controller + virtual keypad: active on startup") {
         const auto problems = without_identify(m, b.check(m));
         CHECK_MESSAGE(problems.empty(), kinds(problems));
     }
+}
+
+// --- small queues and outboxes, configuration entries --------------------------------------------
+
+namespace {
+// A controller and a virtual keypad on one bus, stepped every millisecond; `poll` false leaves
+// the events in the controller's queue.
+template <std::size_t Outbox, std::size_t Events>
+struct loop {
+    explicit loop(controller_config cfg, model m = model::pk1000)
+        : keypad(m), ctl(with_model(cfg, m)) {}
+    static controller_config with_model(controller_config c, model m) {
+        c.keypad_model = m;
+        return c;
+    }
+    void run(std::uint32_t ms, bool poll = true) {
+        for (std::uint32_t i = 0; i < ms; ++i) {
+            const millis t{++now};
+            keypad.advance(t);
+            bool any = false;
+            while (const auto f = keypad.transmit()) {
+                ctl.step(*f, t);
+                any = true;
+            }
+            if (!any) ctl.tick(t);
+            while (const auto f = ctl.next_frame()) keypad.receive(*f, t);
+            while (poll)
+                if (const auto e = ctl.poll())
+                    events.push_back(*e);
+                else
+                    break;
+        }
+    }
+    void drain() {
+        while (const auto e = ctl.poll()) events.push_back(*e);
+    }
+    virtual_keypad<32> keypad;
+    controller<Outbox, Events> ctl;
+    std::uint32_t now = 0;
+    std::vector<controller_event> events;
+};
+}  // namespace
+
+TEST_CASE(
+    "controller + virtual keypad: a full event queue keeps the first events and counts the rest") {
+    loop<16, 64> big({});
+    big.keypad.power_on(millis{0});
+    big.run(300);
+    REQUIRE(big.events.size() > 2);
+    loop<16, 2> small({});
+    small.keypad.power_on(millis{0});
+    small.run(300, false);
+    small.drain();
+    REQUIRE(small.events.size() == 2);
+    CHECK(small.events[0] == big.events[0]);
+    CHECK(small.events[1] == big.events[1]);
+    // ready waits for room (controller.hpp): never polled, the setup does not end, and the
+    // events between the first two and the ready are dropped and counted.
+    const auto ready = std::find_if(big.events.begin(), big.events.end(),
+                                    [](const auto& e) { return e.kind == event_kind::ready; });
+    REQUIRE(ready != big.events.end());
+    REQUIRE(ready - big.events.begin() >= 2);
+    CHECK(small.ctl.state() == controller_state::setting_up);
+    CHECK(small.ctl.events_dropped() == static_cast<std::size_t>(ready - big.events.begin()) - 2);
+    // Polled, it ends: the ready comes at the next call.
+    while (small.ctl.poll()) {
+    }
+    small.ctl.tick(millis{small.now});
+    CHECK(small.ctl.poll()->kind == event_kind::ready);
+    CHECK(small.ctl.state() == controller_state::running);
+}
+
+TEST_CASE("controller + virtual keypad: with a one-frame outbox the setup still completes") {
+    loop<1, 64> one({});
+    one.keypad.power_on(millis{0});
+    one.run(2000);
+    bool ready = false;
+    for (const auto& e : one.events) ready = ready || e.kind == event_kind::ready;
+    CHECK(ready);
+}
+
+TEST_CASE(
+    "controller + virtual keypad: a request that found the outbox full is sent at the next tick") {
+    // PKP-2400: no brightness PDO, so the LED level goes by SDO (6201h sub 1, PKP 30) right
+    // after the NMT start, which fills a one-frame outbox.
+    loop<1, 64> l({}, model::pkp2400);
+    l.ctl.set_brightness(level::make(0x10).value());
+    l.keypad.power_on(millis{0});
+    l.run(2000);
+    CHECK(l.keypad.brightness() == level::make(0x10).value());
+}
+
+TEST_CASE("controller, scripted: replies for another object or out of turn do not end a read") {
+    controller<16, 64> ctl{controller_config{}};
+    std::uint32_t now = 0;
+    auto sent = [&ctl] {
+        std::vector<std::string> out;
+        while (const auto f = ctl.next_frame()) out.emplace_back(can::format_candump(*f).view());
+        return out;
+    };
+    auto events = [&ctl] {
+        std::vector<controller_event> out;
+        while (const auto e = ctl.poll()) out.push_back(*e);
+        return out;
+    };
+    ctl.step(powerkey_tests::frame_of("715#00"), millis{now});
+    // Found: the setup starts by reading the model id, 100Bh (PK1000 35).
+    const auto first = sent();
+    REQUIRE_FALSE(first.empty());
+    CHECK(first.back() == "615#400B100000000000");
+    (void)events();
+    // A late reply to a read of 2011h, an initiate reply for 1008h, and a segment before any
+    // initiate reply: none answers the read of 100Bh.
+    for (const std::string_view stray :
+         {"595#4F11200001000000", "595#410810000B000000", "595#00504B3130303000"}) {
+        CAPTURE(std::string(stray));
+        ctl.step(powerkey_tests::frame_of(stray), millis{++now});
+        CHECK(sent().empty());
+        CHECK(events().empty());
+    }
+    // The reply: 7 bytes, "PK1000" and a NUL (PK1000 35, E-CORE-5), in one segment.
+    ctl.step(powerkey_tests::frame_of("595#410B100007000000"), millis{++now});
+    CHECK(sent() == std::vector<std::string>{"615#6000000000000000"});
+    ctl.step(powerkey_tests::frame_of("595#01504B3130303000"), millis{++now});
+    const auto done = events();
+    REQUIRE_FALSE(done.empty());
+    CHECK(done[0].kind == event_kind::sdo_done);
+    CHECK(done[0].origin == sdo_origin::identify);
+    CHECK(done[0].what == object::model_name);
+}
+
+TEST_CASE("controller + virtual keypad: a configuration entry that is no SDO request is skipped") {
+    // Entry 0 is a PDO (not an SDO request: skipped, no event); entry 1 reads 1000h, which the
+    // PK1000 answers with 000B0191h (PK1000 30).
+    const message configuration[] = {led_on{leds{{1}, {}, {}}}, sdo_read{object::device_type}};
+    controller_config cfg;
+    cfg.configuration = configuration;
+    loop<16, 64> l(cfg);
+    l.keypad.power_on(millis{0});
+    l.run(500);
+    std::vector<controller_event> config;
+    for (const auto& e : l.events)
+        if (e.origin == sdo_origin::configuration &&
+            (e.kind == event_kind::sdo_done || e.kind == event_kind::sdo_refused))
+            config.push_back(e);
+    REQUIRE(config.size() == 1);
+    CHECK(config[0].kind == event_kind::sdo_done);
+    CHECK(config[0].step == 1);
+    CHECK(config[0].what == object::device_type);
+    CHECK(config[0].value == 0x000B'0191u);
+}
+
+// A keypad whose boot-up and first reply are lost, and that misses a request: the controller
+// retries until it is set up.
+TEST_CASE("controller + virtual keypad: the boot-up and a reply lost, then a request") {
+    bench b(model::pkp2400);
+    b.keypad.power_on(b.at());
+    b.keypad.drop_transmitted(2);  // the boot-up and a reply
+    b.run(45);
+    b.keypad.drop_received(1);
+    b.run(3955);
+    CHECK(b.count(event_kind::ready) == 1);
+    CHECK(b.count(event_kind::sdo_timed_out) == 0);
+}
+
+// A configuration read of 1001h: the keypad aborts it (PK1000 31), object does not exist.
+TEST_CASE("controller + virtual keypad: the abort of 1001h is reported with its code") {
+    const message config[] = {sdo_read{object::error_register}};
+    controller_config cfg;
+    cfg.configuration = config;
+    bench b(model::pk1000, cfg);
+    b.keypad.power_on(b.at());
+    b.run(3000);
+    REQUIRE(b.count(event_kind::sdo_aborted) == 1);
+    const auto e = *std::find_if(b.events.begin(), b.events.end(),
+                                 [](const auto& x) { return x.kind == event_kind::sdo_aborted; });
+    CHECK(e.value == 0x0602'0000);
+    CHECK(b.count(event_kind::ready) == 1);
 }
 
 // --- the controller alone, against scripted keypad replies --------------------------------------

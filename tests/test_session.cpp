@@ -1,9 +1,12 @@
-// The session follower: SDO pairing, segmented strings, node-id changes, protocol switches.
+// session.hpp: the session follower: SDO pairing, segmented strings, the host's abort, node-id
+// changes, protocol switches; and the names of the protocols and the pairing states.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/names.hpp>
 #include <powerkey/session.hpp>
+
+#include "support.hpp"
 
 #include <iterator>
 #include <string_view>
@@ -97,6 +100,18 @@ constexpr bool reads_device_name() {
     return done == 1 && s.text() == "BlinkMarine" && !s.upload().notes().any();
 }
 static_assert(reads_device_name());
+
+// The protocols a keypad speaks (PK1000 49) and how a frame pairs with the SDO traffic.
+constexpr powerkey_tests::name_row bus_protocol_rows[] = {{"PK1000 49", 0, "canopen"},
+                                                          {"PK1000 49", 1, "j1939"}};
+static_assert(powerkey_tests::name_table_is<bus_protocol>(bus_protocol_rows, 2));
+constexpr powerkey_tests::name_row sdo_pairing_rows[] = {
+    {"session.hpp", 0, "none"},
+    {"session.hpp", 1, "request"},
+    {"session.hpp", 2, "reply"},
+    {"session.hpp", 3, "unanswered"},
+};
+static_assert(powerkey_tests::name_table_is<sdo_pairing>(sdo_pairing_rows, 4));
 
 // PKP section 31: the serial number. Erratum E-PKP (request printed 41h): the request does not
 // decode, so the session does not start a transfer and the replies answer nothing.
@@ -237,4 +252,22 @@ TEST_CASE("a string of up to four bytes in one reply ends the upload too") {
     REQUIRE(reply.decoded.has_value());
     CHECK(*reply.decoded == message{sdo_read_reply{object::hardware_version,
                                                    string_value(4, {0x56, 0x5F, 0x30, 0x33})}});
+}
+
+TEST_CASE("the host aborts an upload; a late reply then answers nothing") {
+    session<> s(model::pk1000, canopen::node_id::make(0x15).value());
+    CHECK(s.step(powerkey_tests::frame_of("615#4008100000000000")).sdo == sdo_pairing::request);
+    // CiA 301 7.2.4.3.17: the client's abort (here "timed out", 05040000h) ends the transfer.
+    const auto abort = s.step(powerkey_tests::frame_of("615#8008100000000405"));
+    CHECK(abort.sdo == sdo_pairing::request);
+    CHECK(abort.decoded == result<message>(canopen::sdo_abort_request{
+                               {{0x1008, 0}, canopen::sdo_abort_code::timed_out}}));
+    const auto late = s.step(powerkey_tests::frame_of("595#410810000B000000"));
+    CHECK(late.sdo == sdo_pairing::unanswered);
+    CHECK_FALSE(late.upload_done);
+}
+
+TEST_CASE("the names of the protocols and of the pairing states") {
+    CHECK(powerkey_tests::name_table_is<bus_protocol>(bus_protocol_rows, 2));
+    CHECK(powerkey_tests::name_table_is<sdo_pairing>(sdo_pairing_rows, 4));
 }

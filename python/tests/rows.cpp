@@ -1,5 +1,5 @@
 // The C++ reference for python/tests/test_rows.py: every manual row of the test tables
-// (tests/decoder_rows.hpp and the tables of both manuals and the SI family), for every model the
+// (tests/codec_rows.hpp and the tables of both manuals and the SI family), for every model the
 // row names, as one JSON line each, written with the powerkey tool's own JSON writer
 // (tools/powerkey/json_writer.hpp, field_value.hpp), so the fields are exactly the tool's:
 //
@@ -25,7 +25,7 @@
 
 // The tables first: the tool's headers bring <unistd.h>, whose ::sync() would make the tables'
 // sync() ambiguous.
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "si_reference_rows.hpp"
@@ -38,7 +38,6 @@
 
 namespace {
 using namespace powerkey;
-using decoder_rows::applies;
 
 void put_fields(tool::json::object_writer& w, std::string& out, const message& m) {
     w.field("kind", kind_of(m));
@@ -158,7 +157,7 @@ template <class Rows, class F>
 void each_row_and_model(const Rows& rows, F f) {
     for (const auto& r : rows)
         for (std::size_t i = 0; i < model_count; ++i)
-            if (applies(r.models, static_cast<model>(i))) f(r, static_cast<model>(i));
+            if (r.models.contains(static_cast<model>(i))) f(r, static_cast<model>(i));
 }
 
 // The encoded frame's data as hex, or the encode error.
@@ -239,8 +238,8 @@ void encode_error_rows(std::string_view table, const Rows& rows) {
 }  // namespace
 
 int main() {
-    frame_rows("core_rows", decoder_rows::core_rows);
-    frame_rows("core_error_rows", decoder_rows::core_error_rows);
+    frame_rows("core_rows", codec_rows::core_rows);
+    frame_rows("core_error_rows", codec_rows::core_error_rows);
     frame_rows("pk1000_rows", pk1000_rows::rows);
     frame_rows("pk1000_error_rows", pk1000_rows::error_rows);
     encode_error_rows("pk1000_encode_error_rows", pk1000_rows::encode_error_rows);

@@ -6,7 +6,7 @@
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/session.hpp>
 
-#include "../decoder_rows.hpp"
+#include "../codec_rows.hpp"
 #include "check.hpp"
 
 #include <array>
@@ -18,13 +18,13 @@ bool decoder() {
     bool ok = true;
     auto expect = [&ok](bool b) { ok = ok && b; };
     std::array<char, 160> buf{};
-    for (const auto& r : decoder_rows::core_rows) {
-        expect(decoder_rows::round_trips(r));
-        const auto node = decoder_rows::node_of(r.node);
+    for (const auto& r : codec_rows::core_rows) {
+        expect(codec_rows::round_trips(r));
+        const auto node = codec_rows::node_of(r.node);
         expect(describe(r.expected, node, buf).has_value());
     }
-    for (const auto& r : decoder_rows::core_error_rows) expect(decoder_rows::refused(r));
-    for (const auto& r : decoder_rows::foreign_rows) {
+    for (const auto& r : codec_rows::core_error_rows) expect(codec_rows::refused(r));
+    for (const auto& r : codec_rows::foreign_rows) {
         const auto f = can::parse_candump(r.frame).value();
         expect(canopen::classify(f) == r.cls);
         for (const model m : enum_values<model>())

@@ -1,7 +1,7 @@
-// The invariant sweep of tests/test_invariants.hpp with operator new trapping: every decoder of
+// The invariant sweep of tests/invariants.hpp with operator new trapping: every decoder of
 // the library, on every frame of the sweep (refusals included, which the manual rows alone do not
 // reach), allocates nothing, refuses only with listed codes and keeps the fixed point.
-#include "../test_invariants.hpp"
+#include "../invariants.hpp"
 #include "check.hpp"
 
 namespace {

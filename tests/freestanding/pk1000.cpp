@@ -15,11 +15,11 @@ bool pk1000_rows_both_ways() {
     bool ok = true;
     std::array<char, 160> buf{};
     for (const auto& r : pk1000_rows::rows) {
-        ok = ok && decoder_rows::round_trips(r);
-        ok = ok && describe(r.expected, decoder_rows::node_of(r.node), buf).has_value();
+        ok = ok && codec_rows::round_trips(r);
+        ok = ok && describe(r.expected, codec_rows::node_of(r.node), buf).has_value();
     }
-    for (const auto& r : pk1000_rows::error_rows) ok = ok && decoder_rows::refused(r);
-    for (const auto& r : pk1000_rows::encode_error_rows) ok = ok && decoder_rows::encode_refused(r);
+    for (const auto& r : pk1000_rows::error_rows) ok = ok && codec_rows::refused(r);
+    for (const auto& r : pk1000_rows::encode_error_rows) ok = ok && codec_rows::encode_refused(r);
     return ok;
 }
 const freestanding::registration reg("pk1000", pk1000_rows_both_ways);

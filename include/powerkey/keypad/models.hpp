@@ -219,7 +219,7 @@ constexpr keypad_string si_model_name(std::string_view bytes, std::string_view s
 
 // A program may append keypads of its own, rows of the same form, by defining
 // POWERKEY_EXTRA_MODELS(X) before it includes any powerkey header (in every translation unit
-// alike: the tables are inline variables). tests/test_extra_model.cpp adds one this way.
+// alike: the tables are inline variables). tests/extra_model.cpp adds one this way.
 #ifndef POWERKEY_EXTRA_MODELS
 #define POWERKEY_EXTRA_MODELS(X)
 #endif

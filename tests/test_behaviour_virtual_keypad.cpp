@@ -1,5 +1,6 @@
-// The virtual keypad (include/powerkey/behaviour/virtual_keypad.hpp): the manuals' transcripts
-// replayed against it, model by model, and one test per behaviour.
+// behaviour/virtual_keypad.hpp: the virtual keypad. The manuals' transcripts replayed against it,
+// model by model; one test per behaviour; every model answering every readable object. Its runs
+// against the controller are in test_controller.cpp.
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"
@@ -39,8 +40,7 @@ using powerkey_tests::frame_of;
 
 namespace {
 
-// --- the transcript runner
-// ------------------------------------------------------------------------
+// --- the transcript runner -----------------------------------------------------------------------
 
 // Whether the keypad sends a frame (heartbeat, TPDO, SDO reply) rather than hears it.
 bool from_keypad(const can::frame& f) {
@@ -108,21 +108,21 @@ enum class because : std::uint8_t {
 // A printed row the keypad does not reproduce, and why. `frame` is the printed reply, or
 // "+" and a frame the keypad sends where the manual prints no reply.
 struct expected_difference {
-    std::uint16_t models;
+    model_set models;
     std::string_view section;  // the row's full section text
     std::string_view frame;
     because why;
     std::string_view note;
 };
 
-using decoder_rows::m1000;
-using decoder_rows::m2200;
-using decoder_rows::m2400;
-using decoder_rows::m2600;
-constexpr std::uint16_t pkp_all = decoder_rows::pkp;
-constexpr std::uint16_t not2200 = m2400 | m2600;
-constexpr std::uint16_t si2600 = 1u << static_cast<unsigned>(model::pkp2600si);
-constexpr std::uint16_t mt3500 = 1u << static_cast<unsigned>(model::pkp3500mt);
+using codec_rows::m1000;
+using codec_rows::m2200;
+using codec_rows::m2400;
+using codec_rows::m2600;
+constexpr model_set pkp_all = codec_rows::pkp;
+constexpr model_set not2200 = m2400 | m2600;
+constexpr model_set si2600 = codec_rows::m2600si;
+constexpr model_set mt3500 = codec_rows::m3500mt;
 
 constexpr expected_difference differences[] = {
     // --- PK1000 ---
@@ -245,9 +245,8 @@ constexpr expected_difference differences[] = {
 std::optional<expected_difference> difference_of(model m, std::string_view section,
                                                  std::string_view frame) {
     for (const auto& d : differences)
-        if (decoder_rows::applies(d.models, m) &&
-            (d.frame == "*" ? d.section == section_of(section)
-                            : d.section == section && d.frame == frame))
+        if (d.models.contains(m) && (d.frame == "*" ? d.section == section_of(section)
+                                                    : d.section == section && d.frame == frame))
             return d;
     return std::nullopt;
 }
@@ -277,7 +276,7 @@ transcript_result run_transcript(const Row (&rows)[N], model m) {
         while (end < N && section_of(rows[end].section) == sec) ++end;
         std::vector<const Row*> rs;
         for (std::size_t j = i; j < end; ++j)
-            if (decoder_rows::applies(rows[j].models, m)) rs.push_back(&rows[j]);
+            if (rows[j].models.contains(m)) rs.push_back(&rows[j]);
         i = end;
         if (rs.empty()) continue;
 
@@ -441,8 +440,7 @@ TEST_CASE("It answers like the manuals") {
 #endif
 }
 
-// --- one test per behaviour
-// ------------------------------------------------------------------------
+// --- one test per behaviour ----------------------------------------------------------------------
 
 using strings = std::vector<std::string>;
 
@@ -796,7 +794,6 @@ TEST_CASE("segmented uploads of the strings, per model") {
     CHECK(read_string(model::pkp2200, "615#400B100000000000") ==
           strings{"595#410B100007000000", "595#00504B5532323030", "595#1D00000000000000",
                   "595#8000000001000405", "595#8000000001000405"});
-    CHECK(info(model::pk1000)->string_of(object::software_version)->bytes == "V2.8");
 }
 
 TEST_CASE("every model: boots, starts, sends keys, takes LEDs, answers every readable object") {
@@ -888,123 +885,6 @@ TEST_CASE("every model: writing back what a read gives is acknowledged") {
     }
 }
 
-// --- the virtual keypad against the controller (include/powerkey/behaviour/controller.hpp) -----
-
-namespace {
-struct loop_counts {
-    int ready = 0, pressed = 0, released = 0, rebooted = 0, lost = 0, aborted = 0, timed_out = 0;
-    int node_changed = 0;
-    std::uint32_t abort_code = 0;
-};
-
-// Controller and keypad on one bus for `ms` milliseconds, `script(t, keypad, controller)` first
-// in each millisecond.
-template <class Script>
-loop_counts closed_loop(model m, std::uint32_t ms, Script script,
-                        std::span<const message> configuration = {}) {
-    behaviour::controller_config cfg;
-    cfg.keypad_model = m;
-    cfg.configuration = configuration;
-    behaviour::controller<> c(cfg);
-    virtual_keypad<> k(m);
-    loop_counts n;
-    for (std::uint32_t t = 0; t < ms; ++t) {
-        const millis now{t};
-        script(t, k, c);
-        k.advance(now);
-        c.tick(now);
-        while (const auto f = k.transmit()) c.step(*f, now);
-        while (const auto f = c.next_frame()) k.receive(*f, now);
-        while (const auto e = c.poll()) {
-            using ek = behaviour::event_kind;
-            n.ready += e->kind == ek::ready;
-            n.pressed += e->kind == ek::key_pressed;
-            n.released += e->kind == ek::key_released;
-            n.rebooted += e->kind == ek::rebooted;
-            n.lost += e->kind == ek::lost;
-            n.timed_out += e->kind == ek::sdo_timed_out;
-            n.node_changed += e->kind == ek::node_changed;
-            if (e->kind == ek::sdo_aborted) {
-                ++n.aborted;
-                n.abort_code = e->value;
-            }
-        }
-    }
-    return n;
-}
-}  // namespace
-
-TEST_CASE("closed loop: the controller finds, sets up and drives the virtual keypad, every model") {
-    for (const auto m : enum_values<model>()) {
-        CAPTURE(m);
-        const auto mi = info(m).value();
-        const unsigned led = static_cast<unsigned>(std::countr_zero(mi.led_mask)) + 1;
-        bool lit_before_reboot = false, lit_after_reboot = false;
-        const auto n = closed_loop(m, 8000, [&](std::uint32_t t, auto& k, auto& c) {
-            const millis now{t};
-            if (t == 5) k.power_on(now);
-            if (t == 2000) k.press(1, now);
-            if (t == 2100) k.release(1, now);
-            if (t == 2500) c.set_led(led, colour::green);
-            if (t == 3900) lit_before_reboot = k.led_on().green.contains(led);
-            if (t == 4000) k.power_cycle(now);  // the keypad reboots mid-session
-            if (t == 7999) lit_after_reboot = k.led_on().green.contains(led);
-        });
-        CHECK(n.ready == 2);
-        CHECK(n.rebooted == 1);
-        CHECK(n.pressed == 1);
-        CHECK(n.released == 1);
-        CHECK(n.lost == 0);
-        CHECK(n.timed_out == 0);
-        CHECK(lit_before_reboot);
-        CHECK(lit_after_reboot);  // the controller sent its shadow again
-    }
-}
-
-TEST_CASE("closed loop with faults: silence, lost frames, an abort, a node change") {
-    // silent for 2 s: the controller reports the keypad lost, then finds it again
-    auto n = closed_loop(model::pk1000, 6000, [](std::uint32_t t, auto& k, auto&) {
-        if (t == 5) k.power_on(millis{t});
-        if (t == 2000) k.silence(millis{t}, duration_ms{2000});
-    });
-    CHECK(n.lost == 1);
-    CHECK(n.timed_out == 0);
-    // lost frames during the setup: the controller retries
-    n = closed_loop(model::pkp2400, 4000, [](std::uint32_t t, auto& k, auto&) {
-        if (t == 5) {
-            k.power_on(millis{t});
-            k.drop_transmitted(2);  // the boot-up and a reply
-        }
-        if (t == 50) k.drop_received(1);
-    });
-    CHECK(n.ready == 1);
-    CHECK(n.timed_out == 0);
-    // a configuration read of 1001h: the keypad aborts (PK1000 31), the controller reports it
-    static constexpr message config[] = {sdo_read{object::error_register}};
-    n = closed_loop(
-        model::pk1000, 3000,
-        [](std::uint32_t t, auto& k, auto&) {
-            if (t == 5) k.power_on(millis{t});
-        },
-        config);
-    CHECK(n.aborted == 1);
-    CHECK(n.abort_code == 0x0602'0000);  // object does not exist
-    CHECK(n.ready == 1);
-    // a node change asked of the controller: both ways of answering
-    for (const auto m : {model::pk1000, model::pkp2200}) {
-        CAPTURE(m);
-        canopen::node_id node_after = canopen::default_node_id;
-        n = closed_loop(m, 4000, [&](std::uint32_t t, auto& k, auto& c) {
-            if (t == 5) k.power_on(millis{t});
-            if (t == 2000) c.change_node(canopen::node_id{0x30});
-            if (t == 3999) node_after = k.node();
-        });
-        CHECK(n.node_changed == 1);
-        CHECK(node_after == canopen::node_id::make(0x30).value());
-        CHECK(n.timed_out == 0);
-    }
-}
-
 namespace {
 // One session in a constant expression: boot, start, a key, an SDO read.
 constexpr bool scenario() {
@@ -1023,13 +903,73 @@ static_assert(scenario());
 
 TEST_CASE("a whole session is a constant expression") { CHECK(scenario()); }
 
+namespace {
+// The frames a powered keypad sends within 50 ms of receiving `in`.
+template <std::size_t N>
+std::vector<std::string> answer(virtual_keypad<N>& k, std::string_view in, std::uint32_t& now) {
+    k.receive(frame_of(in), millis{now});
+    now += 50;
+    k.advance(millis{now});
+    std::vector<std::string> out;
+    while (const auto f = k.transmit()) out.emplace_back(can::format_candump(*f).view());
+    return out;
+}
+}  // namespace
+
+TEST_CASE("SDO command specifiers it does not serve, and the host's abort") {
+    virtual_keypad<> k(model::pk1000);
+    std::uint32_t now = 0;
+    k.power_on(millis{now});
+    while (k.transmit()) {
+    }
+    using v = std::vector<std::string>;
+    // ccs 5 (block upload, CiA 301 7.2.4.3.13): abort 05040001h, command specifier not valid.
+    CHECK(answer(k, "615#A008100000000000", now) == v{"595#8008100001000405"});
+    // A segmented download (21h) to the writable 2013h: abort 06010000h, unsupported access
+    // (every object of the keypads fits an expedited transfer).
+    CHECK(answer(k, "615#2113200004000000", now) == v{"595#8013200000000106"});
+    // The device name (PK1000 32): 41h, 11 bytes; the host aborts: nothing answers the abort,
+    // and the next segment request finds no transfer.
+    CHECK(answer(k, "615#4008100000000000", now) == v{"595#410810000B000000"});
+    CHECK(answer(k, "615#8008100000000405", now).empty());
+}
+
+TEST_CASE("the red/green blink of command 01h (PKP 13 a 0Ah, PKP 12)") {
+    virtual_keypad<> k(model::pkp2400);
+    std::uint32_t now = 0;
+    k.power_on(millis{now});
+    while (k.transmit()) {
+    }
+    // PKP 12: "Only LED #4 blinks red and green in alternate mode" is green on, red and green
+    // blinking; command 01h state 0Ah sets LED 8 the same way.
+    CHECK(answer(k, "615#2300650101080A00", now) ==
+          std::vector<std::string>{"595#6000650100000000"});
+    CHECK(k.led_on() == leds{{}, {8}, {}});
+    CHECK(k.led_blink() == leds{{8}, {8}, {}});
+}
+
+// PKP2600SI manual 15: the backlight PDO's colour 00h is "default" (the colour of 2003h sub 04h),
+// not the PK1000's and PKP-3500-MT's "keep the stored colour"
+// (model_info::backlight_zero_is_default).
+TEST_CASE("PKP-2600-SI: backlight PDO colour 00h is the default colour") {
+    virtual_keypad<> k(model::pkp2600si);
+    k.power_on(millis{0});
+    k.receive(frame_of("000#0115"), millis{1});
+    k.receive(frame_of("515#2001000000000000"), millis{2});  // 50 %, red
+    CHECK(k.backlight().colour == backlight_colour::red);
+    k.receive(frame_of("515#2000000000000000"), millis{3});  // 50 %, 00h: default
+    CHECK(k.backlight().colour == backlight_colour::amber);  // 2003h sub 04h, factory 08h
+}
+
+namespace {
+constexpr powerkey_tests::name_row run_state_rows[] = {{"", 0, "off"},
+                                                       {"", 1, "pre_operational"},
+                                                       {"", 2, "operational"},
+                                                       {"", 3, "stopped"},
+                                                       {"", 4, "j1939"}};
+static_assert(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
+}  // namespace
+
 TEST_CASE("the keypad's run states have one name each") {
-    CHECK(to_string(run_state::off) == "off");
-    CHECK(to_string(run_state::pre_operational) == "pre_operational");
-    CHECK(to_string(run_state::operational) == "operational");
-    CHECK(to_string(run_state::stopped) == "stopped");
-    CHECK(to_string(run_state::j1939) == "j1939");
-    CHECK(enum_values<run_state>().size() == 5);
-    for (const auto s : enum_values<run_state>()) CHECK(from_string<run_state>(to_string(s)) == s);
-    CHECK(!from_string<run_state>("running").has_value());
+    CHECK(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
 }

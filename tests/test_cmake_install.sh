@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cmake --install installs what was built, nothing more, and never fails for what was not built
 # (registered by tests/CMakeLists.txt as install_what_was_built):
-#   test_install.sh SOURCE_DIR WORK_DIR CXX
+#   test_cmake_install.sh SOURCE_DIR WORK_DIR CXX
 # A fresh configuration of the library alone (tests and examples off; the tool, the Wireshark
 # plugin and the Python module on, as they are by default where their dependencies are found)
 # is installed without building anything: the headers and the CMake package files, and no error

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Live use (registered by tools/powerkey/CMakeLists.txt as cli_live): frames that arrive on a pipe
 # seconds apart are each written as soon as they are decoded, in text, JSON and --show, not when
-# the input ends.  test_cli_live.sh POWERKEY_BINARY
+# the input ends.  test_tool_live.sh POWERKEY_BINARY
 set -uo pipefail
 pk=$1
 tmp=$(mktemp -d)

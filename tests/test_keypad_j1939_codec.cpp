@@ -1,4 +1,4 @@
-// The J1939 codec (keypad/j1939_codec.hpp) against the two complete J1939 manuals and the other
+// keypad/j1939_codec.hpp: the J1939 codec against the two complete J1939 manuals and the other
 // models' frames (tests/j1939_rows.hpp): every row both ways, with any keypad and narrowed to one;
 // the decoder's and the encoder's refusals; the errata; TABLE 3; the encoder over raw field values.
 #include <doctest/doctest.h>
@@ -15,7 +15,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,7 +42,7 @@ static_assert(powerkey_tests::all_rows_pass<first_failing(encode_error_rows, enc
 // The errata of the J1939 manuals (docs/errata.md, ## J1939) and the behaviour chosen.
 struct erratum_row {
     std::string_view section;
-    model_mask models;
+    model_set models;
     std::string_view frame;
     j1939_rows::message expected;  // what the frame decodes to
 };
@@ -162,31 +161,6 @@ TEST_CASE("j1939: errata decisions (docs/errata.md, ## J1939) and TABLE 3") {
           errc::wrong_length);
 }
 
-TEST_CASE("j1939: the model table") {
-    for (std::size_t i = 0; i < model_row_count; ++i) {
-        const auto m = static_cast<model>(i);
-        CAPTURE(i);
-        const auto r = powerkey::j1939::row(m);
-        REQUIRE(r.has_value());
-        CHECK(r->id == m);
-        // A keypad's CANopen row, where there is one, has as many keys.
-        if (const auto canopen = powerkey::info(m)) CHECK(canopen->keys == r->keys);
-    }
-    CHECK(powerkey::j1939::row(static_cast<model>(model_row_count)) == errc::value_out_of_range);
-    CHECK(decode(frame_of("18EFFF21#041B01010121FFFF"), static_cast<model>(model_row_count)) ==
-          errc::value_out_of_range);
-    CHECK(encode(static_cast<model>(0xFF), contact(1, true)) == errc::value_out_of_range);
-    // The two complete manuals document every frame.
-    for (const auto m : {model::pkp1600si, model::pkp2600si})
-        for (std::size_t f = 0; f < feature_count; ++f)
-            CHECK(powerkey::j1939::row(m)->frames.of(static_cast<feature>(f)) ==
-                  coverage::documented);
-    // Every feature and coverage has a name.
-    for (std::size_t f = 0; f < feature_count; ++f)
-        CHECK(powerkey::is_named(static_cast<feature>(f)));
-    CHECK(powerkey::enum_values<coverage>().size() == 4);
-}
-
 TEST_CASE("j1939: direction of 01h and 2Ah, and narrowing to one keypad") {
     // Narrowed to 21h, a key contact state sent to 05h (6Eh) round-trips whatever its bytes.
     const key_contact to_05{6, 0x05, 0x21, 1, true, 0x02};
@@ -297,37 +271,4 @@ TEST_CASE("j1939: a message describes itself through its fields") {
           "node 15h  J1939 multiple leds  priority: 6  destination: 21h  source: 00h  frame: 02h  "
           "red: -  green: -  blue: -  yellow: -  cyan: 4  violet: -  white: -  amber: -  "
           "yellow_green: -  blink: 3 5 6");
-}
-
-TEST_CASE("j1939: docs/j1939.md's coverage table is the model table") {
-    std::ifstream doc(POWERKEY_SOURCE_DIR "/docs/j1939.md");
-    REQUIRE(doc.good());
-    std::string line;
-    while (std::getline(doc, line) && line.find("<!-- coverage table") == std::string::npos) {
-    }
-    REQUIRE(std::getline(doc, line));  // the header: the models in enum order
-    for (std::size_t i = 0; i < model_row_count; ++i) {
-        const auto m = static_cast<model>(i);
-        const std::string name(powerkey::to_string(m));
-        CHECK(line.find(" " + name + " ") != std::string::npos);
-    }
-    REQUIRE(std::getline(doc, line));  // |---|
-    std::size_t rows = 0;
-    while (std::getline(doc, line) && line.starts_with("| ")) {
-        CAPTURE(line);
-        const auto end = line.find(" |", 2);
-        const auto f = powerkey::from_string<feature>(line.substr(2, end - 2));
-        REQUIRE(f.has_value());
-        CHECK(static_cast<std::size_t>(*f) == rows);  // in enum order, each once
-        std::size_t at = end + 2;
-        for (std::size_t i = 0; i < model_row_count; ++i) {
-            const auto cell = line.find_first_not_of(' ', at);
-            REQUIRE(cell != std::string::npos);
-            const coverage c = powerkey::j1939::row(static_cast<model>(i))->frames.of(*f);
-            CHECK(line[cell] == "AUID"[static_cast<std::size_t>(c)]);
-            at = line.find('|', cell) + 1;
-        }
-        ++rows;
-    }
-    CHECK(rows == feature_count);
 }

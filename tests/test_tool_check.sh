@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Tests of `powerkey check` (tools/powerkey/cmd_check.cpp), registered by tools/powerkey/CMakeLists.txt:
-#   test_check.sh POWERKEY_BINARY SOURCE_DIR
+#   test_tool_check.sh POWERKEY_BINARY SOURCE_DIR
 # The shipped clean session passes; the same session with planted problems gives exactly the
 # lines below, each right after its `# planted: KIND` comment; --json, several files, bad lines
 # and usage behave as documented (docs/controller.md). A controller's log merged with the virtual

@@ -1,9 +1,11 @@
-// The five object dictionaries through their public lookups only (rows_of, find_row by address
-// and by object, kind_of, in_range, readable, writable), so that the rows' storage may change
-// underneath: rows pinned from the manuals in every dictionary, what each dictionary lacks, and
-// every row found both ways.
+// keypad/dictionaries.hpp: the five object dictionaries as the manuals give them, read through
+// their public lookups only (rows_of, find_row), so that the rows' storage may change underneath:
+// rows pinned from the manuals in every dictionary, what each dictionary lacks, access, ranges
+// and the range rules of every dictionary; how the PK1000 and SI dictionaries are joined from
+// their own and shared rows; and every row well formed, of an object with a kind and a name.
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/dictionaries.hpp>
 #include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
@@ -11,6 +13,7 @@
 
 #include "support.hpp"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -37,6 +40,7 @@ struct dict_row {
 constexpr auto ro = access::read_only, rw = access::read_write, wo = access::write_only;
 constexpr auto pk = dictionary::pk1000, li = dictionary::pkp_li, packed = dictionary::si_packed,
                mt = dictionary::si_mt, per = dictionary::si_per_colour;
+constexpr dictionary all_dictionaries[] = {pk, li, packed, mt, per};
 
 // Size: expedited bytes (2Bh = 2, 2Fh = 1, 23h = 4 in the manuals' writes), 0 for strings and for
 // the per-colour planes whose size is the model's stride. Range and default: the manual's.
@@ -45,6 +49,7 @@ constexpr dict_row dict_rows[] = {
     {"PK1000 16", "2000h/1", pk, object::keys, 0x2000, 1, 2, ro, 0, any, any, 0},
     {"PK1000 17", "2001h/1", pk, object::led_on_red, 0x2001, 1, 4, rw, 0, any, any, 0},
     {"PK1000 18", "2002h/2", pk, object::led_blink_green, 0x2002, 2, 4, rw, 0, any, any, 0},
+    {"PK1000 19 a", "2003h/1", pk, object::led_brightness, 0x2003, 1, 1, rw, 0, 0x3F, any, 0x3F},
     {"PK1000 19 c, 3", "2003h/3", pk, object::backlight_colour, 0x2003, 3, 1, rw, 1, 9, any, 0x08},
     {"PK1000 20", "2010h/0", pk, object::baud_rate, 0x2010, 0, 1, rw, 0, 7, any, 0x04},
     {"PK1000 23", "2013h/0", pk, object::node_id, 0x2013, 0, 1, rw, 1, 0x7F, any, 0x15},
@@ -146,29 +151,6 @@ constexpr bool absent(const absent_row& r) {
 static_assert(
     powerkey_tests::all_rows_pass<first_failing(absent_rows, absent), std::size(absent_rows)>);
 
-// Every row of every dictionary is found by its address and by its object, and is that row.
-constexpr bool every_row_found(dictionary d) {
-    const auto rows = rows_of(d);
-    if (rows.empty()) return false;
-    for (const auto& r : rows) {
-        const auto a = find_row(d, r.address);
-        const auto o = find_row(d, r.id);
-        if (!a || !o) return false;
-        const dict_row e{"",     "",       d,     r.id,  r.address.index, r.address.subindex,
-                         r.size, r.access, r.min, r.max, r.also,          r.initial};
-        if (!row_is(*a, e) || !row_is(*o, e)) return false;
-        if (info(r.id).id != r.id) return false;
-    }
-    return true;
-}
-constexpr dictionary all_dictionaries[] = {pk, li, packed, mt, per};
-constexpr bool every_dictionary() {
-    for (const auto d : all_dictionaries)
-        if (!every_row_found(d)) return false;
-    return true;
-}
-static_assert(every_dictionary());
-
 // The access rule: a read-only row is not writable, a write-only row not readable.
 struct access_row {
     std::string_view section;
@@ -238,43 +220,80 @@ constexpr bool range_holds(const range_row& r) {
 static_assert(
     powerkey_tests::all_rows_pass<first_failing(range_rows, range_holds), std::size(range_rows)>);
 
-// The value kind of the objects whose kind carries more (a plane, a piece of the LED string).
-struct kind_row {
-    std::string_view section;
-    std::string_view frame;
-    object id;
-    value_kind kind;
-    plane holds;
-    std::uint8_t offset, width;
-};
-constexpr kind_row kind_rows[] = {
-    {"PK1000 17: red plane", "", object::led_on_red, value_kind::led_plane, plane::red, 0, 0},
-    {"PK1000 18: green plane", "", object::led_blink_green, value_kind::led_plane, plane::green, 0,
-     0},
-    {"MT 20 a: blue plane", "", object::led_on_blue, value_kind::led_plane, plane::blue, 0, 0},
-    // PKP2600SI 17: red 1-12 and green 1-4 are bits 0..15 of the 36-bit string (stride 12),
-    // green 5-12 bits 16..23, blue 1-12 bits 24..35.
-    {"2600SI 17 sub 1", "", object::led_on_r1_12_g1_4, value_kind::led_part, plane::red, 0, 16},
-    {"2600SI 17 sub 2", "", object::led_on_g5_12, value_kind::led_part, plane::red, 16, 8},
-    {"2600SI 18 sub 3", "", object::led_blink_b1_12, value_kind::led_part, plane::red, 24, 12},
-    {"MT 20 c", "", object::led_on_encoder, value_kind::ring, plane::red, 0, 0},
-    {"MT 19 d", "", object::encoder2_direction_counter, value_kind::direction_counter, plane::red,
-     0, 0},
-    {"PK1000 31: 1001h aborts", "", object::error_register, value_kind::none, plane::red, 0, 0},
-    {"PKP 13", "", object::command_module, value_kind::commands, plane::red, 0, 0},
-    {"PK1000 28", "", object::consumer_heartbeat, value_kind::consumer_heartbeat, plane::red, 0, 0},
-    {"PK1000 36", "", object::restore_defaults, value_kind::restore, plane::red, 0, 0},
-};
-constexpr bool kind_holds(const kind_row& r) {
-    const auto k = info(r.id);
-    return k.id == r.id && k.kind == r.kind && k.holds == r.holds && k.offset == r.offset &&
-           k.width == r.width;
+// The range of every writable row of a kind with a fixed range, in every dictionary: levels
+// 00h..3Fh, colours 01h..09h (keep, 00h, only in the PDO), node ids 01h..7Fh (15h at delivery),
+// flags 0..1; the default in range. A number is 1, 2 or 4 bytes (the expedited sizes).
+constexpr bool ranges_hold(dictionary d) {
+    for (const auto& r : rows_of(d)) {
+        const auto k = info(r.id).kind;
+        if (k == value_kind::number && r.size != 1 && r.size != 2 && r.size != 4) return false;
+        if (!r.writable()) continue;
+        if (k == value_kind::brightness &&
+            !(r.min == 0 && r.max == 0x3F && !r.in_range(0x40) && r.in_range(r.initial)))
+            return false;
+        if (k == value_kind::colour && !(r.min == 1 && r.max == 9 && !r.in_range(0) &&
+                                         !r.in_range(10) && r.in_range(r.initial)))
+            return false;
+        if (k == value_kind::node && !(r.min == 1 && r.max == 0x7F && !r.in_range(0) &&
+                                       !r.in_range(0x80) && r.initial == 0x15))
+            return false;
+        if (k == value_kind::flag && !(r.min == 0 && r.max == 1 && !r.in_range(2))) return false;
+    }
+    return true;
 }
-static_assert(
-    powerkey_tests::all_rows_pass<first_failing(kind_rows, kind_holds), std::size(kind_rows)>);
-// A value outside the enum has no kind.
-static_assert(info(static_cast<object>(0xFF)).kind == value_kind::none);
-static_assert(load_signature == 0x6461'6F6C);  // "load" (6Ch 6Fh 61h 64h), PK1000 36
+static_assert(ranges_hold(pk) && ranges_hold(li) && ranges_hold(packed) && ranges_hold(mt) &&
+              ranges_hold(per));
+
+// Every row of every dictionary is of an object with a name and a kind (none only for 1001h,
+// which the keypads abort: PK1000 31); every object is in some dictionary; every model's
+// dictionary is a named one with rows.
+constexpr bool every_row_named_and_typed(dictionary d) {
+    const auto rows = rows_of(d);
+    if (rows.empty() || !is_named(d)) return false;
+    for (const auto& r : rows) {
+        if (to_string(r.id).empty() || to_string(info(r.id).kind).empty()) return false;
+        if (info(r.id).kind == value_kind::none && r.id != object::error_register) return false;
+    }
+    return true;
+}
+constexpr bool every_object_somewhere() {
+    for (const object o : enum_values<object>()) {
+        bool somewhere = false;
+        for (const dictionary d : all_dictionaries) somewhere = somewhere || find_row(d, o);
+        if (!somewhere) return false;
+    }
+    for (const model m : enum_values<model>())
+        if (!every_row_named_and_typed(info(m)->dictionary)) return false;
+    return std::size(all_dictionaries) == dictionary_count;
+}
+static_assert(every_object_somewhere());
+
+// A value the optimiser cannot see through, so that the builders below run at run time.
+template <class T>
+T opaque(T v) {
+    volatile T keep = v;
+    return keep;
+}
+
+bool same_row(const object_row& a, const object_row& b) {
+    return a.id == b.id && a.address == b.address && a.size == b.size && a.access == b.access &&
+           a.min == b.min && a.max == b.max && a.also == b.also && a.initial == b.initial;
+}
+
+template <std::size_t N, class Own, class Shared>
+void check_join(const std::array<object_row, N>& built, const Own& own, const Shared& shared) {
+    REQUIRE(detail::joined_size(own, shared) == N);
+    const auto again = detail::join_rows<N>(own, shared);
+    for (std::size_t i = 0; i < N; ++i) {
+        CAPTURE(i);
+        CHECK(same_row(again[i], built[i]));
+    }
+    // Own rows first, in their order; then every shared row that no own row replaces.
+    for (std::size_t i = 0; i < std::size(own); ++i) CHECK(same_row(built[i], own[i]));
+    std::size_t replaced = 0;
+    for (const auto& c : shared) replaced += detail::replaced(own, c) ? 1u : 0u;
+    CHECK(std::size(own) + std::size(shared) - replaced == N);
+}
 }  // namespace
 
 TEST_CASE("dictionary rows pinned from the manuals, found by address and by object") {
@@ -285,24 +304,44 @@ TEST_CASE("what each dictionary lacks is not found, by address or by object") {
     powerkey_tests::check_rows(absent_rows, absent);
 }
 
-TEST_CASE("every row of every dictionary is found both ways and has a kind") {
-    CHECK(every_dictionary());
+TEST_CASE("access and ranges of the rows, and the range rules of every dictionary") {
+    powerkey_tests::check_rows(access_rows, access_holds);
+    powerkey_tests::check_rows(range_rows, range_holds);
     for (const auto d : all_dictionaries) {
         CAPTURE(std::string(to_string(d)));
-        CHECK(every_row_found(d));
-    }
-    // Each model's dictionary is one of the five (info() of every model).
-    for (const auto m : enum_values<model>()) {
-        CAPTURE(std::string(to_string(m)));
-        REQUIRE(info(m).has_value());
-        CHECK_FALSE(rows_of(info(m)->dictionary).empty());
+        CHECK(ranges_hold(d));
     }
 }
 
-TEST_CASE("access, ranges and kinds of the rows") {
-    powerkey_tests::check_rows(access_rows, access_holds);
-    powerkey_tests::check_rows(range_rows, range_holds);
-    powerkey_tests::check_rows(kind_rows, kind_holds);
-    CHECK(info(static_cast<object>(object_count)).kind == value_kind::none);
-    CHECK(info(static_cast<object>(object_count)).id == static_cast<object>(object_count));
+TEST_CASE("every row is of a named object with a kind; every object and model has a dictionary") {
+    for (const auto d : all_dictionaries) {
+        CAPTURE(std::string(to_string(d)));
+        CHECK(every_row_named_and_typed(d));
+    }
+    CHECK(every_object_somewhere());
+}
+
+TEST_CASE("the PK1000 and SI dictionaries are their own rows, then the shared ones not replaced") {
+    check_join(detail::pk1000_rows, detail::pk1000_own_rows, detail::pk_shared_rows);
+    check_join(detail::si_common_rows, detail::si_common_own_rows, detail::pk_shared_rows);
+    check_join(detail::si_packed_rows, detail::si_packed_own_rows, detail::si_common_rows);
+    check_join(detail::si_mt_rows, detail::si_mt_own_rows, detail::si_common_rows);
+    check_join(detail::si_per_colour_rows, detail::si_per_colour_own_rows, detail::si_common_rows);
+    // The PKP-3500-MT replaces shared rows with its own (docs/models.md): the TPDO1 event timer.
+    CHECK(detail::replaced(detail::si_mt_own_rows,
+                           *find_row(dictionary::si_mt, object::tpdo1_event_timer)));
+    CHECK(!detail::replaced(detail::si_mt_own_rows, *find_row(dictionary::si_mt, object::keys)));
+}
+
+TEST_CASE("every dictionary is well formed: one row per object and per address, min <= max") {
+    for (const auto d : enum_values<dictionary>()) {
+        CAPTURE(to_string(d));
+        CHECK(detail::rows_well_formed(rows_of(opaque(d))));
+    }
+    object_row twice[] = {rows_of(dictionary::pk1000)[0], rows_of(dictionary::pk1000)[0]};
+    CHECK(!detail::rows_well_formed(twice));
+    object_row upside_down[] = {rows_of(dictionary::pk1000)[0]};
+    upside_down[0].min = 5;
+    upside_down[0].max = 4;
+    CHECK(!detail::rows_well_formed(upside_down));
 }

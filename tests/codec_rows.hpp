@@ -13,8 +13,8 @@
 //
 //   static_assert(first_failing(rows, round_trips) == std::size(rows));
 //   TEST_CASE("...") { check_rows(rows, round_trips); }
-#ifndef POWERKEY_TESTS_DECODER_ROWS_HPP
-#define POWERKEY_TESTS_DECODER_ROWS_HPP
+#ifndef POWERKEY_TESTS_CODEC_ROWS_HPP
+#define POWERKEY_TESTS_CODEC_ROWS_HPP
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/cob_id.hpp>
@@ -27,31 +27,30 @@
 #include <cstdint>
 #include <string_view>
 
-namespace decoder_rows {
+namespace codec_rows {
 using namespace powerkey;
 using canopen::nmt_command;
 using canopen::nmt_state;
 
 // --- row types and their checks -----------------------------------------------------------------
 
-// The models a row applies to: bit m for model m (models.hpp order); `all` = the four keypads of
-// the first manuals. The SI family (tests/si_rows.hpp, tests/si_reference_rows.hpp): `si` all
-// nine, `si_s16` the per-colour sizes of stride 16, `si_s8` those of stride 8 (the PKP-1600-SI's
-// CANopen side is the SI rule for six keys, inferred as the PKP-2300-SI's: docs/si-family.md).
-inline constexpr std::uint16_t m1000 = 1, m2200 = 2, m2400 = 4, m2600 = 8, pkp = 14, all = 15;
-inline constexpr std::uint16_t m2600si = 1u << 4, m3500mt = 1u << 5, m3500si = 1u << 6,
-                               m2500si = 1u << 7, m1500li = 1u << 8, m2200si = 1u << 9,
-                               m2300si = 1u << 10, m2400si = 1u << 11, m1600si = 1u << 12,
-                               si = 0x1FF0, si_s16 = m3500si | m2500si,
-                               si_s8 = m1500li | m2200si | m2300si | m2400si | m1600si;
-
-constexpr bool applies(std::uint16_t models, model m) noexcept {
-    return ((static_cast<unsigned>(models) >> static_cast<unsigned>(m)) & 1u) != 0;
-}
+// The models a row applies to (models.hpp's model_set, sized from the table): `all` = the four
+// keypads of the first manuals. The SI family (tests/si_rows.hpp, tests/si_reference_rows.hpp):
+// `si` all nine, `si_s16` the per-colour sizes of stride 16, `si_s8` those of stride 8 (the
+// PKP-1600-SI's CANopen side is the SI rule for six keys, inferred as the PKP-2300-SI's:
+// docs/si-family.md).
+inline constexpr model_set m1000{model::pk1000}, m2200{model::pkp2200}, m2400{model::pkp2400},
+    m2600{model::pkp2600}, pkp = m2200 | m2400 | m2600, all = m1000 | pkp;
+inline constexpr model_set m2600si{model::pkp2600si}, m3500mt{model::pkp3500mt},
+    m3500si{model::pkp3500si}, m2500si{model::pkp2500si}, m1500li{model::pkp1500li},
+    m2200si{model::pkp2200si}, m2300si{model::pkp2300si}, m2400si{model::pkp2400si},
+    m1600si{model::pkp1600si}, si_s16 = m3500si | m2500si,
+                               si_s8 = m1500li | m2200si | m2300si | m2400si | m1600si,
+                               si = m2600si | m3500mt | si_s16 | si_s8;
 
 struct row {
     std::string_view section;  // manual and section (PK1000 "n", PKP "PKP n", "ref" PKP-2600)
-    std::uint16_t models;
+    model_set models;
     std::uint8_t node;  // the keypad's node id when the frame is sent
     std::string_view frame;
     message expected;
@@ -59,7 +58,7 @@ struct row {
 
 struct error_row {
     std::string_view section;
-    std::uint16_t models;
+    model_set models;
     std::uint8_t node;
     std::string_view frame;
     errc error;
@@ -67,7 +66,7 @@ struct error_row {
 
 struct encode_error_row {
     std::string_view section;
-    std::uint16_t models;
+    model_set models;
     std::uint8_t node;
     std::string_view frame;
     message msg;
@@ -80,11 +79,11 @@ constexpr canopen::node_id node_of(std::uint8_t n) noexcept {
 
 // Calls f(m) for every model of the mask; false when the mask names none or f fails once.
 template <class F>
-constexpr bool for_models(std::uint16_t models, F f) {
+constexpr bool for_models(const model_set& models, F f) {
     bool any = false;
     for (std::size_t i = 0; i < model_count; ++i) {
         const auto m = static_cast<model>(i);
-        if (!applies(models, m)) continue;
+        if (!models.contains(m)) continue;
         any = true;
         if (!f(m)) return false;
     }
@@ -254,6 +253,6 @@ inline constexpr error_row core_error_rows[] = {
      errc::wrong_id_format},
 };
 
-}  // namespace decoder_rows
+}  // namespace codec_rows
 
-#endif  // POWERKEY_TESTS_DECODER_ROWS_HPP
+#endif  // POWERKEY_TESTS_CODEC_ROWS_HPP

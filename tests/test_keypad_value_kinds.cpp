@@ -1,12 +1,14 @@
-// The shared values, the value builders, the command table and the field views, each against a
-// manual frame: a message filled in through fields() (as `powerkey encode --json` does) or built
-// with a *_value builder encodes to the manual's bytes and decodes back to itself.
+// keypad/value_kinds.hpp: each value kind's fields and builders against a manual frame: a message
+// filled in through fields() (as `powerkey encode --json` does) or built with a *_value builder
+// encodes to the manual's bytes and decodes back to itself; the fields a kind shows; the
+// restore signature.
 #include <doctest/doctest.h>
 
 #include <powerkey/fields.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/messages.hpp>
+#include <powerkey/keypad/value_kinds.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include "support.hpp"
@@ -236,8 +238,7 @@ constexpr bool fills(const fill_row& r) {
 }
 static_assert(powerkey_tests::all_rows_pass<first_failing(fill_rows, fills), std::size(fill_rows)>);
 
-// --- the value builders
-// ----------------------------------------------------------------------------
+// --- the value builders --------------------------------------------------------------------------
 
 struct builder_row {
     std::string_view section;
@@ -280,143 +281,38 @@ constexpr bool builds(const builder_row& r) {
 static_assert(
     powerkey_tests::all_rows_pass<first_failing(builder_rows, builds), std::size(builder_rows)>);
 
-// --- the command table (PKP section 13) ----------------------------------------------------------
+// --- the fields each kind shows -----------------------------------------------------------------
 
-struct command_table_row {
+// A value of no kind (1001h: PK1000 31, the keypad aborts) and the command module (6500h carries
+// commands, not a value) show only their object; the encoders' kinds their own fields.
+struct shown_row {
     std::string_view section;
     std::string_view frame;  // unused
-    std::uint8_t code;
-    command_param p1, p2;
+    message msg;
+    std::string_view names;  // the fields for_each_field walks, space-separated
 };
-using cp = command_param;
-constexpr command_table_row command_table_rows[] = {
-    {"PKP 13 a: key, state", "", 0x01, cp::key, cp::state},
-    {"PKP 13 b: LED level", "", 0x02, cp::brightness, cp::none},
-    {"PKP 13 b: backlight level", "", 0x03, cp::brightness, cp::none},
-    {"PKP 13 c: colour", "", 0x04, cp::colour, cp::none},
-    {"PKP 13 d: on/off", "", 0x10, cp::flag, cp::none},
-    {"PKP 13 e: baud", "", 0x11, cp::baud, cp::none},
-    {"PKP 13 f: on/off, period", "", 0x12, cp::flag, cp::period_10ms},
-    {"PKP 13 g: on/off", "", 0x13, cp::flag, cp::none},
-    {"PKP 13 m: show", "", 0x50, cp::show, cp::none},
-    {"PKP 13 h: node", "", 0x70, cp::node, cp::none},
-    {"PKP 13 l: on/off", "", 0x7A, cp::flag, cp::none},
-    {"PKP 13 j: level", "", 0x7B, cp::brightness, cp::none},
-    {"PKP 13 i: level", "", 0x7C, cp::brightness, cp::none},
-    {"PKP 13 k: colour", "", 0x7D, cp::colour, cp::none},
+constexpr shown_row shown_rows[] = {
+    {"PK1000 31", "", sdo_read_reply{object::error_register, {}}, "object"},
+    {"PKP 13", "", sdo_write{object::command_module, {}}, "object"},
+    {"PKP3500-MT 19 b", "", sdo_read_reply{object::encoder1_direction_counter, {}},
+     "object counterclockwise ticks"},
+    {"PKP3500-MT 20 c", "", sdo_write{object::led_on_encoder, {}}, "object leds"},
 };
-constexpr bool command_found(const command_table_row& r) {
-    const auto row = find_command(r.code);
-    return row && static_cast<std::uint8_t>(row->code) == r.code && row->p1 == r.p1 &&
-           row->p2 == r.p2;
-}
-static_assert(powerkey_tests::all_rows_pass<first_failing(command_table_rows, command_found),
-                                            std::size(command_table_rows)>);
-// Bytes no command has: below, between and above the codes, and past the index (80h..FFh).
-constexpr bool no_other_command() {
-    for (unsigned c = 0; c < 256; ++c) {
-        bool listed = false;
-        for (const auto& r : command_table_rows) listed = listed || r.code == c;
-        if (find_command(static_cast<std::uint8_t>(c)).has_value() != listed) return false;
-    }
-    return true;
-}
-static_assert(no_other_command());
-
-// The fields each command shows: its code, then its row's parameters by name.
-struct command_fields_row {
-    std::string_view section;
-    std::string_view frame;  // unused
-    command_code code;
-    std::string_view names;  // space-separated, after "command"
-};
-constexpr command_fields_row command_fields_rows[] = {
-    {"PKP 13 a", "", command_code::set_led_state, "key state"},
-    {"PKP 13 b", "", command_code::set_led_brightness, "level"},
-    {"PKP 13 c", "", command_code::set_backlight_colour, "colour"},
-    {"PKP 13 e", "", command_code::set_baud_rate, "baud_rate"},
-    {"PKP 13 f", "", command_code::set_periodic_transmission, "enabled period_10ms"},
-    {"PKP 13 h", "", command_code::set_node_id, "node_id"},
-    {"PKP 13 m", "", command_code::set_startup_show, "startup_show"},
-    {"no such command", "", static_cast<command_code>(0x99), ""},
-};
-constexpr bool shows_fields(const command_fields_row& r) {
-    command c;
-    c.code = r.code;
-    std::array<std::string_view, 4> seen{};
-    std::size_t n = 0;
-    command::fields(std::as_const(c), [&](std::string_view name, const auto&) {
-        if (n < seen.size()) seen[n] = name;
-        ++n;
-    });
-    if (n == 0 || seen[0] != "command") return false;
+constexpr bool shows(const shown_row& r) {
     std::string_view rest = r.names;
-    for (std::size_t i = 1; i < n; ++i) {
+    bool ok = true;
+    for_each_field(r.msg, [&](std::string_view name, const auto&) {
         const auto end = rest.find(' ');
-        if (rest.substr(0, end) != seen[i]) return false;
+        ok = ok && !rest.empty() && rest.substr(0, end) == name;
         rest = end == std::string_view::npos ? std::string_view{} : rest.substr(end + 1);
-    }
-    return rest.empty();
-}
-static_assert(powerkey_tests::all_rows_pass<first_failing(command_fields_rows, shows_fields),
-                                            std::size(command_fields_rows)>);
-
-// --- LED maps: colours and modes
-// -------------------------------------------------------------------
-
-// PKP sections 11, 12: amber = red + green, magenta = red + blue, cyan = green + blue, white all.
-struct colour_row {
-    std::string_view section;
-    std::string_view frame;  // unused
-    colour c;
-    bool red, green, blue;
-};
-constexpr colour_row colour_rows[] = {
-    {"PKP 11", "", colour::off, false, false, false},
-    {"PKP 11", "", colour::red, true, false, false},
-    {"PKP 11", "", colour::green, false, true, false},
-    {"PKP 11", "", colour::blue, false, false, true},
-    {"PKP 11: amber", "", colour::amber, true, true, false},
-    {"PKP 11: cyan", "", colour::cyan, false, true, true},
-    {"PKP 11: magenta", "", colour::magenta, true, false, true},
-    {"PKP 11: white", "", colour::white, true, true, true},
-};
-constexpr bool colour_holds(const colour_row& r) {
-    leds l{{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};  // key 2 white first: set() clears what c lacks
-    l.set(2, r.c);
-    const leds& cl = l;
-    return cl.of(plane::red).contains(2) == r.red && cl.of(plane::green).contains(2) == r.green &&
-           cl.of(plane::blue).contains(2) == r.blue && l.colour_of(2) == r.c &&
-           l.colour_of(1) == colour::white && l.colour_of(3) == colour::white && l.empty() == false;
-}
-static_assert(powerkey_tests::all_rows_pass<first_failing(colour_rows, colour_holds),
-                                            std::size(colour_rows)>);
-// A value outside the enum sets no plane.
-static_assert(leds{{5}, {5}, {5}}.set(5, static_cast<colour>(8)).colour_of(5) == colour::off);
-
-// PK1000 sections 12, 13: on, blink, and both = alternate blink.
-struct mode_row {
-    std::string_view section;
-    std::string_view frame;  // unused
-    bool on, blink;
-    led_mode mode;
-};
-constexpr mode_row mode_rows[] = {
-    {"PK1000 12", "", false, false, led_mode::off},
-    {"PK1000 12", "", true, false, led_mode::on},
-    {"PK1000 13", "", false, true, led_mode::blink},
-    {"PK1000 13", "", true, true, led_mode::alternate_blink},
-};
-constexpr bool mode_holds(const mode_row& r) {
-    leds on, blink;
-    if (r.on) on.of(plane::green).insert(7);
-    if (r.blink) blink.of(plane::green).insert(7);
-    return mode_of(on, blink, plane::green, 7) == r.mode &&
-           mode_of(on, blink, plane::red, 7) == led_mode::off &&
-           mode_of(on, blink, plane::blue, 7) == led_mode::off;
+    });
+    return ok && rest.empty();
 }
 static_assert(
-    powerkey_tests::all_rows_pass<first_failing(mode_rows, mode_holds), std::size(mode_rows)>);
+    powerkey_tests::all_rows_pass<first_failing(shown_rows, shows), std::size(shown_rows)>);
+
+// PK1000 36: restore defaults takes "load" (6Ch 6Fh 61h 64h), little endian.
+static_assert(load_signature == 0x6461'6F6C);
 }  // namespace
 
 TEST_CASE("messages filled in through fields() encode to the manual's frames") {
@@ -446,13 +342,4 @@ TEST_CASE("the value builders give the manual's frames") {
           frame_of("595#4301200108000000"));
 }
 
-TEST_CASE("the command table: every command byte of PKP section 13 and no other") {
-    powerkey_tests::check_rows(command_table_rows, command_found);
-    powerkey_tests::check_rows(command_fields_rows, shows_fields);
-    CHECK(no_other_command());
-}
-
-TEST_CASE("LED colours and modes") {
-    powerkey_tests::check_rows(colour_rows, colour_holds);
-    powerkey_tests::check_rows(mode_rows, mode_holds);
-}
+TEST_CASE("the fields each kind shows") { powerkey_tests::check_rows(shown_rows, shows); }

@@ -1,5 +1,6 @@
-// The segmented-upload reader over every string read of both manuals, frame by frame: the
-// requests it produces must be the manual's requests, and the value the manual's value.
+// canopen/sdo_upload.hpp: the segmented-upload reader over every string read of both manuals,
+// frame by frame: the requests it produces must be the manual's requests, and the value the
+// manual's value; faults, frames of others, and a short segment.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
@@ -216,7 +217,6 @@ TEST_CASE("segmented reader: what the keypad sends is kept and reported") {
 }
 
 TEST_CASE("segmented reader: faults end the transfer with a clear error") {
-    CHECK(all_faults());
     for (const auto& f : faults) {
         CAPTURE(f.what);
         CHECK(fault_ends_in(f));
@@ -241,4 +241,19 @@ TEST_CASE("segmented reader: frames of other nodes and functions are refused and
     const auto step = r.step(can::candump("595#410810000B000000"));
     REQUIRE(step.has_value());
     CHECK(step->request == can::candump("615#6000000000000000"));
+}
+
+TEST_CASE("a segment other than the last that carries fewer than 7 bytes is noted") {
+    // CiA 301 7.2.4.3.7: only the last segment may leave bytes unused (n > 0).
+    canopen::segmented_upload<32> u(canopen::node_id::make(0x15).value());
+    CHECK(u.start({0x1008, 0}) == can::candump("615#4008100000000000"));
+    REQUIRE(u.step(can::candump("595#410810000B000000")).has_value());
+    const auto s = u.step(can::candump("595#02426C696E6B4D00"));  // "BlinkM", n = 1, not the last
+    REQUIRE(s.has_value());
+    CHECK(u.notes().short_segment);
+    canopen::segmented_upload<32> strict(canopen::node_id::make(0x15).value(),
+                                         canopen::upload_policy::strict);
+    (void)strict.start({0x1008, 0});
+    REQUIRE(strict.step(can::candump("595#410810000B000000")).has_value());
+    CHECK(strict.step(can::candump("595#02426C696E6B4D00")) == errc::size_mismatch);
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Tests of `powerkey simulate` (tools/powerkey/cmd_simulate.cpp), registered by
-# tools/powerkey/CMakeLists.txt:  test_simulate.sh POWERKEY_BINARY SOURCE_DIR
+# tools/powerkey/CMakeLists.txt:  test_tool_simulate.sh POWERKEY_BINARY SOURCE_DIR
 # The shipped session log (examples/logs/session-pk1000.log) gives exactly the keypad's frames
 # below; bare frames on stdin, --node, bad lines and usage errors behave as documented.
 set -uo pipefail

@@ -1,16 +1,16 @@
-// The invariants of issue 6 as tests: every decoder (the CiA 301 and J1939 ones, and
+// powerkey.hpp, the library as a whole: every decoder it offers (the CiA 301 and J1939 ones, and
 // decode(frame, node, model) for every model), over a sweep of frames around every row of the
-// frame tables, refuses only with listed codes, keeps decode -> encode -> decode a fixed point
-// (every decoded message encodes to a frame that decodes to it), and (under AddressSanitizer)
-// reads no data byte past the dlc; every errc is named and listed.
+// frame tables (tests/invariants.hpp), refuses only with listed codes, keeps decode -> encode ->
+// decode a fixed point (every decoded message encodes to a frame that decodes to it), agrees with
+// the one SDO parser on every SDO frame (tests/sdo_agreement.hpp), and (under AddressSanitizer)
+// reads no data byte past the dlc.
 #include <doctest/doctest.h>
 
 #include "../fuzz/fuzz.hpp"
-#include "test_invariants.hpp"
+#include "invariants.hpp"
 
-#include <set>
-#include <string_view>
-#include <vector>
+#include <cstddef>
+#include <cstdint>
 
 namespace {
 using namespace powerkey;
@@ -26,20 +26,6 @@ using past_dlc_guard = powerkey_fuzz::poison_past_dlc;
 constexpr bool asan = false;
 using past_dlc_guard = invariants::no_guard;
 #endif
-
-TEST_CASE("every errc is named, listed once, and numbered 1..N") {
-    std::set<std::string_view> names;
-    std::size_t expected = 1;
-    for (errc e : enum_values<errc>()) {
-        CHECK(static_cast<std::size_t>(e) == expected++);
-        const auto name = to_string(e);
-        CHECK_FALSE(name.empty());
-        CHECK(names.insert(name).second);
-    }
-    CHECK(to_string(errc{}).empty());
-    CHECK(to_string(static_cast<errc>(expected)).empty());
-    CHECK(!invariants::listed(errc{}));
-}
 
 TEST_CASE("the bytes past the dlc are unreadable while a decoder runs (ASan builds)") {
     if (!asan) {
@@ -57,18 +43,6 @@ TEST_CASE("the bytes past the dlc are unreadable while a decoder runs (ASan buil
         }
         CHECK(held.f == can::frame(sdo_rx_15, can::dlc::make(n).value(), p));
     }
-}
-
-TEST_CASE("frame::make reads exactly the span it is given (ASan: the span ends a heap block)") {
-    for (std::size_t n = 0; n <= 8; ++n) {
-        std::vector<std::uint8_t> bytes(n, 0xA5);  // exactly n bytes: a read past them traps
-        const auto f = can::frame::make(sdo_rx_15, bytes);
-        REQUIRE(f.has_value());
-        CHECK(f->size() == n);
-        for (std::size_t i = 0; i < 8; ++i) CHECK(f->bytes()[i] == (i < n ? 0xA5 : 0));
-    }
-    const std::vector<std::uint8_t> nine(9, 0);
-    CHECK(can::frame::make(sdo_rx_15, nine) == errc::wrong_length);
 }
 
 TEST_CASE("every decoder keeps its invariants on a sweep around every manual row") {

@@ -1,5 +1,5 @@
 // The invariants every decoder keeps on untrusted frames, checked over a systematic sweep of
-// frames near the manuals' examples (shared by tests/test_invariants.cpp, which runs it under
+// frames near the manuals' examples (shared by tests/test_powerkey.cpp, which runs it under
 // ASan with the bytes past the dlc poisoned, and tests/freestanding/invariants.cpp, which runs it
 // with operator new trapping):
 //  - a refusal carries one of the listed codes (enum_values<errc>());
@@ -7,16 +7,16 @@
 //    for every decoded message, encode gives back a frame that decodes to that message.
 // The decoders: the CiA 301 and J1939 ones, and decode(frame, node, model) for every model of the
 // table; and every SDO entry point agrees with the SDO engine (sdo_agreement.hpp). The sweep: every
-// row of every frame table (tests/decoder_rows.hpp, pk1000_rows.hpp, pkp_rows.hpp: manual rows,
+// row of every frame table (tests/codec_rows.hpp, pk1000_rows.hpp, pkp_rows.hpp: manual rows,
 // refused rows, foreign frames), each with every byte in turn set to each of a few dozen telling
 // values (command specifiers, bounds, all ones), with every dlc from 0 to 8, on every COB-ID
 // function of the keypad and of another node, and as a 29-bit frame.
-#ifndef POWERKEY_TESTS_TEST_INVARIANTS_HPP
-#define POWERKEY_TESTS_TEST_INVARIANTS_HPP
+#ifndef POWERKEY_TESTS_INVARIANTS_HPP
+#define POWERKEY_TESTS_INVARIANTS_HPP
 
 #include <powerkey/powerkey.hpp>
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "sdo_agreement.hpp"
@@ -181,9 +181,9 @@ constexpr void sweep_table(const Row (&rows)[N], Visit& visit) {
 // The sweep around every row of every frame table.
 template <class Visit>
 void sweep(Visit&& visit) {
-    sweep_table(decoder_rows::core_rows, visit);
-    sweep_table(decoder_rows::core_error_rows, visit);
-    sweep_table(decoder_rows::foreign_rows, visit);
+    sweep_table(codec_rows::core_rows, visit);
+    sweep_table(codec_rows::core_error_rows, visit);
+    sweep_table(codec_rows::foreign_rows, visit);
     sweep_table(pk1000_rows::rows, visit);
     sweep_table(pk1000_rows::error_rows, visit);
     sweep_table(pk1000_rows::encode_error_rows, visit);
@@ -199,4 +199,4 @@ struct no_guard {
 
 }  // namespace invariants
 
-#endif  // POWERKEY_TESTS_TEST_INVARIANTS_HPP
+#endif  // POWERKEY_TESTS_INVARIANTS_HPP

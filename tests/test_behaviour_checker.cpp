@@ -1,4 +1,4 @@
-// The bus-log checker (behaviour/checker.hpp): each problem kind from a small log, a clean log
+// behaviour/checker.hpp: the bus-log checker. Each problem kind from a small log, a clean log
 // with none, and the explanations. A log row is (time in ms, frame); its line is its position
 // from 1. The controller's own sessions against the virtual keypad are checked in
 // test_controller.cpp.
@@ -298,4 +298,31 @@ TEST_CASE("checker: a time that goes back restarts the timers") {
                                     {150, "715#05"}};
     const auto got = check(model::pk1000, log);
     CHECK_MESSAGE(got.empty(), text_of(got));
+}
+
+TEST_CASE("checker: NMT pre-operational, reset node and reset communication stop the PDOs") {
+    // PK1000 5, 6 (CiA 301 reset communication 82h): the keypad is pre-operational afterwards
+    // and ignores PDOs until the next NMT start (PK1000 11).
+    for (const std::string_view nmt : {"000#8015", "000#8115", "000#8215", "000#8000"}) {
+        CAPTURE(std::string(nmt));
+        const auto ps =
+            check(model::pk1000,
+                  {{0, "715#00"}, {5, "000#0115"}, {10, nmt}, {20, "215#0100000000000000"}});
+        REQUIRE(ps.size() == 1);
+        CHECK(ps[0] == problem{4, problem_kind::pdo_not_operational, {0x215, 0x7F, 0}});
+    }
+    // An NMT command to another node changes nothing.
+    CHECK(check(model::pk1000,
+                {{0, "715#00"}, {5, "000#0115"}, {10, "000#8016"}, {20, "215#0100000000000000"}})
+              .empty());
+}
+
+TEST_CASE("checker: after the host's abort the next request is no overlap and none is unanswered") {
+    CHECK(check(model::pk1000, {{0, "715#00"},
+                                {10, "615#4008100000000000"},
+                                {11, "615#8008100000000405"},
+                                {20, "615#4011200000000000"},
+                                {21, "595#4F11200001000000"},
+                                {900, "715#7F"}})
+              .empty());
 }

@@ -1,6 +1,7 @@
-// The common questions answered from whichever frame carries the answer: pressed keys, LED maps,
-// brightness, backlight, node id, NMT state, each from every carrier of both dictionaries and
-// nullopt from every other message; and the README's firmware loop, byte for byte.
+// keypad/accessors.hpp: the common questions answered from whichever frame carries the answer:
+// pressed keys, LED maps (and the LEDs a frame covers), brightness, backlight, node id, NMT state,
+// each from every carrier of the dictionaries and nullopt from every other message; the LED and
+// key accessors against every manual row; and the README's firmware loop, byte for byte.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
@@ -8,13 +9,19 @@
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 
+#include "codec_rows.hpp"
+#include "pk1000_rows.hpp"
+#include "pkp_rows.hpp"
 #include "support.hpp"
 
 #include <array>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <variant>
 
 namespace {
 using namespace powerkey;
@@ -78,9 +85,12 @@ constexpr std::string_view unrelated_pkp[] = {
 constexpr carrier<key_set> key_rows[] = {
     {"PK1000 11", "195#090000002A", model::pk1000, key_set{1, 4}},
     {"PK1000 16", "595#4B00200100020000", model::pk1000, key_set{10}},
+    {"PK1000 16", "595#4B00200188010000", model::pk1000, key_set{4, 8, 9}},
     {"PKP 10", "195#040000002A", model::pkp2400, key_set{3}},
     {"PKP 14", "595#4300600003000000", model::pkp2400, key_set{1, 2}},
+    {"PKP 14", "595#4300600022000000", model::pkp2400, key_set{2, 6}},
     {"PKP-2600", "195#000800002A", model::pkp2600, key_set{12}},
+    {"PKP3500-MT 11", "195#004100002A", model::pkp3500mt, key_set{9, 15}},
     {"not a read reply", "615#4000200100000000", model::pk1000, std::nullopt},
     {"sync", "080#", model::pk1000, std::nullopt},
 };
@@ -136,8 +146,7 @@ constexpr carrier<led_map_update> led_blink_rows[] = {
 };
 static_assert(first_wrong(led_blink_rows, led_blink_map) == std::size(led_blink_rows));
 
-// --- brightness
-// -----------------------------------------------------------------------------------
+// --- brightness ----------------------------------------------------------------------------------
 constexpr level quarter = 0x10;
 constexpr level half = 0x20;
 constexpr carrier<level> brightness_rows[] = {
@@ -153,8 +162,7 @@ constexpr carrier<level> brightness_rows[] = {
 };
 static_assert(first_wrong(brightness_rows, led_brightness_level) == std::size(brightness_rows));
 
-// --- backlight
-// ------------------------------------------------------------------------------------
+// --- backlight -----------------------------------------------------------------------------------
 constexpr carrier<backlight_update> backlight_rows[] = {
     {"PK1000 15: level, colour keep: no colour", "515#2000000000000000", model::pk1000,
      backlight_update{half, std::nullopt}},
@@ -166,6 +174,9 @@ constexpr carrier<backlight_update> backlight_rows[] = {
      backlight_update{std::nullopt, backlight_colour::white}},
     {"PK1000 19 c: read reply of backlight_colour", "595#4F03200308000000", model::pk1000,
      backlight_update{std::nullopt, backlight_colour::amber}},
+    {"PK1000 19 c, E-PK-2: the reply labelled cyan carries 04h, yellow; the bytes win",
+     "595#4F03200304000000", model::pk1000,
+     backlight_update{std::nullopt, backlight_colour::yellow}},
     {"PKP 30: write 6201h sub 2", "615#2F01620210000000", model::pkp2400,
      backlight_update{quarter, std::nullopt}},
     {"PKP 13 b: command 03h", "615#2300650103100000", model::pkp2400,
@@ -176,13 +187,15 @@ constexpr carrier<backlight_update> backlight_rows[] = {
 };
 static_assert(first_wrong(backlight_rows, backlight_change) == std::size(backlight_rows));
 
-// --- node id, NMT state
-// -------------------------------------------------------------------------------
+// --- node id, NMT state --------------------------------------------------------------------------
 constexpr canopen::node_id node_3a = 0x3A;
 constexpr canopen::node_id node_18 = 0x18;
+constexpr canopen::node_id node_19 = 0x19;
 constexpr carrier<canopen::node_id> node_rows[] = {
     {"PK1000 23: write 2013h", "615#2F1320003A000000", model::pk1000, node_3a},
     {"PKP 13 h: command 70h", "615#2300650170180000", model::pkp2400, node_18},
+    {"PKP3500-MT 29: write 2013h", "615#2F13200019000000", model::pkp3500mt, node_19},
+    {"a read of 2013h moves nothing", "615#4013200000000000", model::pk1000, std::nullopt},
     {"a read reply of 2013h moves nothing", "595#4F1320003A000000", model::pk1000, std::nullopt},
     {"the acknowledgement moves nothing", "595#6013200000000000", model::pk1000, std::nullopt},
 };
@@ -210,6 +223,83 @@ constexpr bool none_answers(model m, const std::string_view (&frames)[N]) {
 }
 static_assert(none_answers(model::pk1000, unrelated_pk1000));
 static_assert(none_answers(model::pkp2400, unrelated_pkp));
+
+// --- the LED and key accessors against every manual row -----------------------------------------
+
+// For every model of the row, the accessors answer from the decoded message what its fields say:
+// pressed_keys from a key-state PDO or a read reply of `keys`; led_on_map and led_blink_map from
+// an LED PDO (every plane of the model) or a write or read reply of an LED object (the planes it
+// carries), covering the model's LEDs of those planes; nothing from any other message.
+constexpr std::uint8_t planes_of(object o, const model_info& mi) {
+    switch (o) {
+        case object::led_on:
+        case object::led_blink: return mi.object_planes() == 2 ? 3 : 7;  // red, green (, blue)
+        case object::led_on_red:
+        case object::led_blink_red: return 1;
+        case object::led_on_green:
+        case object::led_blink_green: return 2;
+        default: return 0;
+    }
+}
+constexpr bool is_on(object o) {
+    return o == object::led_on || o == object::led_on_red || o == object::led_on_green;
+}
+constexpr leds covering(std::uint8_t planes, const model_info& mi) {
+    leds c;
+    if (planes & 1) c.red = led_set::from_mask(mi.led_mask);
+    if (planes & 2) c.green = led_set::from_mask(mi.led_mask);
+    if (planes & 4) c.blue = led_set::from_mask(mi.led_mask);
+    return c;
+}
+
+constexpr std::optional<led_map_update> want_map(const message& m, bool on, model md) {
+    const auto mi = *info(md);
+    const std::uint8_t all = mi.planes == 2 ? 3 : 7;
+    if (const auto* p = std::get_if<powerkey::led_on>(&m); p && on)
+        return led_map_update{p->map, covering(all, mi)};
+    if (const auto* p = std::get_if<powerkey::led_blink>(&m); p && !on)
+        return led_map_update{p->map, covering(all, mi)};
+    auto of = [on, &mi](object o, const object_value& v) -> std::optional<led_map_update> {
+        if (planes_of(o, mi) == 0 || is_on(o) != on) return std::nullopt;
+        return led_map_update{v.map, covering(planes_of(o, mi), mi)};
+    };
+    if (const auto* w = std::get_if<sdo_write>(&m)) return of(w->object, w->value);
+    if (const auto* r = std::get_if<sdo_read_reply>(&m)) return of(r->object, r->value);
+    return std::nullopt;
+}
+
+constexpr std::optional<key_set> want_keys(const message& m) {
+    if (const auto* k = std::get_if<key_state>(&m)) return k->keys;
+    if (const auto* r = std::get_if<sdo_read_reply>(&m); r && r->object == object::keys)
+        return key_set::from_mask(r->value.raw);
+    return std::nullopt;
+}
+
+constexpr bool accessors_agree(const codec_rows::row& r) {
+    return codec_rows::for_models(r.models, [&](model m) {
+        const auto d = decode(frame_of(r.frame), codec_rows::node_of(r.node), m);
+        if (!d) return false;
+        return pressed_keys(*d) == want_keys(*d) && led_on_map(*d, m) == want_map(*d, true, m) &&
+               led_blink_map(*d, m) == want_map(*d, false, m);
+    });
+}
+static_assert(first_failing(codec_rows::core_rows, accessors_agree) ==
+              std::size(codec_rows::core_rows));
+static_assert(first_failing(pk1000_rows::rows, accessors_agree) == std::size(pk1000_rows::rows));
+static_assert(first_failing(pkp_rows::rows, accessors_agree) == std::size(pkp_rows::rows));
+
+// The same keys, whichever frame carries them: the key-state PDO and the read reply of `keys`
+// (PK1000 2000h/1, PKP 6000h) answer pressed_keys alike, on every model.
+constexpr bool keys_alike(model m, key_set k) {
+    const auto pdo = decode(*encode(keypad, m, key_state{k, 0}), keypad, m);
+    const auto sdo =
+        decode(*encode(keypad, m, sdo_read_reply{object::keys, keys_value(k)}), keypad, m);
+    return pdo && sdo && pressed_keys(*pdo) == k && pressed_keys(*sdo) == k;
+}
+static_assert(keys_alike(model::pk1000, {1, 4, 10}));
+static_assert(keys_alike(model::pkp2200, {1, 4}));
+static_assert(keys_alike(model::pkp2400, {2, 7, 8}));
+static_assert(keys_alike(model::pkp2600, {9, 12}));
 
 // --- the README's firmware loop ---------------------------------------------------------------
 // A key-state frame arrives as the raw id and bytes a CAN driver hands over; every pressed key
@@ -289,4 +379,46 @@ TEST_CASE("the firmware loop: a key press lights that key's LED green") {
     CHECK(firmware_step(model::pk1000, 0x715, boot) == errc::unexpected_frame);
     // Another node's key state is refused.
     CHECK(firmware_step(model::pk1000, 0x196, key3_pressed) == errc::wrong_id);
+}
+
+TEST_CASE("pressed_keys, led_on_map and led_blink_map answer every manual row as its fields do") {
+    powerkey_tests::check_rows(codec_rows::core_rows, accessors_agree);
+    powerkey_tests::check_rows(pk1000_rows::rows, accessors_agree);
+    powerkey_tests::check_rows(pkp_rows::rows, accessors_agree);
+}
+
+TEST_CASE("a read reply of keys answers pressed_keys as the key-state PDO does") {
+    CHECK(keys_alike(model::pk1000, {1, 4, 10}));
+    CHECK(keys_alike(model::pkp2200, {1, 4}));
+    CHECK(keys_alike(model::pkp2400, {2, 7, 8}));
+    CHECK(keys_alike(model::pkp2600, {9, 12}));
+}
+
+// A PKP-2600's 6001h/6002h carry red and green only (model_info::object_planes() == 2): a frame
+// that sets them leaves blue as it was, so the update covers red and green only. The PK1000's LED
+// PDOs cover its two planes, LEDs 1..28.
+TEST_CASE("led_on_map and led_blink_map cover the LEDs the frame states on the model") {
+    for (const auto& r : pkp_rows::rows) {
+        if (!r.models.contains(model::pkp2600)) continue;
+        const auto d = decode(frame_of(r.frame), codec_rows::node_of(r.node), model::pkp2600);
+        REQUIRE(d.has_value());
+        const auto* w = std::get_if<sdo_write>(&*d);
+        const auto* v = std::get_if<sdo_read_reply>(&*d);
+        const object o = w ? w->object : v ? v->object : object::keys;
+        if (o != object::led_on && o != object::led_blink) continue;
+        INFO(std::string(r.section), "  ", std::string(r.frame));
+        const auto u = o == object::led_on ? led_on_map(*d, model::pkp2600)
+                                           : led_blink_map(*d, model::pkp2600);
+        REQUIRE(u.has_value());
+        CHECK(u->covered.red == upto(12));
+        CHECK(u->covered.green == upto(12));
+        CHECK(u->covered.blue.empty());
+    }
+    const auto pdo = decode(frame_of("215#0000010000000008"), keypad, model::pk1000);
+    REQUIRE(pdo.has_value());
+    const auto u = led_on_map(*pdo, model::pk1000);
+    REQUIRE(u.has_value());
+    CHECK(u->covered.red == upto(28));
+    CHECK(u->covered.green == upto(28));
+    CHECK(u->covered.blue.empty());
 }
