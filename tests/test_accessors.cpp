@@ -1,6 +1,6 @@
 // The common questions answered from whichever frame carries the answer: pressed keys, LED maps,
 // brightness, backlight, node id, NMT state, each from every carrier of both dictionaries and
-// nullopt from every other message; and the README's firmware loop, byte for byte.
+// nullopt from every other message; and the tutorial's firmware loop, byte for byte.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
@@ -211,7 +211,7 @@ constexpr bool none_answers(model m, const std::string_view (&frames)[N]) {
 static_assert(none_answers(model::pk1000, unrelated_pk1000));
 static_assert(none_answers(model::pkp2400, unrelated_pkp));
 
-// --- the README's firmware loop ---------------------------------------------------------------
+// --- the tutorial's firmware loop -------------------------------------------------------------
 // A key-state frame arrives as the raw id and bytes a CAN driver hands over; every pressed key
 // lights its LED green. Returns the LED-on frame to send.
 constexpr result<can::frame> firmware_step(model m, std::uint32_t rx_id,
