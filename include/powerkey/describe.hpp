@@ -171,14 +171,14 @@ constexpr void describe_value(text_writer& w, std::string_view name, const T& v)
 // of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
 // 160 characters hold every message of every model.
 template <class M>
-[[nodiscard]] constexpr result<std::string_view> describe(const M& m, canopen::node_id node,
+[[nodiscard]] constexpr result<std::string_view> describe(const M& msg, canopen::node_id node,
                                                           std::span<char> out) noexcept {
     text_writer w(out);
     w.put("node ");
     w.put_hex(node.value(), 2);
     w.put("h  ");
-    detail::put_title(w, kind_of(m));
-    for_each_field(m, [&w](std::string_view name, const auto& value) {
+    detail::put_title(w, kind_of(msg));
+    for_each_field(msg, [&w](std::string_view name, const auto& value) {
         w.put("  ");
         w.put(name);
         w.put(": ");

@@ -36,18 +36,18 @@ struct is_variant<std::variant<Ts...>> : std::true_type {};
 
 // Calls f(struct) with the message struct that m holds, through any depth of nested variants.
 template <class M, class F>
-constexpr decltype(auto) visit_message(const M& m, F&& f) {
+constexpr decltype(auto) visit_message(const M& msg, F&& f) {
     if constexpr (detail::is_variant<M>::value)
         return std::visit(
-            [&f](const auto& inner) -> decltype(auto) { return visit_message(inner, f); }, m);
+            [&f](const auto& inner) -> decltype(auto) { return visit_message(inner, f); }, msg);
     else
-        return f(m);
+        return f(msg);
 }
 
 // The kind of the struct that m holds.
 template <class M>
-[[nodiscard]] constexpr std::string_view kind_of(const M& m) noexcept {
-    return visit_message(m, [](const auto& s) { return std::string_view{s.kind}; });
+[[nodiscard]] constexpr std::string_view kind_of(const M& msg) noexcept {
+    return visit_message(msg, [](const auto& s) { return std::string_view{s.kind}; });
 }
 
 // A message's kind is its struct's name (a J1939 message's with `j1939_` before it: several share a
@@ -69,8 +69,8 @@ inline constexpr std::string_view former_kinds[][2] = {
 
 // Calls f(name, value) for every field of the struct that m holds.
 template <class M, class F>
-constexpr void for_each_field(const M& m, F&& f) {
-    visit_message(m, [&f](const auto& s) { std::decay_t<decltype(s)>::fields(s, f); });
+constexpr void for_each_field(const M& msg, F&& f) {
+    visit_message(msg, [&f](const auto& s) { std::decay_t<decltype(s)>::fields(s, f); });
 }
 
 // Calls f(std::type_identity<S>{}) for every struct S a message type can hold (depth first, in

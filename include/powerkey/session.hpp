@@ -38,28 +38,42 @@
 
 namespace powerkey {
 
-enum class bus_protocol : std::uint8_t { canopen, j1939 };
+// clang-format off
+#define POWERKEY_BUS_PROTOCOL_LIST(X) \
+    X(canopen) \
+    X(j1939)
+// clang-format on
+enum class bus_protocol : std::uint8_t { POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // Where an SDO frame stands in its exchange.
-enum class sdo_pairing : std::uint8_t {
-    none,        // not an SDO frame of the keypad, or not decodable as one
-    request,     // a request (download, upload, segment); the session now waits for its reply
-    reply,       // the reply to the pending request: `request` says which object
-    unanswered,  // a reply when no request was pending, or for another object
-};
+// clang-format off
+#define POWERKEY_SDO_PAIRING_LIST(X) \
+    X(none)  /* not an SDO frame of the keypad, or not decodable as one */ \
+    X(request)  /* a request (download, upload, segment); the session now waits for its reply */ \
+    X(reply)  /* the reply to the pending request: `request` says which object */ \
+    X(unanswered)  /* a reply when no request was pending, or for another object */
+// clang-format on
+enum class sdo_pairing : std::uint8_t { POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 template <>
 struct enum_names<bus_protocol> {
-    static constexpr enum_name_entry<bus_protocol> entries[] = {{bus_protocol::canopen, "canopen"},
-                                                                {bus_protocol::j1939, "j1939"}};
+    using value_type = bus_protocol;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 template <>
 struct enum_names<sdo_pairing> {
-    using p = sdo_pairing;
-    static constexpr enum_name_entry<p> entries[] = {{p::none, "none"},
-                                                     {p::request, "request"},
-                                                     {p::reply, "reply"},
-                                                     {p::unanswered, "unanswered"}};
+    using value_type = sdo_pairing;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUM_NAME)};
+};
+
+// An SDO frame of the keypad as the session read it: which frame of the protocol (the SDO engine's
+// sdo_op) and the object it names (none for a segment or segment request).
+struct sdo_frame {
+    canopen::sdo_op op;
+    canopen::sdo_address address{};
+    friend constexpr bool operator==(const sdo_frame&, const sdo_frame&) noexcept = default;
 };
 
 // What one frame meant, and what it changed.
@@ -68,6 +82,7 @@ struct session_event {
     canopen::node_id node = canopen::default_node_id;  // the node the frame was decoded for
     result<message> decoded = errc::unexpected_frame;
     sdo_pairing sdo = sdo_pairing::none;
+    std::optional<powerkey::sdo_frame> sdo_frame;  // an SDO frame of the keypad: what it is
     canopen::sdo_address request{};  // the object of the request answered (sdo == reply)
     bool upload_done = false;        // a string upload (segmented or not) ended here: see text()
     errc upload_error{};             // a segmented upload failed with this frame (toggle, abort..)
@@ -100,9 +115,11 @@ public:
         e.decoded = decode(f, e.node, model_);
         const bool ours = e.cls.node == e.node.value();
         if (e.cls.fn == canopen::function::sdo_rx && ours) {
-            if (const auto s = sdo_frame_of(f, e)) on_request(*s, e);
+            e.sdo_frame = sdo_frame_of(f, e);
+            if (e.sdo_frame) on_request(*e.sdo_frame, e);
         } else if (e.cls.fn == canopen::function::sdo_tx && ours) {
-            if (const auto s = sdo_frame_of(f, e)) on_reply(*s, f, e);
+            e.sdo_frame = sdo_frame_of(f, e);
+            if (e.sdo_frame) on_reply(*e.sdo_frame, f, e);
         } else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
             protocol_ = bus_protocol::canopen;
             e.new_protocol = protocol_;
@@ -113,12 +130,6 @@ public:
 private:
     enum class pending_kind : std::uint8_t { none, download, upload, segmented };
 
-    // Which SDO frame of an exchange a frame is, and the object it names.
-    struct sdo_frame {
-        canopen::sdo_op op;
-        canopen::sdo_address address{};
-    };
-
     constexpr canopen::sdo_address address_of(object o) const noexcept {
         return detail::codec_rows[detail::find_codec_row(info_->dictionary, o)].address();
     }
@@ -126,34 +137,34 @@ private:
     // The SDO frame as decode returned it; for a frame decode refused (an object the dictionary
     // lacks, a value out of range), the SDO engine's reading of its specifier and address, so
     // that the keypad's abort still answers it.
-    constexpr std::optional<sdo_frame> sdo_frame_of(const can::frame& f,
-                                                    const session_event& e) const noexcept {
+    constexpr std::optional<powerkey::sdo_frame> sdo_frame_of(
+        const can::frame& f, const session_event& e) const noexcept {
         using op = canopen::sdo_op;
         if (e.decoded) {
             return std::visit(
-                [this](const auto& v) -> std::optional<sdo_frame> {
+                [this](const auto& v) -> std::optional<powerkey::sdo_frame> {
                     using T = std::remove_cvref_t<decltype(v)>;
                     if constexpr (std::is_same_v<T, sdo_read>)
-                        return sdo_frame{op::upload, address_of(v.object)};
+                        return powerkey::sdo_frame{op::upload, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, sdo_write>)
-                        return sdo_frame{op::expedited_download, address_of(v.object)};
+                        return powerkey::sdo_frame{op::expedited_download, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, command>)
-                        return sdo_frame{op::expedited_download,
-                                         address_of(object::command_module)};
+                        return powerkey::sdo_frame{op::expedited_download,
+                                                   address_of(object::command_module)};
                     else if constexpr (std::is_same_v<T, canopen::sdo_segment_request>)
-                        return sdo_frame{op::segment_request};
+                        return powerkey::sdo_frame{op::segment_request};
                     else if constexpr (std::is_same_v<T, canopen::sdo_abort_request>)
-                        return sdo_frame{op::abort_request, v.abort.address};
+                        return powerkey::sdo_frame{op::abort_request, v.abort.address};
                     else if constexpr (std::is_same_v<T, sdo_write_reply>)
-                        return sdo_frame{op::download_response, address_of(v.object)};
+                        return powerkey::sdo_frame{op::download_response, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, sdo_read_reply>)
-                        return sdo_frame{op::expedited_upload, address_of(v.object)};
+                        return powerkey::sdo_frame{op::expedited_upload, address_of(v.object)};
                     else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>)
-                        return sdo_frame{op::upload_initiate, v.address};
+                        return powerkey::sdo_frame{op::upload_initiate, v.address};
                     else if constexpr (std::is_same_v<T, canopen::sdo_segment_response>)
-                        return sdo_frame{op::segment};
+                        return powerkey::sdo_frame{op::segment};
                     else if constexpr (std::is_same_v<T, canopen::sdo_abort_response>)
-                        return sdo_frame{op::abort_response, v.abort.address};
+                        return powerkey::sdo_frame{op::abort_response, v.abort.address};
                     else
                         return std::nullopt;
                 },
@@ -164,10 +175,10 @@ private:
         const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
                                                              : canopen::sdo_response_op(w);
         if (!o) return std::nullopt;
-        return sdo_frame{*o, w.address()};
+        return powerkey::sdo_frame{*o, w.address()};
     }
 
-    constexpr void on_request(const sdo_frame& s, session_event& e) noexcept {
+    constexpr void on_request(const powerkey::sdo_frame& s, session_event& e) noexcept {
         e.sdo = sdo_pairing::request;
         switch (s.op) {
             case canopen::sdo_op::expedited_download:
@@ -191,8 +202,8 @@ private:
     }
 
     // The writes that move the keypad to another node id or protocol.
-    constexpr void on_write(const message& m, session_event& e) noexcept {
-        if (const auto n = node_id_change(m); n && *n != node_) {
+    constexpr void on_write(const message& msg, session_event& e) noexcept {
+        if (const auto n = node_id_change(msg); n && *n != node_) {
             if (info_->replies_from_new_id) {  // PK1000 section 23: the reply comes from the new id
                 previous_node_ = node_;
                 node_ = *n;
@@ -201,14 +212,15 @@ private:
                 change_ = *n;
             }
         }
-        if (const auto* w = std::get_if<sdo_write>(&m);
+        if (const auto* w = std::get_if<sdo_write>(&msg);
             w && w->object == object::protocol_j1939 && w->value.raw == 1) {
             protocol_ = bus_protocol::j1939;  // PK1000 section 49
             e.new_protocol = protocol_;
         }
     }
 
-    constexpr void on_reply(const sdo_frame& s, const can::frame& f, session_event& e) noexcept {
+    constexpr void on_reply(const powerkey::sdo_frame& s, const can::frame& f,
+                            session_event& e) noexcept {
         e.sdo = sdo_pairing::unanswered;
         const pending_kind was = pending_;
         const canopen::sdo_address asked = pending_address_;
@@ -283,17 +295,17 @@ private:
 
     // The CiA 301 view of a decoded reply that belongs to an upload (step_upload's callers made
     // sure it is one): a string read whole, a segmented upload's start, a segment, an abort.
-    constexpr canopen::sdo_response as_response(const message& m) const noexcept {
-        if (const auto* v = std::get_if<sdo_read_reply>(&m)) {
+    constexpr canopen::sdo_response as_response(const message& msg) const noexcept {
+        if (const auto* v = std::get_if<sdo_read_reply>(&msg)) {
             canopen::expedited_data d{
                 canopen::expedited_size::make(v->value.size).value_or(canopen::expedited_size{4}),
                 {}};
             detail::store_le<4>(d.bytes, 0, v->value.raw);
             return canopen::sdo_upload_response{address_of(v->object), d};
         }
-        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&m)) return *i;
-        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&m)) return *s;
-        if (const auto* a = std::get_if<canopen::sdo_abort_response>(&m)) return a->abort;
+        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&msg)) return *i;
+        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&msg)) return *s;
+        if (const auto* a = std::get_if<canopen::sdo_abort_response>(&msg)) return a->abort;
         return canopen::sdo_download_response{};  // not an upload's: the reader refuses it
     }
 

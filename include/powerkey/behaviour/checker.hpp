@@ -48,16 +48,20 @@
 
 namespace powerkey::behaviour {
 
+// clang-format off
+#define POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(X) \
+    X(sdo_overlap)  /* detail: line of the outstanding request, its index, its sub-index */ \
+    X(sdo_no_reply)  /* detail: index, sub-index, ms waited */ \
+    X(sdo_abort)  /* detail: abort code, index, sub-index */ \
+    X(pdo_not_operational)  /* detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0 */ \
+    X(heartbeat_silence)  /* detail: ms silent so far, period ms (1017h), line of the last heartbeat */ \
+    X(key_state_silence)  /* detail: ms silent so far, period ms, line of the last key state */ \
+    X(old_node_traffic)  /* detail: COB-ID, old node id, new node id */ \
+    X(segment_toggle)  /* detail: toggle expected, toggle sent, 0 from the host / 1 the keypad */ \
+    X(segment_size)  /* detail: size announced, bytes received, index */
+// clang-format on
 enum class problem_kind : std::uint8_t {
-    sdo_overlap,          // detail: line of the outstanding request, its index, its sub-index
-    sdo_no_reply,         // detail: index, sub-index, ms waited
-    sdo_abort,            // detail: abort code, index, sub-index
-    pdo_not_operational,  // detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0
-    heartbeat_silence,    // detail: ms silent so far, period ms (1017h), line of the last heartbeat
-    key_state_silence,    // detail: ms silent so far, period ms, line of the last key state
-    old_node_traffic,     // detail: COB-ID, old node id, new node id
-    segment_toggle,       // detail: toggle expected, toggle sent, 0 from the host / 1 the keypad
-    segment_size,         // detail: size announced, bytes received, index
+    POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 struct problem {
@@ -103,10 +107,10 @@ public:
         const canopen::node_id before = session_.node();
         const auto e = session_.step(f);
         if (e.sdo == sdo_pairing::request) {
-            on_request(f, e);
+            on_request(e);
         } else if (e.cls.fn == canopen::function::sdo_tx &&
                    (e.sdo == sdo_pairing::reply || e.sdo == sdo_pairing::unanswered)) {
-            on_response(f, e);
+            on_response(e);
         }
         if (c.fn == canopen::function::heartbeat && c.node == consumer_producer_ &&
             consumer_period_ != 0 && f.size() == 1 && f[0] != 0x00)
@@ -202,19 +206,20 @@ private:
             report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
-    constexpr void on_request(const can::frame& f, const session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_request(f, e.node);
-        if (!r) return;
-        if (std::holds_alternative<canopen::sdo_abort>(*r)) {  // the host ends the transfer
+    // The SDO frames as the session read them (e.sdo_frame: what each is and its object; the
+    // segment's toggle and the abort's code from what decode returned).
+    constexpr void on_request(const session_event& e) noexcept {
+        if (!e.sdo_frame) return;
+        const auto op = e.sdo_frame->op;
+        if (op == canopen::sdo_op::abort_request) {  // the host ends the transfer
             pending_.reset();
             segmented_ = false;
             return;
         }
-        canopen::sdo_address a{};
-        if (const auto* d = std::get_if<canopen::sdo_download_request>(&*r)) a = d->address;
-        if (const auto* u = std::get_if<canopen::sdo_upload_request>(&*r)) a = u->address;
-        const auto* s = std::get_if<canopen::sdo_segment_request>(&*r);
-        if (s != nullptr) a = segment_address_;
+        const auto* s =
+            e.decoded ? std::get_if<canopen::sdo_segment_request>(&*e.decoded) : nullptr;
+        const canopen::sdo_address a =
+            op == canopen::sdo_op::segment_request ? segment_address_ : e.sdo_frame->address;
         if (pending_) {  // the keypad still owes a reply: it drops this one
             report(line_, problem_kind::sdo_overlap, pending_->line, pending_->address.index,
                    pending_->address.subindex);
@@ -227,36 +232,42 @@ private:
             request_toggle_ = s->toggle;
             expect_toggle_ = !s->toggle;
         }
-        if (s == nullptr) segmented_ = false;  // a new transfer
+        if (op != canopen::sdo_op::segment_request) segmented_ = false;  // a new transfer
         pending_ = outstanding{line_, now_, a};
     }
 
-    constexpr void on_response(const can::frame& f, const session_event& e) noexcept {
-        const auto r = canopen::decode_sdo_response(f, e.node);
-        if (!r) return;
+    constexpr void on_response(const session_event& e) noexcept {
+        if (!e.sdo_frame) return;
         const bool answers = pending_.has_value();
         pending_.reset();
-        if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
-            report(line_, problem_kind::sdo_abort, static_cast<std::uint32_t>(a->code),
-                   a->address.index, a->address.subindex);
-            segmented_ = false;
-            return;
-        }
-        if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r)) {
-            segmented_ = answers;
-            expect_toggle_ = false;
-            segment_address_ = i->address;
-            return;
-        }
-        if (const auto* s = std::get_if<canopen::sdo_segment_response>(&*r)) {
-            if (!segmented_) return;
-            if (s->toggle != request_toggle_)
-                report(line_, problem_kind::segment_toggle, request_toggle_ ? 1u : 0u,
-                       s->toggle ? 1u : 0u, 1);
-            if (s->last) {
+        const auto* msg = e.decoded ? &*e.decoded : nullptr;
+        switch (e.sdo_frame->op) {
+            case canopen::sdo_op::abort_response: {
+                const auto* a = msg ? std::get_if<canopen::sdo_abort_response>(msg) : nullptr;
+                report(line_, problem_kind::sdo_abort,
+                       a ? static_cast<std::uint32_t>(a->abort.code) : 0u,
+                       e.sdo_frame->address.index, e.sdo_frame->address.subindex);
                 segmented_ = false;
-                if (e.upload_done) upload_size();
+                return;
             }
+            case canopen::sdo_op::upload_initiate:
+                segmented_ = answers;
+                expect_toggle_ = false;
+                segment_address_ = e.sdo_frame->address;
+                return;
+            case canopen::sdo_op::segment: {
+                const auto* s = msg ? std::get_if<canopen::sdo_segment_response>(msg) : nullptr;
+                if (!segmented_ || s == nullptr) return;
+                if (s->toggle != request_toggle_)
+                    report(line_, problem_kind::segment_toggle, request_toggle_ ? 1u : 0u,
+                           s->toggle ? 1u : 0u, 1);
+                if (s->last) {
+                    segmented_ = false;
+                    if (e.upload_done) upload_size();
+                }
+                return;
+            }
+            default: return;
         }
     }
 
@@ -279,9 +290,9 @@ private:
         state_ = s;
     }
 
-    constexpr void on_message(const message& m, const canopen::cob_info& c) noexcept {
+    constexpr void on_message(const message& msg, const canopen::cob_info& c) noexcept {
         const auto node = session_.node();
-        if (const auto* n = std::get_if<canopen::nmt_message>(&m)) {
+        if (const auto* n = std::get_if<canopen::nmt_message>(&msg)) {
             if (n->target.value() != 0 && n->target.value() != node.value()) return;
             switch (n->command) {
                 case canopen::nmt_command::start: set_state(canopen::nmt_state::operational); break;
@@ -298,7 +309,7 @@ private:
             return;
         }
         if (c.node != node.value()) return;
-        if (const auto* h = std::get_if<canopen::heartbeat_message>(&m)) {
+        if (const auto* h = std::get_if<canopen::heartbeat_message>(&msg)) {
             if (h->state == canopen::nmt_state::boot_up) {
                 // Booted into pre-operational, or operational when set active on startup (PK1000
                 // 22, PKP 13 d). A reboot loses the request in progress and restarts monitoring.
@@ -314,14 +325,14 @@ private:
             hb_reported_ = false;
             return;
         }
-        if (std::holds_alternative<key_state>(m)) {
+        if (std::holds_alternative<key_state>(msg)) {
             set_state(canopen::nmt_state::operational);  // it sends key states only then
             ks_last_ = seen{now_, line_};
             ks_reported_ = false;
             return;
         }
-        if (std::holds_alternative<led_on>(m) || std::holds_alternative<led_blink>(m) ||
-            std::holds_alternative<led_brightness>(m) || std::holds_alternative<backlight>(m)) {
+        if (std::holds_alternative<led_on>(msg) || std::holds_alternative<led_blink>(msg) ||
+            std::holds_alternative<led_brightness>(msg) || std::holds_alternative<backlight>(msg)) {
             if (state_ && *state_ != canopen::nmt_state::operational && !pdo_reported_) {
                 pdo_reported_ = true;
                 report(line_, problem_kind::pdo_not_operational,
@@ -330,7 +341,7 @@ private:
             return;
         }
         // The settings the checker follows, from the host's writes.
-        if (const auto* w = std::get_if<sdo_write>(&m)) {
+        if (const auto* w = std::get_if<sdo_write>(&msg)) {
             if (w->object == object::heartbeat_time) {
                 hb_period_ = w->value.raw;
                 hb_reported_ = false;
@@ -344,7 +355,7 @@ private:
                 consumer_producer_ = static_cast<std::uint8_t>((w->value.raw >> 16) & 0x7Fu);
                 consumer_last_.reset();  // monitoring starts at the first heartbeat (PK1000 28)
             }
-        } else if (const auto* k = std::get_if<command>(&m)) {
+        } else if (const auto* k = std::get_if<command>(&msg)) {
             if (k->code == command_code::set_periodic_transmission) {
                 ks_period_ = k->enabled ? 10u * k->period_10ms : 0u;
                 ks_reported_ = false;
@@ -553,18 +564,9 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::problem_kind> {
-    using k = behaviour::problem_kind;
-    static constexpr enum_name_entry<k> entries[] = {
-        {k::sdo_overlap, "sdo_overlap"},
-        {k::sdo_no_reply, "sdo_no_reply"},
-        {k::sdo_abort, "sdo_abort"},
-        {k::pdo_not_operational, "pdo_not_operational"},
-        {k::heartbeat_silence, "heartbeat_silence"},
-        {k::key_state_silence, "key_state_silence"},
-        {k::old_node_traffic, "old_node_traffic"},
-        {k::segment_toggle, "segment_toggle"},
-        {k::segment_size, "segment_size"},
-    };
+    using value_type = powerkey::behaviour::problem_kind;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 #endif  // POWERKEY_BEHAVIOUR_CHECKER_HPP

@@ -62,10 +62,14 @@
 namespace powerkey::behaviour {
 
 // How the controller makes the keypad operational.
+// clang-format off
+#define POWERKEY_BEHAVIOUR_START_MODE_LIST(X) \
+    X(nmt_start)  /* NMT start after every boot-up (PK1000 4, PKP 4) */ \
+    X(active_on_startup)  /* also set "active on startup" once (PK1000 2012h, PKP command 10h), so the */ \
+    /* keypad comes up operational by itself after a power cycle */
+// clang-format on
 enum class start_mode : std::uint8_t {
-    nmt_start,          // NMT start after every boot-up (PK1000 4, PKP 4)
-    active_on_startup,  // also set "active on startup" once (PK1000 2012h, PKP command 10h), so the
-                        // keypad comes up operational by itself after a power cycle
+    POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 struct controller_config {
@@ -89,31 +93,39 @@ struct controller_config {
 };
 
 // What the controller tells the application.
+// clang-format off
+#define POWERKEY_BEHAVIOUR_EVENT_KIND_LIST(X) \
+    X(found)  /* the keypad answered: `node` */ \
+    X(ready)  /* set up and started: `node`, the model in `model` */ \
+    X(rebooted)  /* a boot-up while it was set up; the setup runs again */ \
+    X(lost)  /* silent for longer than lost_after: go to a safe state */ \
+    X(node_changed)  /* it moved to `node` */ \
+    X(sdo_done)  /* an SDO request was answered (`step`, `what`; `value` of a read) */ \
+    X(sdo_aborted)  /* the keypad aborted it: `value` is the CiA 301 abort code */ \
+    X(sdo_timed_out)  /* no reply after the retries */ \
+    X(sdo_refused)  /* not sent (the model cannot carry it), or a string read past 16 bytes: */ \
+    /* `value` is the errc */ \
+    X(key_pressed)  /* `key` */ \
+    X(key_released)  /* `key` */ \
+    X(key_long_press)  /* `key`, held for long_press */ \
+    X(key_repeat)  /* `key`, held: repeat_delay, then every repeat_period */
+// clang-format on
 enum class event_kind : std::uint8_t {
-    found,           // the keypad answered: `node`
-    ready,           // set up and started: `node`, the model in `model`
-    rebooted,        // a boot-up while it was set up; the setup runs again
-    lost,            // silent for longer than lost_after: go to a safe state
-    node_changed,    // it moved to `node`
-    sdo_done,        // an SDO request was answered (`step`, `what`; `value` of a read)
-    sdo_aborted,     // the keypad aborted it: `value` is the CiA 301 abort code
-    sdo_timed_out,   // no reply after the retries
-    sdo_refused,     // not sent (the model cannot carry it), or a string read past 16 bytes:
-                     // `value` is the errc
-    key_pressed,     // `key`
-    key_released,    // `key`
-    key_long_press,  // `key`, held for long_press
-    key_repeat,      // `key`, held: repeat_delay, then every repeat_period
+    POWERKEY_BEHAVIOUR_EVENT_KIND_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 // Which request an SDO event is about: an entry of the configuration list, or the controller's own.
+// clang-format off
+#define POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST(X) \
+    X(configuration)  /* configuration[step] */ \
+    X(identify)  /* the 100Bh read */ \
+    X(heartbeat)  /* the 1017h write */ \
+    X(start)  /* active on startup */ \
+    X(shadow)  /* LED brightness or backlight (PKP: no PDO for them) */ \
+    X(node_change)  /* change_node() */
+// clang-format on
 enum class sdo_origin : std::uint8_t {
-    configuration,  // configuration[step]
-    identify,       // the 100Bh read
-    heartbeat,      // the 1017h write
-    start,          // active on startup
-    shadow,         // LED brightness or backlight (PKP: no PDO for them)
-    node_change,    // change_node()
+    POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 struct controller_event {
@@ -128,10 +140,14 @@ struct controller_event {
                                      const controller_event&) noexcept = default;
 };
 
+// clang-format off
+#define POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(X) \
+    X(searching)  /* waiting for a boot-up or heartbeat (probing the SDO server) */ \
+    X(setting_up)  /* identifying and configuring, one SDO request at a time */ \
+    X(running)  /* started; the shadow is kept and key events flow */
+// clang-format on
 enum class controller_state : std::uint8_t {
-    searching,   // waiting for a boot-up or heartbeat (probing the SDO server)
-    setting_up,  // identifying and configuring, one SDO request at a time
-    running,     // started; the shadow is kept and key events flow
+    POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = 16>
@@ -629,24 +645,24 @@ private:
     }
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
-    constexpr bool begin_job(const message& m, sdo_origin origin, std::uint8_t step) noexcept {
+    constexpr bool begin_job(const message& msg, sdo_origin origin, std::uint8_t step) noexcept {
         sdo_job j;
-        j.request = m;
+        j.request = msg;
         j.origin = origin;
         j.step = step;
         j.reply_node = node_;
         object o = object::command_module;
-        if (const auto* r = std::get_if<sdo_read>(&m)) {
+        if (const auto* r = std::get_if<sdo_read>(&msg)) {
             o = r->object;
             j.read = true;
-        } else if (const auto* w = std::get_if<sdo_write>(&m)) {
+        } else if (const auto* w = std::get_if<sdo_write>(&msg)) {
             o = w->object;
-        } else if (!std::holds_alternative<command>(m)) {
+        } else if (!std::holds_alternative<command>(msg)) {
             return false;  // not an SDO request: skipped
         }
         j.what = o;
         const auto row = find_row(info_->dictionary, o);
-        const auto f = encode(node_, model_, m);
+        const auto f = encode(node_, model_, msg);
         if (!row || !f) {
             emit_sdo(event_kind::sdo_refused, j,
                      static_cast<std::uint32_t>(f ? errc::unknown_object : f.error()));
@@ -694,8 +710,8 @@ private:
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~pdo_bits);
     }
 
-    constexpr bool send_message(const message& m) noexcept {
-        const auto f = encode(node_, model_, m);
+    constexpr bool send_message(const message& msg) noexcept {
+        const auto f = encode(node_, model_, msg);
         if (!f) return true;  // nothing this model can carry: not retried
         return send_frame(*f);
     }
@@ -752,49 +768,30 @@ private:
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::event_kind> {
-    using k = behaviour::event_kind;
-    static constexpr enum_name_entry<k> entries[] = {
-        {k::found, "found"},
-        {k::ready, "ready"},
-        {k::rebooted, "rebooted"},
-        {k::lost, "lost"},
-        {k::node_changed, "node_changed"},
-        {k::sdo_done, "sdo_done"},
-        {k::sdo_aborted, "sdo_aborted"},
-        {k::sdo_timed_out, "sdo_timed_out"},
-        {k::sdo_refused, "sdo_refused"},
-        {k::key_pressed, "key_pressed"},
-        {k::key_released, "key_released"},
-        {k::key_long_press, "key_long_press"},
-        {k::key_repeat, "key_repeat"},
-    };
+    using value_type = powerkey::behaviour::event_kind;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_EVENT_KIND_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::sdo_origin> {
-    using o = behaviour::sdo_origin;
-    static constexpr enum_name_entry<o> entries[] = {
-        {o::configuration, "configuration"},
-        {o::identify, "identify"},
-        {o::heartbeat, "heartbeat"},
-        {o::start, "start"},
-        {o::shadow, "shadow"},
-        {o::node_change, "node_change"},
-    };
+    using value_type = powerkey::behaviour::sdo_origin;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::controller_state> {
-    using s = behaviour::controller_state;
-    static constexpr enum_name_entry<s> entries[] = {
-        {s::searching, "searching"}, {s::setting_up, "setting_up"}, {s::running, "running"}};
+    using value_type = powerkey::behaviour::controller_state;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::start_mode> {
-    using s = behaviour::start_mode;
-    static constexpr enum_name_entry<s> entries[] = {{s::nmt_start, "nmt_start"},
-                                                     {s::active_on_startup, "active_on_startup"}};
+    using value_type = powerkey::behaviour::start_mode;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 #endif  // POWERKEY_BEHAVIOUR_CONTROLLER_HPP

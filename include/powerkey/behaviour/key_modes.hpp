@@ -22,11 +22,13 @@
 
 namespace powerkey::behaviour {
 
-enum class key_mode : std::uint8_t {
-    momentary,  // state 1 while held, 0 when released
-    toggle,     // each press flips 0 <-> 1
-    cycle,      // each press: state + 1, wrapping after states - 1
-};
+// clang-format off
+#define POWERKEY_BEHAVIOUR_KEY_MODE_LIST(X) \
+    X(momentary)  /* state 1 while held, 0 when released */ \
+    X(toggle)  /* each press flips 0 <-> 1 */ \
+    X(cycle)  /* each press: state + 1, wrapping after states - 1 */
+// clang-format on
+enum class key_mode : std::uint8_t { POWERKEY_BEHAVIOUR_KEY_MODE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // A key whose state changed, and its new state.
 struct key_mode_change {
@@ -89,9 +91,9 @@ private:
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::key_mode> {
-    using m = behaviour::key_mode;
-    static constexpr enum_name_entry<m> entries[] = {
-        {m::momentary, "momentary"}, {m::toggle, "toggle"}, {m::cycle, "cycle"}};
+    using value_type = powerkey::behaviour::key_mode;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_KEY_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 #endif  // POWERKEY_BEHAVIOUR_KEY_MODES_HPP

@@ -22,6 +22,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/detail/bytes.hpp>
+#include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/messages.hpp>
@@ -44,7 +45,17 @@ namespace powerkey::behaviour {
 
 // Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
 // switched to J1939 (PK1000 49), where it hears only the switch back.
-enum class run_state : std::uint8_t { off, pre_operational, operational, stopped, j1939 };
+// clang-format off
+#define POWERKEY_BEHAVIOUR_RUN_STATE_LIST(X) \
+    X(off) \
+    X(pre_operational) \
+    X(operational) \
+    X(stopped) \
+    X(j1939)
+// clang-format on
+enum class run_state : std::uint8_t {
+    POWERKEY_BEHAVIOUR_RUN_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR)
+};
 
 struct keypad_options {
     // A real keypad drops an SDO request that arrives while it is still answering another: no
@@ -477,11 +488,12 @@ private:
         }
         apply_rpdo(*m);
     }
-    constexpr void apply_rpdo(const message& m) noexcept {
-        if (const auto* on = std::get_if<powerkey::led_on>(&m)) on_ = merge(on_, on->map);
-        if (const auto* bl = std::get_if<powerkey::led_blink>(&m)) blink_ = merge(blink_, bl->map);
-        if (const auto* b = std::get_if<powerkey::led_brightness>(&m)) brightness_ = b->level;
-        if (const auto* b = std::get_if<powerkey::backlight>(&m)) {
+    constexpr void apply_rpdo(const message& msg) noexcept {
+        if (const auto* on = std::get_if<powerkey::led_on>(&msg)) on_ = merge(on_, on->map);
+        if (const auto* bl = std::get_if<powerkey::led_blink>(&msg))
+            blink_ = merge(blink_, bl->map);
+        if (const auto* b = std::get_if<powerkey::led_brightness>(&msg)) brightness_ = b->level;
+        if (const auto* b = std::get_if<powerkey::backlight>(&msg)) {
             backlight_.level = b->level;
             if (b->colour != backlight_colour::keep)
                 backlight_.colour = b->colour;          // PK1000 15: 00h keeps the colour
@@ -849,12 +861,9 @@ private:
 
 template <>
 struct powerkey::enum_names<powerkey::behaviour::run_state> {
-    using s = behaviour::run_state;
-    static constexpr enum_name_entry<s> entries[] = {{s::off, "off"},
-                                                     {s::pre_operational, "pre_operational"},
-                                                     {s::operational, "operational"},
-                                                     {s::stopped, "stopped"},
-                                                     {s::j1939, "j1939"}};
+    using value_type = powerkey::behaviour::run_state;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_RUN_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 #endif  // POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP

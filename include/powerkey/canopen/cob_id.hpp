@@ -13,46 +13,33 @@
 
 namespace powerkey::canopen {
 
-enum class function : std::uint8_t {
-    nmt,        // 000h
-    sync,       // 080h
-    tpdo1,      // 180h + node: keypad -> host (key state)
-    tpdo2,      // 280h + node: keypad -> host (PKP-3500-MT encoder 1)
-    tpdo3,      // 380h + node: keypad -> host (PKP-3500-MT encoder 2)
-    tpdo4,      // 480h + node: keypad -> host (PKP-3500-MT analog inputs)
-    rpdo1,      // 200h + node: host -> keypad (LED on)
-    rpdo2,      // 300h + node: host -> keypad (LED blink)
-    rpdo3,      // 400h + node: host -> keypad (LED brightness)
-    rpdo4,      // 500h + node: host -> keypad (backlight)
-    sdo_tx,     // 580h + node: SDO server (keypad) -> client
-    sdo_rx,     // 600h + node: SDO client -> server (keypad)
-    heartbeat,  // 700h + node: boot-up and heartbeat (NMT error control)
-    j1939,      // any 29-bit identifier: J1939, where the keypads' protocol switch lives
-    other,      // any other identifier (EMCY, TIME, TPDO2.., LSS, ...)
-};
+// clang-format off
+#define POWERKEY_CANOPEN_FUNCTION_LIST(X) \
+    X(nmt)  /* 000h */ \
+    X(sync)  /* 080h */ \
+    X(tpdo1)  /* 180h + node: keypad -> host (key state) */ \
+    X(tpdo2)  /* 280h + node: keypad -> host (PKP-3500-MT encoder 1) */ \
+    X(tpdo3)  /* 380h + node: keypad -> host (PKP-3500-MT encoder 2) */ \
+    X(tpdo4)  /* 480h + node: keypad -> host (PKP-3500-MT analog inputs) */ \
+    X(rpdo1)  /* 200h + node: host -> keypad (LED on) */ \
+    X(rpdo2)  /* 300h + node: host -> keypad (LED blink) */ \
+    X(rpdo3)  /* 400h + node: host -> keypad (LED brightness) */ \
+    X(rpdo4)  /* 500h + node: host -> keypad (backlight) */ \
+    X(sdo_tx)  /* 580h + node: SDO server (keypad) -> client */ \
+    X(sdo_rx)  /* 600h + node: SDO client -> server (keypad) */ \
+    X(heartbeat)  /* 700h + node: boot-up and heartbeat (NMT error control) */ \
+    X(j1939)  /* any 29-bit identifier: J1939, where the keypads' protocol switch lives */ \
+    X(other)  /* any other identifier (EMCY, TIME, TPDO2.., LSS, ...) */
+// clang-format on
+enum class function : std::uint8_t { POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 }  // namespace powerkey::canopen
 
 template <>
 struct powerkey::enum_names<powerkey::canopen::function> {
-    using f = canopen::function;
-    static constexpr enum_name_entry<f> entries[] = {
-        {f::nmt, "nmt"},
-        {f::sync, "sync"},
-        {f::tpdo1, "tpdo1"},
-        {f::tpdo2, "tpdo2"},
-        {f::tpdo3, "tpdo3"},
-        {f::tpdo4, "tpdo4"},
-        {f::rpdo1, "rpdo1"},
-        {f::rpdo2, "rpdo2"},
-        {f::rpdo3, "rpdo3"},
-        {f::rpdo4, "rpdo4"},
-        {f::sdo_tx, "sdo_tx"},
-        {f::sdo_rx, "sdo_rx"},
-        {f::heartbeat, "heartbeat"},
-        {f::j1939, "j1939"},
-        {f::other, "other"},
-    };
+    using value_type = powerkey::canopen::function;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 namespace powerkey::canopen {

@@ -6,6 +6,7 @@
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 
 #include <cstdint>
@@ -13,37 +14,33 @@
 
 namespace powerkey::canopen {
 
-enum class nmt_state : std::uint8_t {
-    boot_up = 0x00,  // the boot-up message: the node has just entered pre-operational
-    stopped = 0x04,
-    operational = 0x05,
-    pre_operational = 0x7F,
-};
+// clang-format off
+#define POWERKEY_CANOPEN_NMT_STATE_LIST(X) \
+    X(boot_up, 0x00)  /* the boot-up message: the node has just entered pre-operational */ \
+    X(stopped, 0x04) \
+    X(operational, 0x05) \
+    X(pre_operational, 0x7F)
+// clang-format on
+enum class nmt_state : std::uint8_t { POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 }  // namespace powerkey::canopen
 
 template <>
 struct powerkey::enum_names<powerkey::canopen::nmt_state> {
-    using s = canopen::nmt_state;
-    static constexpr enum_name_entry<s> entries[] = {
-        {s::boot_up, "boot_up"},
-        {s::stopped, "stopped"},
-        {s::operational, "operational"},
-        {s::pre_operational, "pre_operational"},
-    };
+    using value_type = powerkey::canopen::nmt_state;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 namespace powerkey::canopen {
 
 struct heartbeat_message {
-    static constexpr std::string_view kind = "heartbeat_message";
+    POWERKEY_DETAIL_MESSAGE(heartbeat_message);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("state", self.state);
     }
     nmt_state state = nmt_state::boot_up;
-    friend constexpr bool operator==(const heartbeat_message&,
-                                     const heartbeat_message&) noexcept = default;
 };
 
 [[nodiscard]] constexpr can::frame encode(node_id node, const heartbeat_message& m) noexcept {

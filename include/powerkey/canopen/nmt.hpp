@@ -7,6 +7,7 @@
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 
 #include <cstdint>
@@ -41,7 +42,7 @@ struct powerkey::enum_names<powerkey::canopen::nmt_command> {
 namespace powerkey::canopen {
 
 struct nmt_message {
-    static constexpr std::string_view kind = "nmt_message";
+    POWERKEY_DETAIL_MESSAGE(nmt_message);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("command", self.command);
@@ -49,7 +50,6 @@ struct nmt_message {
     }
     nmt_command command = nmt_command::start;
     nmt_target target = all_nodes;
-    friend constexpr bool operator==(const nmt_message&, const nmt_message&) noexcept = default;
 };
 
 [[nodiscard]] constexpr can::frame encode(const nmt_message& m) noexcept {

@@ -15,6 +15,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/bytes.hpp>
 #include <powerkey/detail/inline.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/result.hpp>
@@ -76,7 +77,7 @@ struct expedited_data {
 
 // Write 1..4 bytes (command 2Fh, 2Bh, 27h, 23h).
 struct sdo_download_request {
-    static constexpr std::string_view kind = "sdo_download_request";
+    POWERKEY_DETAIL_MESSAGE(sdo_download_request);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
@@ -86,53 +87,45 @@ struct sdo_download_request {
     }
     sdo_address address;
     expedited_data value;
-    friend constexpr bool operator==(const sdo_download_request&,
-                                     const sdo_download_request&) noexcept = default;
 };
 
 // Read an entry (command 40h).
 struct sdo_upload_request {
-    static constexpr std::string_view kind = "sdo_upload_request";
+    POWERKEY_DETAIL_MESSAGE(sdo_upload_request);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
         f("subindex", self.address.subindex);
     }
     sdo_address address;
-    friend constexpr bool operator==(const sdo_upload_request&,
-                                     const sdo_upload_request&) noexcept = default;
 };
 
 // Ask for the next segment of a segmented upload (60h toggle 0, 70h toggle 1).
 struct sdo_segment_request {
-    static constexpr std::string_view kind = "sdo_segment_request";
+    POWERKEY_DETAIL_MESSAGE(sdo_segment_request);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("toggle", self.toggle);
     }
     bool toggle = false;
-    friend constexpr bool operator==(const sdo_segment_request&,
-                                     const sdo_segment_request&) noexcept = default;
 };
 
 // --- server -> client (580h + node) ---------------------------------------------------------
 
 // A write was done (60h).
 struct sdo_download_response {
-    static constexpr std::string_view kind = "sdo_download_response";
+    POWERKEY_DETAIL_MESSAGE(sdo_download_response);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
         f("subindex", self.address.subindex);
     }
     sdo_address address;
-    friend constexpr bool operator==(const sdo_download_response&,
-                                     const sdo_download_response&) noexcept = default;
 };
 
 // The value read, 1..4 bytes (4Fh, 4Bh, 47h, 43h).
 struct sdo_upload_response {
-    static constexpr std::string_view kind = "sdo_upload_response";
+    POWERKEY_DETAIL_MESSAGE(sdo_upload_response);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
@@ -142,14 +135,12 @@ struct sdo_upload_response {
     }
     sdo_address address;
     expedited_data value;
-    friend constexpr bool operator==(const sdo_upload_response&,
-                                     const sdo_upload_response&) noexcept = default;
 };
 
 // A segmented upload begins: 41h with the size in bytes 4..7, or 40h without a size (bytes 4..7
 // are then reserved; what they held is kept in `size` so the frame re-encodes unchanged).
 struct sdo_upload_initiate_response {
-    static constexpr std::string_view kind = "sdo_upload_initiate_response";
+    POWERKEY_DETAIL_MESSAGE(sdo_upload_initiate_response);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
@@ -160,14 +151,12 @@ struct sdo_upload_initiate_response {
     sdo_address address;
     bool size_indicated = true;
     std::uint32_t size = 0;
-    friend constexpr bool operator==(const sdo_upload_initiate_response&,
-                                     const sdo_upload_initiate_response&) noexcept = default;
 };
 
 // One segment: byte 0 = 000t nnnc (t toggle, n bytes without data, c last segment), then 7 bytes
 // of which the first 7 - n are data. The unused bytes are kept as received.
 struct sdo_segment_response {
-    static constexpr std::string_view kind = "sdo_segment_response";
+    POWERKEY_DETAIL_MESSAGE(sdo_segment_response);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("toggle", self.toggle);
@@ -183,45 +172,47 @@ struct sdo_segment_response {
     [[nodiscard]] constexpr std::span<const std::uint8_t> data() const noexcept {
         return {bytes.data(), static_cast<std::size_t>(7 - unused.value())};
     }
-    friend constexpr bool operator==(const sdo_segment_response&,
-                                     const sdo_segment_response&) noexcept = default;
 };
 
 // --- both directions --------------------------------------------------------------------------
 
 // CiA 301 table 22, the abort codes; a decoded abort keeps any 32-bit code, named or not.
+// clang-format off
+#define POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(X) \
+    X(toggle_bit_not_alternated, 0x0503'0000) \
+    X(timed_out, 0x0504'0000) \
+    X(invalid_command_specifier, 0x0504'0001) \
+    X(invalid_block_size, 0x0504'0002) \
+    X(invalid_sequence_number, 0x0504'0003) \
+    X(crc_error, 0x0504'0004) \
+    X(out_of_memory, 0x0504'0005) \
+    X(unsupported_access, 0x0601'0000) \
+    X(write_only, 0x0601'0001) \
+    X(read_only, 0x0601'0002) \
+    X(object_does_not_exist, 0x0602'0000) \
+    X(cannot_be_mapped, 0x0604'0041) \
+    X(exceeds_pdo_length, 0x0604'0042) \
+    X(parameter_incompatibility, 0x0604'0043) \
+    X(internal_incompatibility, 0x0604'0047) \
+    X(hardware_error, 0x0606'0000) \
+    X(length_mismatch, 0x0607'0010) \
+    X(length_too_high, 0x0607'0012) \
+    X(length_too_low, 0x0607'0013) \
+    X(subindex_does_not_exist, 0x0609'0011) \
+    X(invalid_value, 0x0609'0030) \
+    X(value_too_high, 0x0609'0031) \
+    X(value_too_low, 0x0609'0032) \
+    X(max_less_than_min, 0x0609'0036) \
+    X(resource_not_available, 0x060A'0023) \
+    X(general_error, 0x0800'0000) \
+    X(cannot_store, 0x0800'0020) \
+    X(cannot_store_local_control, 0x0800'0021) \
+    X(cannot_store_device_state, 0x0800'0022) \
+    X(no_object_dictionary, 0x0800'0023) \
+    X(no_data, 0x0800'0024)
+// clang-format on
 enum class sdo_abort_code : std::uint32_t {
-    toggle_bit_not_alternated = 0x0503'0000,
-    timed_out = 0x0504'0000,
-    invalid_command_specifier = 0x0504'0001,
-    invalid_block_size = 0x0504'0002,
-    invalid_sequence_number = 0x0504'0003,
-    crc_error = 0x0504'0004,
-    out_of_memory = 0x0504'0005,
-    unsupported_access = 0x0601'0000,
-    write_only = 0x0601'0001,
-    read_only = 0x0601'0002,
-    object_does_not_exist = 0x0602'0000,
-    cannot_be_mapped = 0x0604'0041,
-    exceeds_pdo_length = 0x0604'0042,
-    parameter_incompatibility = 0x0604'0043,
-    internal_incompatibility = 0x0604'0047,
-    hardware_error = 0x0606'0000,
-    length_mismatch = 0x0607'0010,
-    length_too_high = 0x0607'0012,
-    length_too_low = 0x0607'0013,
-    subindex_does_not_exist = 0x0609'0011,
-    invalid_value = 0x0609'0030,
-    value_too_high = 0x0609'0031,
-    value_too_low = 0x0609'0032,
-    max_less_than_min = 0x0609'0036,
-    resource_not_available = 0x060A'0023,
-    general_error = 0x0800'0000,
-    cannot_store = 0x0800'0020,
-    cannot_store_local_control = 0x0800'0021,
-    cannot_store_device_state = 0x0800'0022,
-    no_object_dictionary = 0x0800'0023,
-    no_data = 0x0800'0024,
+    POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 }  // namespace powerkey::canopen
@@ -229,47 +220,16 @@ enum class sdo_abort_code : std::uint32_t {
 // CiA 301 table 22's abort codes by name; a code CiA 301 does not name prints as "".
 template <>
 struct powerkey::enum_names<powerkey::canopen::sdo_abort_code> {
-    using c = canopen::sdo_abort_code;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::toggle_bit_not_alternated, "toggle_bit_not_alternated"},
-        {c::timed_out, "timed_out"},
-        {c::invalid_command_specifier, "invalid_command_specifier"},
-        {c::invalid_block_size, "invalid_block_size"},
-        {c::invalid_sequence_number, "invalid_sequence_number"},
-        {c::crc_error, "crc_error"},
-        {c::out_of_memory, "out_of_memory"},
-        {c::unsupported_access, "unsupported_access"},
-        {c::write_only, "write_only"},
-        {c::read_only, "read_only"},
-        {c::object_does_not_exist, "object_does_not_exist"},
-        {c::cannot_be_mapped, "cannot_be_mapped"},
-        {c::exceeds_pdo_length, "exceeds_pdo_length"},
-        {c::parameter_incompatibility, "parameter_incompatibility"},
-        {c::internal_incompatibility, "internal_incompatibility"},
-        {c::hardware_error, "hardware_error"},
-        {c::length_mismatch, "length_mismatch"},
-        {c::length_too_high, "length_too_high"},
-        {c::length_too_low, "length_too_low"},
-        {c::subindex_does_not_exist, "subindex_does_not_exist"},
-        {c::invalid_value, "invalid_value"},
-        {c::value_too_high, "value_too_high"},
-        {c::value_too_low, "value_too_low"},
-        {c::max_less_than_min, "max_less_than_min"},
-        {c::resource_not_available, "resource_not_available"},
-        {c::general_error, "general_error"},
-        {c::cannot_store, "cannot_store"},
-        {c::cannot_store_local_control, "cannot_store_local_control"},
-        {c::cannot_store_device_state, "cannot_store_device_state"},
-        {c::no_object_dictionary, "no_object_dictionary"},
-        {c::no_data, "no_data"},
-    };
+    using value_type = powerkey::canopen::sdo_abort_code;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 namespace powerkey::canopen {
 
 // Abort transfer (80h), index, sub-index and a 32-bit code.
 struct sdo_abort {
-    static constexpr std::string_view kind = "sdo_abort";
+    POWERKEY_DETAIL_MESSAGE(sdo_abort);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("index", self.address.index);
@@ -278,33 +238,28 @@ struct sdo_abort {
     }
     sdo_address address;
     sdo_abort_code code = sdo_abort_code::general_error;
-    friend constexpr bool operator==(const sdo_abort&, const sdo_abort&) noexcept = default;
 };
 
 // The two directions of an abort as messages of their own: canopen::sdo_abort has no direction,
 // and a message type that holds both needs them apart so that each re-encodes on its COB-ID.
 // Sent by the client (600h + node):
 struct sdo_abort_request {
-    static constexpr std::string_view kind = "sdo_abort_request";
+    POWERKEY_DETAIL_MESSAGE(sdo_abort_request);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         sdo_abort::fields(self.abort, f);
     }
     sdo_abort abort;
-    friend constexpr bool operator==(const sdo_abort_request&,
-                                     const sdo_abort_request&) noexcept = default;
 };
 
 // Sent by the keypad (580h + node):
 struct sdo_abort_response {
-    static constexpr std::string_view kind = "sdo_abort_response";
+    POWERKEY_DETAIL_MESSAGE(sdo_abort_response);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         sdo_abort::fields(self.abort, f);
     }
     sdo_abort abort;
-    friend constexpr bool operator==(const sdo_abort_response&,
-                                     const sdo_abort_response&) noexcept = default;
 };
 
 using sdo_request =

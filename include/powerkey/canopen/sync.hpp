@@ -5,16 +5,16 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/detail/message.hpp>
 
 #include <string_view>
 
 namespace powerkey::canopen {
 
 struct sync_message {
-    static constexpr std::string_view kind = "sync_message";
+    POWERKEY_DETAIL_MESSAGE(sync_message);
     template <class Self, class F>
     static constexpr void fields(Self&, F&&) {}
-    friend constexpr bool operator==(const sync_message&, const sync_message&) noexcept = default;
 };
 
 [[nodiscard]] constexpr can::frame encode(const sync_message&) noexcept {

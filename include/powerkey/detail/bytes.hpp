@@ -72,15 +72,6 @@ constexpr std::uint64_t low_bits(unsigned n) noexcept {
     return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
 }
 
-// True when bytes [from, to) are all zero (to <= 8): one load of bytes [0, to) and a shift, not
-// a byte loop (the loop was ~10 instructions of every SDO decode, docs/performance.md). Reads
-// only bytes below `to`, as the loop did.
-template <class Bytes>
-constexpr bool all_zero(const Bytes& b, std::size_t from, std::size_t to) noexcept {
-    if (from >= to) return true;
-    return (load_le(b, 0, to) >> (8 * from)) == 0;
-}
-
 }  // namespace powerkey::detail
 
 #endif  // POWERKEY_DETAIL_BYTES_HPP

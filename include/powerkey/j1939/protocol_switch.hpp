@@ -7,6 +7,7 @@
 #define POWERKEY_J1939_PROTOCOL_SWITCH_HPP
 
 #include <powerkey/can/frame.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/j1939/id.hpp>
 
 #include <array>
@@ -21,7 +22,7 @@ inline constexpr std::array<std::uint8_t, 8> switch_to_canopen_data = {0x04, 0x1
                                                                        0xFF, 0xFF, 0xFF, 0xFF};
 
 struct switch_to_canopen {
-    static constexpr std::string_view kind = "j1939_switch_to_canopen";
+    POWERKEY_DETAIL_J1939_MESSAGE(switch_to_canopen);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("priority", self.priority);
@@ -31,8 +32,6 @@ struct switch_to_canopen {
     j1939::priority priority = 6;
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
-    friend constexpr bool operator==(const switch_to_canopen&,
-                                     const switch_to_canopen&) noexcept = default;
 };
 
 [[nodiscard]] constexpr can::frame encode(const switch_to_canopen& m) noexcept {

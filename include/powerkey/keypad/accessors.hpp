@@ -31,9 +31,9 @@
 
 namespace powerkey {
 
-[[nodiscard]] constexpr std::optional<key_set> pressed_keys(const message& m) noexcept {
-    if (const auto* k = std::get_if<key_state>(&m)) return k->keys;
-    if (const auto* r = std::get_if<sdo_read_reply>(&m); r && r->object == object::keys)
+[[nodiscard]] constexpr std::optional<key_set> pressed_keys(const message& msg) noexcept {
+    if (const auto* k = std::get_if<key_state>(&msg)) return k->keys;
+    if (const auto* r = std::get_if<sdo_read_reply>(&msg); r && r->object == object::keys)
         return key_set::from_mask(r->value.raw);
     return std::nullopt;
 }
@@ -50,10 +50,10 @@ struct led_map_update {
 };
 
 namespace detail {
-constexpr leds planes_covered(const model_info& mi, unsigned planes) noexcept {
+constexpr leds planes_covered(const model_info& keypad, unsigned planes) noexcept {
     leds c;
     for (unsigned p = 0; p < planes; ++p)
-        c.of(static_cast<plane>(p)) = led_set::from_mask(mi.led_mask);
+        c.of(static_cast<plane>(p)) = led_set::from_mask(keypad.led_mask);
     return c;
 }
 // The carriers of one map: its PDO type and its objects (whole, per plane, pieces).
@@ -69,54 +69,55 @@ inline constexpr led_objects blink_objects{
     object::led_blink_blue, object::led_blink_r1_12_g1_4, object::led_blink_g5_12,
     object::led_blink_b1_12};
 
-constexpr std::optional<led_map_update> map_of_object(const model_info& mi, object id,
+constexpr std::optional<led_map_update> map_of_object(const model_info& keypad, object id,
                                                       const object_value& v,
                                                       const led_objects& o) noexcept {
     if (id != o.whole && id != o.red && id != o.green && id != o.blue && id != o.part1 &&
         id != o.part2 && id != o.part3)
         return std::nullopt;
-    const auto row = detail::find_codec_row(mi.dictionary, id);
+    const auto row = detail::find_codec_row(keypad.dictionary, id);
     if (row == 0) return std::nullopt;
     const auto& r = detail::codec_rows[row];
-    const auto& m = detail::layout(mi.id);
+    const auto& layout = detail::layout(keypad.id);
     return visit_kind(r.kind, [&](auto k) -> std::optional<led_map_update> {
-        return led_map_update{v.map, decltype(k)::covered(m, r)};
+        return led_map_update{v.map, decltype(k)::covered(layout, r)};
     });
 }
 template <class Pdo>
-constexpr std::optional<led_map_update> led_map_of(const message& m, model md,
+constexpr std::optional<led_map_update> led_map_of(const message& msg, model m,
                                                    const led_objects& o) noexcept {
-    const auto mi = info(md);
-    if (!mi) return std::nullopt;
-    if (const auto* p = std::get_if<Pdo>(&m))
-        return led_map_update{p->map, planes_covered(*mi, mi->planes)};
-    if (const auto* w = std::get_if<sdo_write>(&m))
-        return map_of_object(*mi, w->object, w->value, o);
-    if (const auto* r = std::get_if<sdo_read_reply>(&m))
-        return map_of_object(*mi, r->object, r->value, o);
+    const auto keypad = info(m);
+    if (!keypad) return std::nullopt;
+    if (const auto* p = std::get_if<Pdo>(&msg))
+        return led_map_update{p->map, planes_covered(*keypad, keypad->planes)};
+    if (const auto* w = std::get_if<sdo_write>(&msg))
+        return map_of_object(*keypad, w->object, w->value, o);
+    if (const auto* r = std::get_if<sdo_read_reply>(&msg))
+        return map_of_object(*keypad, r->object, r->value, o);
     return std::nullopt;
 }
 }  // namespace detail
 
-// The LED-on (LED-blink) map a message of model md states, if it states one.
-[[nodiscard]] constexpr std::optional<led_map_update> led_on_map(const message& m,
-                                                                 model md) noexcept {
-    return detail::led_map_of<led_on>(m, md, detail::on_objects);
+// The LED-on (LED-blink) map a message of model m states, if it states one.
+[[nodiscard]] constexpr std::optional<led_map_update> led_on_map(const message& msg,
+                                                                 model m) noexcept {
+    return detail::led_map_of<led_on>(msg, m, detail::on_objects);
 }
-[[nodiscard]] constexpr std::optional<led_map_update> led_blink_map(const message& m,
-                                                                    model md) noexcept {
-    return detail::led_map_of<led_blink>(m, md, detail::blink_objects);
+[[nodiscard]] constexpr std::optional<led_map_update> led_blink_map(const message& msg,
+                                                                    model m) noexcept {
+    return detail::led_map_of<led_blink>(msg, m, detail::blink_objects);
 }
 
-[[nodiscard]] constexpr std::optional<level> led_brightness_level(const message& m) noexcept {
-    if (const auto* p = std::get_if<led_brightness>(&m)) return p->level;
+[[nodiscard]] constexpr std::optional<level> led_brightness_level(const message& msg) noexcept {
+    if (const auto* p = std::get_if<led_brightness>(&msg)) return p->level;
     auto of = [](object o, const object_value& v) -> std::optional<level> {
         if (o != object::led_brightness) return std::nullopt;
         return level::make(v.raw).value_or(level{});
     };
-    if (const auto* w = std::get_if<sdo_write>(&m)) return of(w->object, w->value);
-    if (const auto* r = std::get_if<sdo_read_reply>(&m)) return of(r->object, r->value);
-    if (const auto* c = std::get_if<command>(&m); c && c->code == command_code::set_led_brightness)
+    if (const auto* w = std::get_if<sdo_write>(&msg)) return of(w->object, w->value);
+    if (const auto* r = std::get_if<sdo_read_reply>(&msg)) return of(r->object, r->value);
+    if (const auto* c = std::get_if<command>(&msg);
+        c && c->code == command_code::set_led_brightness)
         return c->level;
     return std::nullopt;
 }
@@ -130,8 +131,8 @@ struct backlight_update {
 };
 
 [[nodiscard]] constexpr std::optional<backlight_update> backlight_change(
-    const message& m) noexcept {
-    if (const auto* p = std::get_if<backlight>(&m)) {
+    const message& msg) noexcept {
+    if (const auto* p = std::get_if<backlight>(&msg)) {
         backlight_update u{p->level, std::nullopt};
         if (p->colour != backlight_colour::keep) u.colour = p->colour;
         return u;
@@ -143,9 +144,9 @@ struct backlight_update {
             return backlight_update{std::nullopt, static_cast<backlight_colour>(v.raw)};
         return std::nullopt;
     };
-    if (const auto* w = std::get_if<sdo_write>(&m)) return of(w->object, w->value);
-    if (const auto* r = std::get_if<sdo_read_reply>(&m)) return of(r->object, r->value);
-    if (const auto* c = std::get_if<command>(&m)) {
+    if (const auto* w = std::get_if<sdo_write>(&msg)) return of(w->object, w->value);
+    if (const auto* r = std::get_if<sdo_read_reply>(&msg)) return of(r->object, r->value);
+    if (const auto* c = std::get_if<command>(&msg)) {
         if (c->code == command_code::set_backlight_level)
             return backlight_update{c->level, std::nullopt};
         if (c->code == command_code::set_backlight_colour)
@@ -155,17 +156,18 @@ struct backlight_update {
 }
 
 // The node id a message moves the keypad to (a write of 2013h, PKP command 70h), if it does.
-[[nodiscard]] constexpr std::optional<canopen::node_id> node_id_change(const message& m) noexcept {
-    if (const auto* w = std::get_if<sdo_write>(&m); w && w->object == object::node_id)
+[[nodiscard]] constexpr std::optional<canopen::node_id> node_id_change(
+    const message& msg) noexcept {
+    if (const auto* w = std::get_if<sdo_write>(&msg); w && w->object == object::node_id)
         return canopen::node_id::make(w->value.raw).value_or(canopen::default_node_id);
-    if (const auto* c = std::get_if<command>(&m); c && c->code == command_code::set_node_id)
+    if (const auto* c = std::get_if<command>(&msg); c && c->code == command_code::set_node_id)
         return c->node_id;
     return std::nullopt;
 }
 
 [[nodiscard]] constexpr std::optional<canopen::nmt_state> reported_nmt_state(
-    const message& m) noexcept {
-    if (const auto* h = std::get_if<canopen::heartbeat_message>(&m)) return h->state;
+    const message& msg) noexcept {
+    if (const auto* h = std::get_if<canopen::heartbeat_message>(&msg)) return h->state;
     return std::nullopt;
 }
 

@@ -58,11 +58,11 @@ constexpr result<message> lift(const result<T>& r) noexcept {
 // (a per-colour SI plane: the model's stride / 8; a string piece: what it carries). The two
 // kinds of size 0 are tested here rather than through visit_kind: a jump on every SDO value cost
 // 4 instructions a frame (docs/performance.md); the static_assert keeps the shortcut honest.
-constexpr std::uint8_t row_size(const model_layout& m, const codec_row& r,
+constexpr std::uint8_t row_size(const model_layout& keypad, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();
-    if (r.kind == value_kind::led_plane) return value_kinds::led_plane::size(m, r, carried);
-    return value_kinds::string::size(m, r, carried);
+    if (r.kind == value_kind::led_plane) return value_kinds::led_plane::size(keypad, r, carried);
+    return value_kinds::string::size(keypad, r, carried);
 }
 // Every row of size 0 is a string or a per-colour plane.
 constexpr bool sized_rows_known() noexcept {
@@ -90,24 +90,24 @@ POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
 
 // Kind K's value of row r, checked, as its message.
 template <class K>
-POWERKEY_DETAIL_HOT constexpr result<message> kind_message(const model_layout& m,
+POWERKEY_DETAIL_HOT constexpr result<message> kind_message(const model_layout& keypad,
                                                            const codec_row& r, std::uint8_t size,
                                                            std::uint32_t data,
                                                            bool write) noexcept {
-    if (const errc e = K::check(m, r, size, data, write); e != errc{}) return e;
-    return value_answer(r, K::value(m, r, size, data), write);
+    if (const errc e = K::check(keypad, r, size, data, write); e != errc{}) return e;
+    return value_answer(r, K::value(keypad, r, size, data), write);
 }
 
 // The kinds that decoders meet rarely: out of line, so that the common ones need no frame (no
 // registers to save) in decode_request and decode_reply.
-POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& m, const codec_row& r,
-                                                          std::uint8_t size, std::uint32_t data,
-                                                          bool write) noexcept {
+POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& keypad,
+                                                          const codec_row& r, std::uint8_t size,
+                                                          std::uint32_t data, bool write) noexcept {
     switch (r.kind) {
-#define POWERKEY_DETAIL_RARE_CASE(name)                                      \
-    case value_kind::name:                                                   \
-        if constexpr (!value_kinds::name::common)                            \
-            return kind_message<value_kinds::name>(m, r, size, data, write); \
+#define POWERKEY_DETAIL_RARE_CASE(name)                                           \
+    case value_kind::name:                                                        \
+        if constexpr (!value_kinds::name::common)                                 \
+            return kind_message<value_kinds::name>(keypad, r, size, data, write); \
         break;
         POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_RARE_CASE)
 #undef POWERKEY_DETAIL_RARE_CASE
@@ -121,34 +121,34 @@ POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& m,
 // key or LED and reserved bits, value_out_of_range outside the row's range, unknown_object for an
 // object without a value). One switch on the row's kind, the common kinds inlined, each case
 // returning its message: nothing is staged and copied.
-POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& m,
+POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& keypad,
                                                             const codec_row& r, std::uint8_t size,
                                                             std::uint32_t data,
                                                             bool write) noexcept {
-    if (size != row_size(m, r, size)) return errc::size_mismatch;
+    if (size != row_size(keypad, r, size)) return errc::size_mismatch;
     if (data > largest_of_size[size & 7u]) return errc::reserved_not_zero;  // bytes past the size
     switch (r.kind) {
-#define POWERKEY_DETAIL_COMMON_CASE(name)                                    \
-    case value_kind::name:                                                   \
-        if constexpr (value_kinds::name::common)                             \
-            return kind_message<value_kinds::name>(m, r, size, data, write); \
+#define POWERKEY_DETAIL_COMMON_CASE(name)                                         \
+    case value_kind::name:                                                        \
+        if constexpr (value_kinds::name::common)                                  \
+            return kind_message<value_kinds::name>(keypad, r, size, data, write); \
         break;
         POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_COMMON_CASE)
 #undef POWERKEY_DETAIL_COMMON_CASE
     }
-    return rare_value(m, r, size, data, write);
+    return rare_value(keypad, r, size, data, write);
 }
 
 // The expedited bytes of a value of row r (what value_message reads back; the codec checks it).
-constexpr canopen::expedited_data write_value(const model_layout& m, const codec_row& r,
+constexpr canopen::expedited_data write_value(const model_layout& keypad, const codec_row& r,
                                               const object_value& v) noexcept {
     const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
     return visit_kind(r.kind, [&](auto k) {
         using K = decltype(k);
-        const std::uint8_t size = r.size() != 0 ? r.size() : K::size(m, r, carried);
+        const std::uint8_t size = r.size() != 0 ? r.size() : K::size(keypad, r, carried);
         canopen::expedited_data d{
             canopen::expedited_size::make(size).value_or(canopen::expedited_size{4}), {}};
-        store_le<4>(d.bytes, 0, K::pack(m, r, v));
+        store_le<4>(d.bytes, 0, K::pack(keypad, r, v));
         return d;
     });
 }
@@ -156,12 +156,12 @@ constexpr canopen::expedited_data write_value(const model_layout& m, const codec
 // --- the command module -------------------------------------------------------------------------
 
 // Errors: value_out_of_range for a parameter outside its range.
-constexpr errc read_param(const model_layout& m, command_param p, std::uint8_t b,
+constexpr errc read_param(const model_layout& keypad, command_param p, std::uint8_t b,
                           command& c) noexcept {
     switch (p) {
         case command_param::none: return errc{};
         case command_param::key:
-            if (b < 1 || b > m.keys) return errc::value_out_of_range;
+            if (b < 1 || b > keypad.keys) return errc::value_out_of_range;
             c.key = b;
             return errc{};
         case command_param::state:
@@ -253,7 +253,7 @@ inline constexpr auto command_shape_index = [] {
 // order: reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h),
 // value_out_of_range (a parameter outside its range).
 template <std::size_t S>
-constexpr result<message> command_of(const model_layout& m, command_code code,
+constexpr result<message> command_of(const model_layout& keypad, command_code code,
                                      std::uint32_t data) noexcept {
     constexpr command_shape shape = command_shapes[S];
     const auto b1 = static_cast<std::uint8_t>(data >> 8);
@@ -262,15 +262,15 @@ constexpr result<message> command_of(const model_layout& m, command_code code,
         return errc::reserved_not_zero;
     command c{};
     c.code = code;
-    if (const errc e = read_param(m, shape.p1, b1, c); e != errc{}) return e;
-    if (const errc e = read_param(m, shape.p2, b2, c); e != errc{}) return e;
+    if (const errc e = read_param(keypad, shape.p1, b1, c); e != errc{}) return e;
+    if (const errc e = read_param(keypad, shape.p2, b2, c); e != errc{}) return e;
     return answer(c);
 }
 
 // The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
 // Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
 // then command_of's. One jump on the command's parameter pair.
-POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout& m,
+POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout& keypad,
                                                               std::uint8_t size,
                                                               std::uint32_t data) noexcept {
     static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
@@ -278,14 +278,14 @@ POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout
     const auto byte = static_cast<std::uint8_t>(data);
     const auto code = static_cast<command_code>(byte);  // a command's byte is its code
     switch (command_shape_index[byte]) {
-        case 1: return command_of<0>(m, code, data);
-        case 2: return command_of<1>(m, code, data);
-        case 3: return command_of<2>(m, code, data);
-        case 4: return command_of<3>(m, code, data);
-        case 5: return command_of<4>(m, code, data);
-        case 6: return command_of<5>(m, code, data);
-        case 7: return command_of<6>(m, code, data);
-        case 8: return command_of<7>(m, code, data);
+        case 1: return command_of<0>(keypad, code, data);
+        case 2: return command_of<1>(keypad, code, data);
+        case 3: return command_of<2>(keypad, code, data);
+        case 4: return command_of<3>(keypad, code, data);
+        case 5: return command_of<4>(keypad, code, data);
+        case 6: return command_of<5>(keypad, code, data);
+        case 7: return command_of<6>(keypad, code, data);
+        case 8: return command_of<7>(keypad, code, data);
         default: return errc::unknown_command;
     }
 }
@@ -324,22 +324,22 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_request(canopen::sdo_word w
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address); unknown_command (an access the row lacks); then value_message's or
 // read_command's.
-constexpr result<message> decode_request(const model_layout& m, const can::frame& f) noexcept {
+constexpr result<message> decode_request(const model_layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_request<result<message>>(
         w,
-        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // an expedited write
-            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // an expedited write
+            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i];
             if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
-                return read_command(m, w.size(), w.data());
+                return read_command(keypad, w.size(), w.data());
             if (!r.writable()) return errc::unknown_command;
-            return value_message(m, r, w.size(), w.data(), true);
+            return value_message(keypad, r, w.size(), w.data(), true);
         },
-        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a read
-            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a read
+            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i];
             if (!r.readable()) return errc::unknown_command;
@@ -350,13 +350,13 @@ constexpr result<message> decode_request(const model_layout& m, const can::frame
 
 // A segment, the initiation of a segmented upload (of a string object only) or an abort from the
 // keypad, or a refusal.
-POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& m,
+POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& keypad,
                                                            canopen::sdo_word w) noexcept {
     const auto op = canopen::other_response_op(w);
     if (!op) return op.error();
     if (*op == canopen::sdo_op::segment) return message{w.segment()};
     if (*op == canopen::sdo_op::upload_initiate) {
-        const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
         if (i == 0) return errc::unknown_object;
         if (codec_rows[i].kind != value_kind::string) return errc::unknown_object;
         return message{w.upload_initiate()};
@@ -367,26 +367,26 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& m
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address, or a segmented upload of an object that is not a string); unknown_command (an
 // access the row lacks); then value_message's.
-constexpr result<message> decode_reply(const model_layout& m, const can::frame& f) noexcept {
+constexpr result<message> decode_reply(const model_layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return errc::wrong_length;
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_response<result<message>>(
         w,
-        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a write acknowledged
-            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a write acknowledged
+            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i];
             if (!r.writable()) return errc::unknown_command;
             return answer(sdo_write_reply{r.id});
         },
-        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // the value read
-            const std::uint8_t i = find_codec_row(m.dictionary, w.key());
+        [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // the value read
+            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
             if (i == 0) return errc::unknown_object;
             const codec_row& r = codec_rows[i];
             if (!r.readable()) return errc::unknown_command;
-            return value_message(m, r, w.size(), w.data(), false);
+            return value_message(keypad, r, w.size(), w.data(), false);
         },
-        [&m, w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_reply(m, w); });
+        [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_reply(keypad, w); });
 }
 
 // --- PDO frames ---------------------------------------------------------------------------------
@@ -395,32 +395,34 @@ constexpr result<message> decode_reply(const model_layout& m, const can::frame& 
 // node's): only the length and data are checked. Each answer is built in the caller's result.
 // No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
 // (data_le) after its length check, the key state's 5 bytes as a word and a byte.
-POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& m,
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& keypad,
                                                             std::uint32_t code,
                                                             const can::frame& f) noexcept {
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
             if (f.size() != 5) return errc::wrong_length;
             const auto w = static_cast<std::uint32_t>(load_le<4>(f.bytes(), 0));
-            if ((w & m.not_keys) != 0) return errc::reserved_not_zero;
+            if ((w & keypad.not_keys) != 0) return errc::reserved_not_zero;
             return answer(key_state{key_set::from_mask(w), f[4]});
         }
         case 0x4:    // RPDO1 LEDs on
         case 0x6: {  // RPDO2 LEDs blinking
             if (f.size() != 8) return errc::wrong_length;
             const std::uint64_t v = f.data_le();
-            // unpack_leds(m, v, m.planes) with the used bits read from the row. Blue shifted
-            // twice: 2 x 32 for the two-plane PK1000, where the used-bit test left no blue bit.
-            if ((v & ~m.led_bits) != 0) return errc::reserved_not_zero;
-            const std::uint64_t up = v >> m.stride;
-            const leds l{led_set::from_mask(v & m.led_mask), led_set::from_mask(up & m.led_mask),
-                         led_set::from_mask((up >> m.stride) & m.led_mask)};
+            // unpack_leds(keypad, v, keypad.planes) with the used bits read from the row. Blue
+            // shifted twice: 2 x 32 for the two-plane PK1000, where the used-bit test left no blue
+            // bit.
+            if ((v & ~keypad.led_bits) != 0) return errc::reserved_not_zero;
+            const std::uint64_t up = v >> keypad.stride;
+            const leds l{led_set::from_mask(v & keypad.led_mask),
+                         led_set::from_mask(up & keypad.led_mask),
+                         led_set::from_mask((up >> keypad.stride) & keypad.led_mask)};
             if (code == 0x4) return answer(led_on{l});
             return answer(led_blink{l});
         }
         case 0x5:    // TPDO2 encoder 1
         case 0x7: {  // TPDO3 encoder 2
-            if (!m.encoders) return errc::wrong_id;
+            if (!keypad.encoders) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
             const std::uint64_t v = f.data_le();
             if ((v >> 32) != 0) return errc::reserved_not_zero;
@@ -431,7 +433,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
                                         static_cast<std::uint16_t>(v >> 8), top});
         }
         case 0x9: {  // TPDO4 analog inputs
-            if (!m.encoders) return errc::wrong_id;
+            if (!keypad.encoders) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
             const std::uint64_t v = f.data_le();
             // In 32-bit halves: no 64-bit shift by a variable (a library call on a 32-bit core).
@@ -446,13 +448,13 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
             return answer(a);
         }
         case 0x8: {  // RPDO3: the encoder rings, or the LED brightness
-            if (m.encoder_leds_pdo) {
+            if (keypad.encoder_leds_pdo) {
                 if (f.size() != 8) return errc::wrong_length;
                 const std::uint64_t v = f.data_le();
                 if ((v >> 32) != 0) return errc::reserved_not_zero;
                 return answer(encoder_leds{led_set::from_mask(v)});
             }
-            if (!m.brightness_pdo) return errc::wrong_id;
+            if (!keypad.brightness_pdo) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
             const std::uint64_t v = f.data_le();
             if ((v >> 8) != 0) return errc::reserved_not_zero;
@@ -460,10 +462,10 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
             return answer(led_brightness{*level::make(v)});
         }
         case 0xA: {  // RPDO4: backlight level and colour
-            if (!m.backlight_pdo) return errc::wrong_id;
+            if (!keypad.backlight_pdo) return errc::wrong_id;
             if (f.size() != 8) return errc::wrong_length;
             const std::uint64_t v = f.data_le();
-            if ((v >> 16) != 0 || (!m.backlight_colour && (v >> 8) != 0))
+            if ((v >> 16) != 0 || (!keypad.backlight_colour && (v >> 8) != 0))
                 return errc::reserved_not_zero;
             const auto colour = static_cast<std::uint8_t>(v >> 8);
             if ((v & 0xFF) > level::max || colour > 0x09) return errc::value_out_of_range;
@@ -474,8 +476,9 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
 }
 
 // A 29-bit frame: the J1939 switch back to CANopen, for a keypad that has it.
-constexpr result<message> decode_extended(const model_layout& m, const can::frame& f) noexcept {
-    if (!m.j1939) return errc::wrong_id_format;
+constexpr result<message> decode_extended(const model_layout& keypad,
+                                          const can::frame& f) noexcept {
+    if (!keypad.j1939) return errc::wrong_id_format;
     return lift(j1939::decode_switch_to_canopen(f));
 }
 
@@ -489,7 +492,7 @@ POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, cano
     return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
 }
 
-constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
+constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id node,
                                    const message& msg) noexcept {
     using canopen::function;
     return std::visit(
@@ -504,7 +507,7 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
                                  (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
             } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
                 return pdo_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2,
-                                 node, 8, pack_leds(m, v.map, m.planes));
+                                 node, 8, pack_leds(keypad, v.map, keypad.planes));
             } else if constexpr (std::is_same_v<T, led_brightness>) {
                 return pdo_frame(function::rpdo3, node, 8, v.level.value());
             } else if constexpr (std::is_same_v<T, encoder_leds>) {
@@ -526,7 +529,7 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
             } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply> ||
                                  std::is_same_v<T, sdo_write_reply>) {
-                const std::uint8_t i = find_codec_row(m.dictionary, v.object);
+                const std::uint8_t i = find_codec_row(keypad.dictionary, v.object);
                 if (i == 0) return errc::unknown_object;
                 const codec_row& row = codec_rows[i];
                 if constexpr (std::is_same_v<T, sdo_read>) {
@@ -536,14 +539,16 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
                 } else if constexpr (std::is_same_v<T, sdo_write>) {
                     if (row.kind == value_kind::commands)
                         return errc::unknown_object;  // a command is a `command`
-                    return canopen::encode(node, canopen::sdo_download_request{
-                                                     row.address(), write_value(m, row, v.value)});
+                    return canopen::encode(
+                        node, canopen::sdo_download_request{row.address(),
+                                                            write_value(keypad, row, v.value)});
                 } else {
-                    return canopen::encode(node, canopen::sdo_upload_response{
-                                                     row.address(), write_value(m, row, v.value)});
+                    return canopen::encode(
+                        node, canopen::sdo_upload_response{row.address(),
+                                                           write_value(keypad, row, v.value)});
                 }
             } else if constexpr (std::is_same_v<T, command>) {
-                const std::uint8_t i = find_codec_row(m.dictionary, object::command_module);
+                const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
                 if (i == 0) return errc::unknown_object;
                 return canopen::encode(
                     node, canopen::sdo_download_request{codec_rows[i].address(), write_command(v)});
@@ -575,7 +580,7 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
                                                                       canopen::node_id node,
                                                                       model m) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    const detail::model_layout& mi = detail::layout(m);
+    const detail::model_layout& keypad = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
     // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
     // function code; a 29-bit frame's id word has bit 31 set, so it lands past the switch's 16
@@ -583,7 +588,7 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
     const std::uint32_t id = f.id_word();
     const std::uint32_t rest = id - node.value();
     if ((rest & 0x7F) != 0) {
-        if (f.is_extended()) return detail::decode_extended(mi, f);
+        if (f.is_extended()) return detail::decode_extended(keypad, f);
         // Node bits 0: only 000h (NMT) and 080h (SYNC) are for every node.
         if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
         if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
@@ -596,22 +601,22 @@ constexpr result<can::frame> build(const model_layout& m, canopen::node_id node,
         case 0x2:  // TIME
         case 0xD:
         case 0xF: return errc::wrong_id;
-        case 0x3: return detail::decode_pdo(mi, 0x3, f);
+        case 0x3: return detail::decode_pdo(keypad, 0x3, f);
         case 0x4:  // LEDs on and blinking: one body (smaller; the kind is one test at its end)
-        case 0x6: return detail::decode_pdo(mi, rest >> 7, f);
-        case 0x5: return detail::decode_pdo(mi, 0x5, f);
-        case 0x7: return detail::decode_pdo(mi, 0x7, f);
-        case 0x8: return detail::decode_pdo(mi, 0x8, f);
-        case 0x9: return detail::decode_pdo(mi, 0x9, f);
-        case 0xA: return detail::decode_pdo(mi, 0xA, f);
-        case 0xB: return detail::decode_reply(mi, f);
-        case 0xC: return detail::decode_request(mi, f);
+        case 0x6: return detail::decode_pdo(keypad, rest >> 7, f);
+        case 0x5: return detail::decode_pdo(keypad, 0x5, f);
+        case 0x7: return detail::decode_pdo(keypad, 0x7, f);
+        case 0x8: return detail::decode_pdo(keypad, 0x8, f);
+        case 0x9: return detail::decode_pdo(keypad, 0x9, f);
+        case 0xA: return detail::decode_pdo(keypad, 0xA, f);
+        case 0xB: return detail::decode_reply(keypad, f);
+        case 0xC: return detail::decode_request(keypad, f);
         case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
             if (f.size() != 1) return errc::wrong_length;
             if (!canopen::is_heartbeat_state(f[0])) return errc::value_out_of_range;
             return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
-        default: return detail::decode_extended(mi, f);  // bit 31 set
+        default: return detail::decode_extended(keypad, f);  // bit 31 set
     }
 }
 

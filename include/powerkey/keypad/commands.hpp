@@ -7,6 +7,7 @@
 #define POWERKEY_KEYPAD_COMMANDS_HPP
 
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/values.hpp>
 
@@ -19,22 +20,24 @@
 namespace powerkey {
 
 // The command byte (byte 4) of each command, PKP section 13 a-m.
-enum class command_code : std::uint8_t {
-    set_led_state = 0x01,                 // 13 a: one key LED
-    set_led_brightness = 0x02,            // 13 b
-    set_backlight_level = 0x03,           // 13 b
-    set_backlight_colour = 0x04,          // 13 c
-    set_active_on_startup = 0x10,         // 13 d
-    set_baud_rate = 0x11,                 // 13 e
-    set_periodic_transmission = 0x12,     // 13 f: key-state PDO every period_10ms x 10 ms
-    set_boot_up = 0x13,                   // 13 g: send the boot-up message at power on
-    set_startup_show = 0x50,              // 13 m
-    set_node_id = 0x70,                   // 13 h: the reply comes from the old id
-    set_demo_mode = 0x7A,                 // 13 l: after the next power cycle
-    set_default_backlight_level = 0x7B,   // 13 j
-    set_default_led_brightness = 0x7C,    // 13 i
-    set_default_backlight_colour = 0x7D,  // 13 k
-};
+// clang-format off
+#define POWERKEY_COMMAND_CODE_LIST(X) \
+    X(set_led_state, 0x01)  /* 13 a: one key LED */ \
+    X(set_led_brightness, 0x02)  /* 13 b */ \
+    X(set_backlight_level, 0x03)  /* 13 b */ \
+    X(set_backlight_colour, 0x04)  /* 13 c */ \
+    X(set_active_on_startup, 0x10)  /* 13 d */ \
+    X(set_baud_rate, 0x11)  /* 13 e */ \
+    X(set_periodic_transmission, 0x12)  /* 13 f: key-state PDO every period_10ms x 10 ms */ \
+    X(set_boot_up, 0x13)  /* 13 g: send the boot-up message at power on */ \
+    X(set_startup_show, 0x50)  /* 13 m */ \
+    X(set_node_id, 0x70)  /* 13 h: the reply comes from the old id */ \
+    X(set_demo_mode, 0x7A)  /* 13 l: after the next power cycle */ \
+    X(set_default_backlight_level, 0x7B)  /* 13 j */ \
+    X(set_default_led_brightness, 0x7C)  /* 13 i */ \
+    X(set_default_backlight_colour, 0x7D)  /* 13 k */
+// clang-format on
+enum class command_code : std::uint8_t { POWERKEY_COMMAND_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // What a parameter byte holds, and so which field of `command` carries it.
 enum class command_param : std::uint8_t {
@@ -103,7 +106,7 @@ inline constexpr auto command_index = [] {
 // One command. `code` says which; its row says which of the other members it carries (the rest
 // stay at their defaults, so that two equal commands compare equal).
 struct command {
-    static constexpr std::string_view kind = "command";
+    POWERKEY_DETAIL_MESSAGE(command);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("command", self.code);
@@ -134,28 +137,13 @@ struct command {
     std::uint8_t period_10ms = 0;
     canopen::node_id node_id = canopen::default_node_id;
     startup_show show = startup_show::complete;
-    friend constexpr bool operator==(const command&, const command&) noexcept = default;
 };
 
 template <>
 struct enum_names<command_code> {
-    using c = command_code;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::set_led_state, "set_led_state"},
-        {c::set_led_brightness, "set_led_brightness"},
-        {c::set_backlight_level, "set_backlight_level"},
-        {c::set_backlight_colour, "set_backlight_colour"},
-        {c::set_active_on_startup, "set_active_on_startup"},
-        {c::set_baud_rate, "set_baud_rate"},
-        {c::set_periodic_transmission, "set_periodic_transmission"},
-        {c::set_boot_up, "set_boot_up"},
-        {c::set_startup_show, "set_startup_show"},
-        {c::set_node_id, "set_node_id"},
-        {c::set_demo_mode, "set_demo_mode"},
-        {c::set_default_backlight_level, "set_default_backlight_level"},
-        {c::set_default_led_brightness, "set_default_led_brightness"},
-        {c::set_default_backlight_colour, "set_default_backlight_colour"},
-    };
+    using value_type = command_code;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_COMMAND_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 }  // namespace powerkey

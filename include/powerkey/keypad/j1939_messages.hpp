@@ -15,6 +15,7 @@
 #define POWERKEY_KEYPAD_J1939_MESSAGES_HPP
 
 #include <powerkey/bounded.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/detail/proxy.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/index_set.hpp>
@@ -67,7 +68,7 @@ constexpr void route_fields(Self& self, F& f) {
 // Sent on every press and release (72h), for every key periodically (71h, 77h) and at power-up
 // (28h), to the destination set by 6Eh (FFh by default).
 struct key_contact {
-    static constexpr std::string_view kind = "j1939_key_contact";
+    POWERKEY_DETAIL_J1939_MESSAGE(key_contact);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -81,13 +82,12 @@ struct key_contact {
     std::uint8_t key = 1;  // 01h..10h: periodic traffic may name keys past the model's (docs)
     bool pressed = false;
     std::uint8_t identifier = keypad_default_address;  // the keypad identifier of 70h, 00h..FEh
-    friend constexpr bool operator==(const key_contact&, const key_contact&) noexcept = default;
 };
 
 // Heartbeat (section 21): 04 1B F9 | counter | keys 8..1 | keys 16..9 | FFh | identifier.
 // Bits above the model's keys are 0.
 struct heartbeat {
-    static constexpr std::string_view kind = "j1939_heartbeat";
+    POWERKEY_DETAIL_J1939_MESSAGE(heartbeat);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -101,13 +101,12 @@ struct heartbeat {
     std::uint8_t counter = 0;  // +1 each message
     key_set keys;
     std::uint8_t identifier = keypad_default_address;  // any byte (LI manual: FFh)
-    friend constexpr bool operator==(const heartbeat&, const heartbeat&) noexcept = default;
 };
 
 // The answer to 2Ah (section 11): 04 1B 2A | bytes 3..7 ASCII, up to the first 00h (E-J1939-2).
 // Each byte is 20h..7Eh or 00h, and only 00h follows a 00h.
 struct software_revision {
-    static constexpr std::string_view kind = "j1939_software_revision";
+    POWERKEY_DETAIL_J1939_MESSAGE(software_revision);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -123,15 +122,13 @@ struct software_revision {
         while (n < bytes.size() && bytes[n] != 0) ++n;
         return n;
     }
-    friend constexpr bool operator==(const software_revision&,
-                                     const software_revision&) noexcept = default;
 };
 
 // LED acknowledgement, SI form (section 19), when 73h enabled it: after each single-LED command,
 //   00h | state | LED | colour | secondary colour | FF FF FF
 // (no 04 1B header; the same identifier as the keypad's other frames).
 struct led_ack {
-    static constexpr std::string_view kind = "j1939_led_ack";
+    POWERKEY_DETAIL_J1939_MESSAGE(led_ack);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -147,14 +144,13 @@ struct led_ack {
     led_mode mode = led_mode::off;
     led_colour colour = led_colour::off;
     led_colour secondary = led_colour::off;
-    friend constexpr bool operator==(const led_ack&, const led_ack&) noexcept = default;
 };
 
 // LED acknowledgement, LI form (PKP-2400-LI J1939 manual page 11):
 //   00h | FFh | LED | code | FF FF FF FF
 // The code repeats the LED command's byte 4; its table is in no source.
 struct led_ack_code {
-    static constexpr std::string_view kind = "j1939_led_ack_code";
+    POWERKEY_DETAIL_J1939_MESSAGE(led_ack_code);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -166,12 +162,11 @@ struct led_ack_code {
     std::uint8_t source = keypad_default_address;
     std::uint8_t key = 1;
     std::uint8_t code = 0;
-    friend constexpr bool operator==(const led_ack_code&, const led_ack_code&) noexcept = default;
 };
 
 // Address claimed (PGN EE00h, section 20): the NAME in the 8 data bytes, to the global address.
 struct address_claimed {
-    static constexpr std::string_view kind = "j1939_address_claimed";
+    POWERKEY_DETAIL_J1939_MESSAGE(address_claimed);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -181,8 +176,6 @@ struct address_claimed {
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
     j1939::name name;
-    friend constexpr bool operator==(const address_claimed&,
-                                     const address_claimed&) noexcept = default;
 };
 
 // --- bus -> keypad
@@ -191,7 +184,7 @@ struct address_claimed {
 // Set single LED state, SI form (section 7a):
 //   04 1B 01 | LED | colour | state | secondary colour (alternate blink) | FFh
 struct set_led {
-    static constexpr std::string_view kind = "j1939_set_led";
+    POWERKEY_DETAIL_J1939_MESSAGE(set_led);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -207,13 +200,12 @@ struct set_led {
     led_colour colour = led_colour::off;
     led_mode mode = led_mode::off;
     led_colour secondary = led_colour::off;  // 00h..09h, or not_used (FFh)
-    friend constexpr bool operator==(const set_led&, const set_led&) noexcept = default;
 };
 
 // Set single LED state, LI form (inferred from the PKP-2400-LI's acknowledgement, docs):
 //   04 1B 01 | LED | code | FF FF FF
 struct set_led_code {
-    static constexpr std::string_view kind = "j1939_set_led_code";
+    POWERKEY_DETAIL_J1939_MESSAGE(set_led_code);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -225,7 +217,6 @@ struct set_led_code {
     std::uint8_t source = 0x00;
     std::uint8_t key = 1;
     std::uint8_t code = 0;
-    friend constexpr bool operator==(const set_led_code&, const set_led_code&) noexcept = default;
 };
 
 struct colour_frame_tag;
@@ -239,7 +230,7 @@ using colour_frame = bounded<colour_frame_tag, std::uint8_t, 1, 2>;
 // TABLE 3 (combine() in codec.hpp). Stored as the nibbles; the fields are one LED set per code
 // (led_set, LEDs 1..16), named as the colours ("red" ... "yellow_green") and "blink".
 struct multiple_leds {
-    static constexpr std::string_view kind = "j1939_multiple_leds";
+    POWERKEY_DETAIL_J1939_MESSAGE(multiple_leds);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -290,7 +281,6 @@ struct multiple_leds {
                 set(k, 0);
         }
     }
-    friend constexpr bool operator==(const multiple_leds&, const multiple_leds&) noexcept = default;
 };
 
 // --- the configuration commands (sections 8..26): 04 1B | command | byte 3 | byte 4 | FF.. -----
@@ -383,7 +373,7 @@ inline constexpr auto command_index = [] {
 // One configuration command. `code` says which; its row says which other members it carries
 // (the rest stay at their defaults, so that two equal commands compare equal).
 struct command {
-    static constexpr std::string_view kind = "j1939_command";
+    POWERKEY_DETAIL_J1939_MESSAGE(command);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::route_fields(self, f);
@@ -420,7 +410,6 @@ struct command {
     baud_rate baud = baud_rate::kbit_250;
     std::uint8_t period_10ms = 0;
     backlight_colour colour = backlight_colour::keep;
-    friend constexpr bool operator==(const command&, const command&) noexcept = default;
 };
 
 // Every J1939 frame of the keypads.

@@ -19,6 +19,7 @@
 #include <powerkey/canopen/nmt.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/objects.hpp>
@@ -37,7 +38,7 @@ namespace powerkey {
 // TPDO1 180h + node, keypad -> host: the pressed keys and the tick timer (+1 every 100 ms, wraps).
 // PK1000 section 11, PKP section 10: bytes 0..1 keys, 2..3 00h, 4 the tick.
 struct key_state {
-    static constexpr std::string_view kind = "key_state";
+    POWERKEY_DETAIL_MESSAGE(key_state);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("keys", self.keys);
@@ -45,47 +46,42 @@ struct key_state {
     }
     key_set keys;
     std::uint8_t tick = 0;
-    friend constexpr bool operator==(const key_state&, const key_state&) noexcept = default;
 };
 
 // RPDO1 200h + node, host -> keypad: which LEDs are on (PK1000 section 12, PKP section 11).
 struct led_on {
-    static constexpr std::string_view kind = "led_on";
+    POWERKEY_DETAIL_MESSAGE(led_on);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::map_fields(self.map, f);
     }
     leds map;
-    friend constexpr bool operator==(const led_on&, const led_on&) noexcept = default;
 };
 
 // RPDO2 300h + node: which LEDs blink; on and blink together blink alternately (PK1000 13, PKP 12).
 struct led_blink {
-    static constexpr std::string_view kind = "led_blink";
+    POWERKEY_DETAIL_MESSAGE(led_blink);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         detail::map_fields(self.map, f);
     }
     leds map;
-    friend constexpr bool operator==(const led_blink&, const led_blink&) noexcept = default;
 };
 
 // RPDO3 400h + node: LED brightness until power off (PK1000 section 14): level | 00h x 7.
 struct led_brightness {
-    static constexpr std::string_view kind = "led_brightness";
+    POWERKEY_DETAIL_MESSAGE(led_brightness);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("level", self.level);
     }
     powerkey::level level = 0x3F;
-    friend constexpr bool operator==(const led_brightness&,
-                                     const led_brightness&) noexcept = default;
 };
 
 // RPDO4 500h + node: backlight level and colour until power off (PK1000 section 15):
 // level | colour (00h keeps the stored colour) | 00h x 6.
 struct backlight {
-    static constexpr std::string_view kind = "backlight";
+    POWERKEY_DETAIL_MESSAGE(backlight);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("level", self.level);
@@ -93,14 +89,13 @@ struct backlight {
     }
     powerkey::level level = 0;
     backlight_colour colour = backlight_colour::keep;
-    friend constexpr bool operator==(const backlight&, const backlight&) noexcept = default;
 };
 
 // TPDO2 280h + node (encoder 1) and TPDO3 380h + node (encoder 2), PKP-3500-MT sections 12, 13:
 //   byte 0 X YYYYYYY (X 1 = counterclockwise, Y ticks since the last message) | counter LSB MSB |
 //   TOP (00h none, 02h..10h) | 00h x 4
 struct encoder_state {
-    static constexpr std::string_view kind = "encoder_state";
+    POWERKEY_DETAIL_MESSAGE(encoder_state);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("encoder", self.encoder);
@@ -114,13 +109,12 @@ struct encoder_state {
     std::uint8_t ticks = 0;     // 0..127 since the last message
     std::uint16_t counter = 0;  // the tick counter, 0..65535 (or 0..TOP)
     std::uint8_t top = 0;       // 00h (none) or 02h..10h
-    friend constexpr bool operator==(const encoder_state&, const encoder_state&) noexcept = default;
 };
 
 // TPDO4 480h + node, PKP-3500-MT section 14: the four 0..5 V inputs, each 16 bits little endian,
 // 0000h..01F4h in units of 10 mV. The fields are in millivolts (0..5000, multiples of 10).
 struct analog_inputs {
-    static constexpr std::string_view kind = "analog_inputs";
+    POWERKEY_DETAIL_MESSAGE(analog_inputs);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("in0_mv", self.mv[0]);
@@ -129,37 +123,34 @@ struct analog_inputs {
         f("in3_mv", self.mv[3]);
     }
     std::array<std::uint16_t, 4> mv{};
-    friend constexpr bool operator==(const analog_inputs&, const analog_inputs&) noexcept = default;
 };
 
 // RPDO3 400h + node on the PKP-3500-MT (section 17): the encoder ring LEDs, 1..16 encoder 1,
 // 17..32 encoder 2, as a 32-bit string in bytes 0..3 | 00h x 4.
 struct encoder_leds {
-    static constexpr std::string_view kind = "encoder_leds";
+    POWERKEY_DETAIL_MESSAGE(encoder_leds);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("leds", self.leds);
     }
     led_set leds;
-    friend constexpr bool operator==(const encoder_leds&, const encoder_leds&) noexcept = default;
 };
 
 // --- SDO reads and writes of the object dictionary ----------------------------------------------
 
 // Host -> keypad, 600h + node: read an object (upload request 40h).
 struct sdo_read {
-    static constexpr std::string_view kind = "sdo_read";
+    POWERKEY_DETAIL_MESSAGE(sdo_read);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
     }
     powerkey::object object = powerkey::object::keys;
-    friend constexpr bool operator==(const sdo_read&, const sdo_read&) noexcept = default;
 };
 
 // Keypad -> host, 580h + node: the value read (expedited upload response 43h/47h/4Bh/4Fh).
 struct sdo_read_reply {
-    static constexpr std::string_view kind = "sdo_read_reply";
+    POWERKEY_DETAIL_MESSAGE(sdo_read_reply);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
@@ -167,13 +158,11 @@ struct sdo_read_reply {
     }
     powerkey::object object = powerkey::object::keys;
     object_value value;
-    friend constexpr bool operator==(const sdo_read_reply&,
-                                     const sdo_read_reply&) noexcept = default;
 };
 
 // Host -> keypad, 600h + node: write an object (expedited download 23h/27h/2Bh/2Fh).
 struct sdo_write {
-    static constexpr std::string_view kind = "sdo_write";
+    POWERKEY_DETAIL_MESSAGE(sdo_write);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
@@ -181,19 +170,16 @@ struct sdo_write {
     }
     powerkey::object object = powerkey::object::led_brightness;
     object_value value;
-    friend constexpr bool operator==(const sdo_write&, const sdo_write&) noexcept = default;
 };
 
 // Keypad -> host, 580h + node: a write was done (60h); the manuals' "command accepted".
 struct sdo_write_reply {
-    static constexpr std::string_view kind = "sdo_write_reply";
+    POWERKEY_DETAIL_MESSAGE(sdo_write_reply);
     template <class Self, class F>
     static constexpr void fields(Self& self, F&& f) {
         f("object", self.object);
     }
     powerkey::object object = powerkey::object::led_brightness;
-    friend constexpr bool operator==(const sdo_write_reply&,
-                                     const sdo_write_reply&) noexcept = default;
 };
 
 // Every frame any keypad speaks or hears.

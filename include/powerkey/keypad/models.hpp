@@ -253,9 +253,10 @@ namespace detail {
 // The LED-map rule's planes do not overlap (each fits its stride) and end within 64 bits: what
 // the codec's LED PDO decoder (two shifts by the stride, a test against led_bits) relies on.
 constexpr bool planes_apart() noexcept {
-    for (const auto& m : model_table)
-        if (m.planes < 1 || m.planes > 3 || m.stride == 0 ||
-            (std::uint64_t{m.led_mask} >> m.stride) != 0 || m.stride * m.planes > 64)
+    for (const auto& keypad : model_table)
+        if (keypad.planes < 1 || keypad.planes > 3 || keypad.stride == 0 ||
+            (std::uint64_t{keypad.led_mask} >> keypad.stride) != 0 ||
+            keypad.stride * keypad.planes > 64)
             return false;
     return true;
 }
@@ -299,23 +300,24 @@ struct model_layout {
         return fit < planes ? fit : planes;
     }
 };
-constexpr model_layout layout_of(const model_info& m) noexcept {
-    return {m.id,
-            m.dictionary,
-            m.keys,
-            m.leds,
-            m.planes,
-            m.stride,
-            m.brightness_pdo,
-            m.encoder_leds_pdo,
-            m.backlight_pdo,
-            m.backlight_colour,
-            m.encoders,
-            m.j1939,
-            m.led_mask,
-            m.not_keys,
-            ~static_cast<std::uint32_t>(m.led_bits & low_bits(m.object_planes() * m.stride)),
-            m.led_bits};
+constexpr model_layout layout_of(const model_info& keypad) noexcept {
+    return {keypad.id,
+            keypad.dictionary,
+            keypad.keys,
+            keypad.leds,
+            keypad.planes,
+            keypad.stride,
+            keypad.brightness_pdo,
+            keypad.encoder_leds_pdo,
+            keypad.backlight_pdo,
+            keypad.backlight_colour,
+            keypad.encoders,
+            keypad.j1939,
+            keypad.led_mask,
+            keypad.not_keys,
+            ~static_cast<std::uint32_t>(keypad.led_bits &
+                                        low_bits(keypad.object_planes() * keypad.stride)),
+            keypad.led_bits};
 }
 inline constexpr auto model_layouts = [] {
     std::array<model_layout, model_count> t{};
@@ -371,21 +373,21 @@ private:
 // The first `planes` planes of l as the model's bit string. LEDs the model lacks are dropped:
 // callers that must refuse them compare with unpack_leds (the codec does).
 template <class Row>  // model_info, or the codec's detail::model_layout
-[[nodiscard]] constexpr std::uint64_t pack_leds(const Row& m, const leds& l,
+[[nodiscard]] constexpr std::uint64_t pack_leds(const Row& keypad, const leds& l,
                                                 unsigned planes) noexcept {
     std::uint64_t v = 0;
     for (unsigned c = 0; c < planes; ++c)
-        v |= (l.of(static_cast<plane>(c)).mask() & m.led_mask) << (c * m.stride);
+        v |= (l.of(static_cast<plane>(c)).mask() & keypad.led_mask) << (c * keypad.stride);
     return v;
 }
 
 // The map in a bit string of the model; errc::reserved_not_zero for a set bit that names no LED.
 // The planes written out rather than looped: this runs for every LED PDO (docs/performance.md).
 template <class Row>
-[[nodiscard]] constexpr result<leds> unpack_leds(const Row& m, std::uint64_t v,
+[[nodiscard]] constexpr result<leds> unpack_leds(const Row& keypad, std::uint64_t v,
                                                  unsigned planes) noexcept {
-    const std::uint64_t one = m.led_mask;
-    const unsigned s = m.stride;
+    const std::uint64_t one = keypad.led_mask;
+    const unsigned s = keypad.stride;
     std::uint64_t used = one;
     leds l;
     l.red = led_set::from_mask(v & one);
@@ -403,8 +405,8 @@ template <class Row>
 
 // Keys 1..N as bits 0..N-1; errc::reserved_not_zero for a bit above the model's keys.
 template <class Row>
-[[nodiscard]] constexpr result<key_set> unpack_keys(const Row& m, std::uint64_t v) noexcept {
-    if ((v >> m.keys) != 0) return errc::reserved_not_zero;
+[[nodiscard]] constexpr result<key_set> unpack_keys(const Row& keypad, std::uint64_t v) noexcept {
+    if ((v >> keypad.keys) != 0) return errc::reserved_not_zero;
     return key_set::from_mask(v);
 }
 

@@ -226,7 +226,13 @@ struct enum_names<object> {
     }();
 };
 
-enum class access : std::uint8_t { read_only, write_only, read_write };
+// clang-format off
+#define POWERKEY_ACCESS_LIST(X) \
+    X(read_only) \
+    X(write_only) \
+    X(read_write)
+// clang-format on
+enum class access : std::uint8_t { POWERKEY_ACCESS_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // One entry of a dictionary.
 struct object_row {
@@ -274,9 +280,9 @@ inline constexpr std::size_t dictionary_count = std::size(enum_names<dictionary>
 
 template <>
 struct enum_names<access> {
-    static constexpr enum_name_entry<access> entries[] = {{access::read_only, "read_only"},
-                                                          {access::write_only, "write_only"},
-                                                          {access::read_write, "read_write"}};
+    using value_type = access;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_ACCESS_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 }  // namespace powerkey

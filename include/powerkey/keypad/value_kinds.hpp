@@ -123,10 +123,10 @@ struct one_number : kind_defaults {
 };
 
 // Every LED of the model's planes in `planes` (a plane k, or the first `n` planes).
-constexpr leds planes_of(const m_layout& m, unsigned first, unsigned count) noexcept {
+constexpr leds planes_of(const m_layout& keypad, unsigned first, unsigned count) noexcept {
     leds c;
     for (unsigned p = first; p < first + count && p < 3; ++p)
-        c.of(static_cast<plane>(p)) = led_set::from_mask(m.led_mask);
+        c.of(static_cast<plane>(p)) = led_set::from_mask(keypad.led_mask);
     return c;
 }
 }  // namespace detail
@@ -206,9 +206,9 @@ struct keys : detail::kind_defaults {
     static constexpr void fields(const object_info&, V& v, F& f) {
         proxy_field_keys(v, f);
     }
-    static constexpr errc check(const m_layout& m, const codec_row&, std::uint8_t,
+    static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
-        return (data & m.not_keys) != 0 ? errc::reserved_not_zero : errc{};
+        return (data & keypad.not_keys) != 0 ? errc::reserved_not_zero : errc{};
     }
 
 private:
@@ -228,14 +228,14 @@ struct led_plane : detail::kind_defaults {
     static constexpr void fields(const object_info& o, V& v, F& f) {
         f(to_plane_name(o.holds), v.map.of(o.holds));
     }
-    static constexpr std::uint8_t size(const m_layout& m, const codec_row& r,
+    static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
                                        std::uint8_t) noexcept {
-        return r.size() != 0 ? r.size() : static_cast<std::uint8_t>(m.stride / 8);
+        return r.size() != 0 ? r.size() : static_cast<std::uint8_t>(keypad.stride / 8);
     }
     // The one plane r.a (no leds::of: its address would be taken).
-    static constexpr errc check(const m_layout& m, const codec_row&, std::uint8_t,
+    static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
-        return (data & ~m.led_mask) != 0 ? errc::reserved_not_zero : errc{};
+        return (data & ~keypad.led_mask) != 0 ? errc::reserved_not_zero : errc{};
     }
     static constexpr object_value value(const m_layout&, const codec_row& r, std::uint8_t,
                                         std::uint32_t data) noexcept {
@@ -248,8 +248,8 @@ struct led_plane : detail::kind_defaults {
                                         const object_value& v) noexcept {
         return static_cast<std::uint32_t>(v.map.of(static_cast<plane>(r.a)).mask());
     }
-    static constexpr leds covered(const m_layout& m, const codec_row& r) noexcept {
-        return detail::planes_of(m, r.a, 1);
+    static constexpr leds covered(const m_layout& keypad, const codec_row& r) noexcept {
+        return detail::planes_of(keypad, r.a, 1);
     }
 
 private:
@@ -266,24 +266,25 @@ struct led_map : detail::kind_defaults {
         detail::map_fields(v.map, f);
     }
     // unpack_leds(m, data, m.object_planes()), against the complement of the LED bits (one AND)
-    static constexpr errc check(const m_layout& m, const codec_row&, std::uint8_t,
+    static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
-        return (data & m.object_not_leds) != 0 ? errc::reserved_not_zero : errc{};
+        return (data & keypad.object_not_leds) != 0 ? errc::reserved_not_zero : errc{};
     }
-    static constexpr object_value value(const m_layout& m, const codec_row&, std::uint8_t,
+    static constexpr object_value value(const m_layout& keypad, const codec_row&, std::uint8_t,
                                         std::uint32_t data) noexcept {
-        const std::uint64_t up = std::uint64_t{data} >> m.stride;
-        return {0,
-                {led_set::from_mask(data & m.led_mask), led_set::from_mask(up & m.led_mask),
-                 led_set::from_mask((up >> m.stride) & m.led_mask)},
-                0};
+        const std::uint64_t up = std::uint64_t{data} >> keypad.stride;
+        return {
+            0,
+            {led_set::from_mask(data & keypad.led_mask), led_set::from_mask(up & keypad.led_mask),
+             led_set::from_mask((up >> keypad.stride) & keypad.led_mask)},
+            0};
     }
-    static constexpr std::uint32_t pack(const m_layout& m, const codec_row&,
+    static constexpr std::uint32_t pack(const m_layout& keypad, const codec_row&,
                                         const object_value& v) noexcept {
-        return static_cast<std::uint32_t>(pack_leds(m, v.map, m.object_planes()));
+        return static_cast<std::uint32_t>(pack_leds(keypad, v.map, keypad.object_planes()));
     }
-    static constexpr leds covered(const m_layout& m, const codec_row&) noexcept {
-        return detail::planes_of(m, 0, m.object_planes());
+    static constexpr leds covered(const m_layout& keypad, const codec_row&) noexcept {
+        return detail::planes_of(keypad, 0, keypad.object_planes());
     }
 };
 // "period_ms", "producer": a consumer heartbeat (1016h sub 1): period 0 (off) or within the
@@ -392,25 +393,27 @@ struct led_part : detail::kind_defaults {
     static constexpr void fields(const object_info&, V& v, F& f) {
         detail::map_fields(v.map, f);
     }
-    static constexpr errc check(const m_layout& m, const codec_row& r, std::uint8_t,
+    static constexpr errc check(const m_layout& keypad, const codec_row& r, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
         // A bit past the piece, or one that names no LED of the model's planes (led_bits).
         if ((data & ~detail::low_bits(r.part_width())) != 0 ||
-            ((std::uint64_t{data} << r.a) & ~m.led_bits) != 0)
+            ((std::uint64_t{data} << r.a) & ~keypad.led_bits) != 0)
             return errc::reserved_not_zero;
         return errc{};
     }
-    static constexpr object_value value(const m_layout& m, const codec_row& r, std::uint8_t,
+    static constexpr object_value value(const m_layout& keypad, const codec_row& r, std::uint8_t,
                                         std::uint32_t data) noexcept {
-        return {0, unpack_leds(m, std::uint64_t{data} << r.a, m.planes).value_or(leds{}), 0};
+        return {0, unpack_leds(keypad, std::uint64_t{data} << r.a, keypad.planes).value_or(leds{}),
+                0};
     }
-    static constexpr std::uint32_t pack(const m_layout& m, const codec_row& r,
+    static constexpr std::uint32_t pack(const m_layout& keypad, const codec_row& r,
                                         const object_value& v) noexcept {
-        return static_cast<std::uint32_t>((pack_leds(m, v.map, m.planes) >> r.a) &
+        return static_cast<std::uint32_t>((pack_leds(keypad, v.map, keypad.planes) >> r.a) &
                                           detail::low_bits(r.part_width()));
     }
-    static constexpr leds covered(const m_layout& m, const codec_row& r) noexcept {
-        return unpack_leds(m, (detail::low_bits(r.part_width()) << r.a) & m.led_bits, m.planes)
+    static constexpr leds covered(const m_layout& keypad, const codec_row& r) noexcept {
+        return unpack_leds(keypad, (detail::low_bits(r.part_width()) << r.a) & keypad.led_bits,
+                           keypad.planes)
             .value_or(leds{});
     }
 };

@@ -68,32 +68,52 @@ enum class baud_rate : std::uint8_t {
 enum class startup_show : std::uint8_t { disabled = 0x00, complete = 0x01, fast_flash = 0x02 };
 
 // What one key LED does, PKP command 01h byte 6 (PKP section 13 a).
-enum class led_state : std::uint8_t {
-    off = 0x00,
-    red_on = 0x01,
-    red_blink = 0x02,
-    red_alternate_blink = 0x03,
-    green_on = 0x04,
-    green_blink = 0x05,
-    green_alternate_blink = 0x06,
-    blue_on = 0x07,
-    blue_blink = 0x08,
-    blue_alternate_blink = 0x09,
-    red_green_blink = 0x0A,
-    amber_red_blink = 0x0C,
-    green_amber_blink = 0x0E,
-};
+// clang-format off
+#define POWERKEY_LED_STATE_LIST(X) \
+    X(off, 0x00) \
+    X(red_on, 0x01) \
+    X(red_blink, 0x02) \
+    X(red_alternate_blink, 0x03) \
+    X(green_on, 0x04) \
+    X(green_blink, 0x05) \
+    X(green_alternate_blink, 0x06) \
+    X(blue_on, 0x07) \
+    X(blue_blink, 0x08) \
+    X(blue_alternate_blink, 0x09) \
+    X(red_green_blink, 0x0A) \
+    X(amber_red_blink, 0x0C) \
+    X(green_amber_blink, 0x0E)
+// clang-format on
+enum class led_state : std::uint8_t { POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // The colour planes of an LED map.
 enum class plane : std::uint8_t { red = 0, green = 1, blue = 2 };
 
 // What one key's LEDs show: a plane or a mix of planes (PKP sections 11, 12: amber = red + green,
 // magenta = red + blue, cyan = green + blue, white = all three).
-enum class colour : std::uint8_t { off, red, green, blue, amber, cyan, magenta, white };
+// clang-format off
+#define POWERKEY_COLOUR_LIST(X) \
+    X(off) \
+    X(red) \
+    X(green) \
+    X(blue) \
+    X(amber) \
+    X(cyan) \
+    X(magenta) \
+    X(white)
+// clang-format on
+enum class colour : std::uint8_t { POWERKEY_COLOUR_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // How an LED behaves given the LED-on and LED-blink maps: on and blink together blink in
 // alternate mode (PK1000 sections 12, 13; PKP sections 12, 16).
-enum class led_mode : std::uint8_t { off, on, blink, alternate_blink };
+// clang-format off
+#define POWERKEY_LED_MODE_LIST(X) \
+    X(off) \
+    X(on) \
+    X(blink) \
+    X(alternate_blink)
+// clang-format on
+enum class led_mode : std::uint8_t { POWERKEY_LED_MODE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 namespace detail {
 // Planes of a colour as bits: 1 red, 2 green, 4 blue.
@@ -216,22 +236,9 @@ struct enum_names<startup_show> {
 
 template <>
 struct enum_names<led_state> {
-    using s = led_state;
-    static constexpr enum_name_entry<s> entries[] = {
-        {s::off, "off"},
-        {s::red_on, "red_on"},
-        {s::red_blink, "red_blink"},
-        {s::red_alternate_blink, "red_alternate_blink"},
-        {s::green_on, "green_on"},
-        {s::green_blink, "green_blink"},
-        {s::green_alternate_blink, "green_alternate_blink"},
-        {s::blue_on, "blue_on"},
-        {s::blue_blink, "blue_blink"},
-        {s::blue_alternate_blink, "blue_alternate_blink"},
-        {s::red_green_blink, "red_green_blink"},
-        {s::amber_red_blink, "amber_red_blink"},
-        {s::green_amber_blink, "green_amber_blink"},
-    };
+    using value_type = led_state;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 template <>
@@ -242,20 +249,16 @@ struct enum_names<plane> {
 
 template <>
 struct enum_names<colour> {
-    using c = colour;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::off, "off"},     {c::red, "red"},   {c::green, "green"},     {c::blue, "blue"},
-        {c::amber, "amber"}, {c::cyan, "cyan"}, {c::magenta, "magenta"}, {c::white, "white"},
-    };
+    using value_type = colour;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_COLOUR_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 template <>
 struct enum_names<led_mode> {
-    using m = led_mode;
-    static constexpr enum_name_entry<m> entries[] = {{m::off, "off"},
-                                                     {m::on, "on"},
-                                                     {m::blink, "blink"},
-                                                     {m::alternate_blink, "alternate_blink"}};
+    using value_type = led_mode;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_LED_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 }  // namespace powerkey

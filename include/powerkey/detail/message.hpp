@@ -1,0 +1,16 @@
+// powerkey detail: what every message struct has and takes from its name: its kind, the struct's
+// name (fields.hpp's kind_of; a J1939 keypad message's with `j1939_` before it, as several share a
+// name with a CANopen message), and member-wise equality. Written once here, so a kind can never
+// differ from its struct's name.
+#ifndef POWERKEY_DETAIL_MESSAGE_HPP
+#define POWERKEY_DETAIL_MESSAGE_HPP
+
+#include <string_view>
+
+#define POWERKEY_DETAIL_MESSAGE_KIND(name, kind_name)    \
+    static constexpr std::string_view kind = #kind_name; \
+    friend constexpr bool operator==(const name&, const name&) noexcept = default
+#define POWERKEY_DETAIL_MESSAGE(name) POWERKEY_DETAIL_MESSAGE_KIND(name, name)
+#define POWERKEY_DETAIL_J1939_MESSAGE(name) POWERKEY_DETAIL_MESSAGE_KIND(name, j1939_##name)
+
+#endif  // POWERKEY_DETAIL_MESSAGE_HPP
