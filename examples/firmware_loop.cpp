@@ -1,8 +1,8 @@
 // A firmware's receive loop: a key press lights that key's LED green. The frame comes from the
-// CAN driver as an id and bytes, and the answer goes back through the driver. This is the first
-// example of README.md; here the "driver" is a key press of key 3 on a PKP-2400 at node 15h, and
-// transmit() prints the frame it would send, 215#0004000000000000 (green LED #3 on); the program
-// exits 0 only when it sent exactly that frame.
+// CAN driver as an id and bytes, and the answer goes back through the driver. This is the
+// firmware loop of docs/tutorial.md; here the "driver" is a key press of key 3 on a PKP-2400 at
+// node 15h, and transmit() prints the frame it would send, 215#0004000000000000 (green LED #3 on);
+// the program exits 0 only when it sent exactly that frame.
 #include <powerkey/powerkey.hpp>
 
 #include <cstdint>

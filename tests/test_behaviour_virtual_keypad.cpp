@@ -258,7 +258,7 @@ struct transcript_result {
 };
 
 // Feeds each section's requests, in order, to a keypad at its defaults and compares what it
-// sends with each reply the manual prints. The runner's rules (docs/behaviour.md):
+// sends with each reply the manual prints. The runner's rules (docs/virtual-keypad.md):
 //   - each section starts with a keypad just powered on at node 15h; a section with PDOs and
 //     no NMT frame starts it first (PDOs need operational, PK1000 11);
 //   - the key state the manual describes ("key 1 pressed") is scripted: the keys of the next

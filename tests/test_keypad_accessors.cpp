@@ -1,7 +1,7 @@
 // keypad/accessors.hpp: the common questions answered from whichever frame carries the answer:
 // pressed keys, LED maps (and the LEDs a frame covers), brightness, backlight, node id, NMT state,
 // each from every carrier of the dictionaries and nullopt from every other message; the LED and
-// key accessors against every manual row; and the README's firmware loop, byte for byte.
+// key accessors against every manual row; and the tutorial's firmware loop, byte for byte.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
@@ -301,7 +301,7 @@ static_assert(keys_alike(model::pkp2200, {1, 4}));
 static_assert(keys_alike(model::pkp2400, {2, 7, 8}));
 static_assert(keys_alike(model::pkp2600, {9, 12}));
 
-// --- the README's firmware loop ---------------------------------------------------------------
+// --- the tutorial's firmware loop ---------------------------------------------------------------
 // A key-state frame arrives as the raw id and bytes a CAN driver hands over; every pressed key
 // lights its LED green. Returns the LED-on frame to send.
 constexpr result<can::frame> firmware_step(model m, std::uint32_t rx_id,

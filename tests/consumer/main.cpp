@@ -1,6 +1,6 @@
 // A user's first program, through the installed or vendored library: a key press from the bytes a
-// CAN driver hands over lights that key green (the README's firmware loop), checked at compile time
-// and run.
+// CAN driver hands over lights that key green (the tutorial's firmware loop), checked at compile
+// time and run.
 #include <powerkey/powerkey.hpp>
 
 #include <array>

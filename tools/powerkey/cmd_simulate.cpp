@@ -2,7 +2,7 @@
 //
 // Runs the virtual keypad (include/powerkey/behaviour/virtual_keypad.hpp) as a filter: reads the
 // frames a controller sends from any log (input.hpp), and writes the frames the keypad sends as
-// candump log lines in time order, starting with its boot-up (docs/cli.md, docs/behaviour.md).
+// candump log lines in time order, starting with its boot-up (docs/cli.md, docs/virtual-keypad.md).
 //
 // Time: the keypad powers on at the first time of the input (0 when it has none); times are
 // honoured to the millisecond. A frame without a time comes `untimed_step` after the frame
@@ -252,7 +252,7 @@ void add_simulate(registry& r) {
         r.add({"simulate",
                "--model M [--node N] [--press T:K] [--release T:K] [--until T]\n"
                "  [FILE...]",
-               "a virtual keypad answering a controller's frames (docs/behaviour.md)",
+               "a virtual keypad answering a controller's frames (docs/virtual-keypad.md)",
                "  --press T:K  press key K at T seconds after power-on (repeatable)\n"
                "  --release T:K  release key K at T seconds (repeatable)\n"
                "  --until T    run until T seconds (default: 100 ms after the last input)\n",

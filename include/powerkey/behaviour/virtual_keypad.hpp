@@ -9,7 +9,7 @@
 //
 // What it does, each with the manual section it comes from (PK1000 = PK1000_CANopen_UM_rev1.13,
 // PKP = PKP-2200-2400-LI_CANopen_UM_rev1.1; the SI family as the PK1000 where its manuals agree,
-// docs/si-family.md), and what is inferred, is listed in docs/behaviour.md. What a model has
+// docs/si-family.md), and what is inferred, is listed in docs/virtual-keypad.md. What a model has
 // (1016h, writable transmission types, J1939, LED mask) comes from its model and dictionary rows.
 // Allocation-free, exception-free, constexpr: a whole session can run in a static_assert.
 #ifndef POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP

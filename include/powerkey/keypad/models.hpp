@@ -4,7 +4,7 @@
 // it reports. The enum `model`, its names and the model table are expanded from that one list;
 // adding a keypad of a known layout is adding a row (docs/models.md).
 //
-// The LED-map rule, for every keypad (docs/models.md, "The LED-map rule"): LED (plane c, number k),
+// The LED-map rule, for every keypad (docs/models.md, "The one bit-map rule"): LED (plane c, k),
 // c = 0 red, 1 green, 2 blue, is bit c * stride + (k - 1) of a little-endian bit string.
 #ifndef POWERKEY_KEYPAD_MODELS_HPP
 #define POWERKEY_KEYPAD_MODELS_HPP
