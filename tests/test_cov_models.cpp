@@ -53,15 +53,15 @@ constexpr info_row info_rows[] = {
      false, false, true, true, false, 2},
     {"PKP-1500-LI 12-13", "pkp1500li", model::pkp1500li, per, 5, 5, 3, 8, 0x1F, false, false, true,
      false, false, true, true, false, 3},
-    {"SI generic (inferred S = 8)", "pkp2200si", model::pkp2200si, per, 4, 4, 3, 8, 0xF, false,
-     false, true, false, false, true, true, false, 3},
-    {"SI generic (inferred S = 8)", "pkp2300si", model::pkp2300si, per, 6, 6, 3, 8, 0x3F, false,
-     false, true, false, false, true, true, false, 3},
-    {"SI generic (inferred S = 8)", "pkp2400si", model::pkp2400si, per, 8, 8, 3, 8, 0xFF, false,
-     false, true, false, false, true, true, false, 3},
+    {"SI generic (inferred S = 8; colour: bench log)", "pkp2200si", model::pkp2200si, per, 4, 4, 3,
+     8, 0xF, false, false, true, true, false, true, true, false, 3},
+    {"SI generic (inferred S = 8; colour: bench log)", "pkp2300si", model::pkp2300si, per, 6, 6, 3,
+     8, 0x3F, false, false, true, true, false, true, true, false, 3},
+    {"SI generic (inferred S = 8; colour: bench log)", "pkp2400si", model::pkp2400si, per, 8, 8, 3,
+     8, 0xFF, false, false, true, true, false, true, true, false, 3},
     // Its CANopen side inferred: the SI rule for six keys, as the PKP-2300-SI (docs/si-family.md)
     {"PKP1600SI J1939, SI generic", "pkp1600si", model::pkp1600si, per, 6, 6, 3, 8, 0x3F, false,
-     false, true, false, false, true, true, false, 3},
+     false, true, true, false, true, true, false, 3},
 };
 static_assert(std::size(info_rows) == model_count);
 
