@@ -180,6 +180,13 @@ inline constexpr row rows[] = {
     {"PKP1500LI manual (100Bh)", m1500li, 0x15, "595#1B4C490000000000",
      segment(true, 5, true, {'L', 'I', 0, 0, 0, 0, 0})},
     {"inferred: 500h level only", m1500li, 0x15, "515#2000000000000000", level_only(0x20)},
+    // A bench log of a real PKP-2200-SI (Trizzoto/rdm7-desktop,
+    // docs/BLINK_MARINE_PKP2200_CANOPEN_2026-08-28.md): solid red at full level. The other S = 8
+    // SI sizes take the colour byte too (inferred; docs/si-family.md).
+    {"PKP-2200-SI bench log: backlight red, full level", m2200si | m2300si | m2400si | m1600si,
+     0x15, "515#3F01000000000000", backlight{level::make(0x3F).value(), backlight_colour::red}},
+    {"inferred: level alone, colour 00h (keep)", m2200si | m2300si | m2400si | m1600si, 0x15,
+     "515#2000000000000000", level_only(0x20)},
 
     // --- PKP-2200-SI, 2300-SI, 2400-SI: 4, 6, 8 keys; S = 8 inferred (SI generic pages) ---------
     {"inferred: 4 keys (naming rule)", m2200si, 0x15, "195#0F0000002A", keys(key_span(1, 4))},
@@ -272,7 +279,7 @@ inline constexpr error_row error_rows[] = {
     {"PKP1500LI: no 400h brightness PDO", m1500li, 0x15, "415#0800000000000000", errc::wrong_id},
     {"inferred: 2001h per colour is 1 byte at S = 8", si_s8, 0x15, "615#2B01200101000000",
      errc::size_mismatch},
-    {"inferred: 500h level only, colour byte set", si_s8, 0x15, "515#2003000000000000",
+    {"inferred: 500h level only, colour byte set", m1500li, 0x15, "515#2003000000000000",
      errc::reserved_not_zero},
     {"PKP2200SI: no key 5", m2200si, 0x15, "195#100000002A", errc::reserved_not_zero},
     {"PKP2200SI: no LED 5 (inferred S = 8)", m2200si, 0x15, "215#1000000000000000",

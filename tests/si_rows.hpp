@@ -1014,9 +1014,9 @@ inline constexpr model_fact model_facts[] = {
     {model::pkp3500si, 15, 16, dictionary::si_per_colour, false, "PKP3500SI", true},
     {model::pkp2500si, 10, 16, dictionary::si_per_colour, false, "", true},
     {model::pkp1500li, 5, 8, dictionary::si_per_colour, false, "PKP1500LI", true},
-    {model::pkp2200si, 4, 8, dictionary::si_per_colour, false, "", true},
-    {model::pkp2300si, 6, 8, dictionary::si_per_colour, false, "", true},
-    {model::pkp2400si, 8, 8, dictionary::si_per_colour, false, "", true},
+    {model::pkp2200si, 4, 8, dictionary::si_per_colour, true, "", true},
+    {model::pkp2300si, 6, 8, dictionary::si_per_colour, true, "", true},
+    {model::pkp2400si, 8, 8, dictionary::si_per_colour, true, "", true},
 };
 
 }  // namespace si_rows

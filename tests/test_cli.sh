@@ -60,6 +60,17 @@ EOF
 diff "$tmp/want" "$tmp/err" > /dev/null || fail "bad line and summary: $(cat "$tmp/err")"
 [ "$(wc -l < "$tmp/out")" -eq 3 ] || fail "the other lines were not decoded"
 grep -q "615#40 .*error: wrong_length" "$tmp/out" || fail "short SDO: $(cat "$tmp/out")"
+
+# Tolerant and strict reading (docs/cli.md): the switch to J1939 as the manuals print it (5 bytes)
+# is the 8-byte write, trimmed; --strict refuses it; a padded NMT frame says so in JSON.
+echo '615#2BFF200101' | "$pk" decode --model pk1000 > "$tmp/out" 2>/dev/null
+grep -q "615#2BFF200101 .*SDO write  object: protocol_j1939  enabled: yes  form: trimmed" "$tmp/out" ||
+  fail "trimmed switch: $(cat "$tmp/out")"
+echo '615#2BFF200101' | "$pk" decode --model pk1000 --strict > "$tmp/out" 2>/dev/null
+grep -q "615#2BFF200101 .*error: wrong_length" "$tmp/out" || fail "--strict: $(cat "$tmp/out")"
+echo '000#0115000000000000' | "$pk" decode --model pk1000 --json > "$tmp/out" 2>/dev/null
+grep -qx '{"id":"000","ext":false,"data":"0115000000000000","function":"nmt","node":21,"model":"pk1000","kind":"nmt_message","fields":{"command":"start","target":21},"form":"padded"}' "$tmp/out" ||
+  fail "padded NMT in JSON: $(cat "$tmp/out")"
 "$pk" decode "$tmp/missing.log" "$tmp/b" > "$tmp/out" 2> "$tmp/err"; rc=$?
 [ $rc -eq 1 ] || fail "missing file: exit status $rc"
 grep -q "missing.log" "$tmp/err" || fail "missing file not named"

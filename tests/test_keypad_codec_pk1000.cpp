@@ -113,7 +113,7 @@ constexpr error_row errata[] = {
     {"E-PK-13", m1000, 0x15, "615#40FF200100000000", errc{}},
 };
 constexpr bool erratum_holds(const error_row& r) {
-    const auto d = decode(frame_of(r.frame), node_of(r.node), model::pk1000);
+    const auto d = decode(frame_of(r.frame), node_of(r.node), model::pk1000, reading::strict);
     return r.error == errc{} ? d.has_value() : d == r.error;
 }
 static_assert(first_failing(errata, erratum_holds) == std::size(errata));

@@ -76,7 +76,7 @@ constexpr error_row errata[] = {
 };
 constexpr bool erratum_holds(const error_row& r) {
     return for_models(r.models, [&](model m) {
-        const auto d = decode(frame_of(r.frame), node_of(r.node), m);
+        const auto d = decode(frame_of(r.frame), node_of(r.node), m, reading::strict);
         return r.error == errc{} ? d.has_value() : d == r.error;
     });
 }

@@ -90,7 +90,7 @@ constexpr encode_error_row encode_error_rows[] = {
      errc::value_out_of_range},
     {"E-SI-22 PDO colour FFh", m2600si | m3500mt, 0x15, "515#20FF000000000000", bad_colour(0xFF),
      errc::value_out_of_range},
-    {"level only: a colour", si_s16 | si_s8, 0x15, "515#2003000000000000",
+    {"level only: a colour", si_s16 | m1500li, 0x15, "515#2003000000000000",
      backlight{0x20, backlight_colour::blue}, errc::reserved_not_zero},
     {"2003h sub 03h colour 0Ah", si, 0x15, "615#2F0320030A000000",
      write(o::backlight_colour, number_value(0x0A)), errc::value_out_of_range},
@@ -162,7 +162,7 @@ constexpr bool erratum_holds(const error_row& r) {
     const auto f = can::parse_candump(r.frame);
     if (!f) return false;
     return for_models(r.models, [&](model m) {
-        const auto d = decode(*f, node_of(r.node), m);
+        const auto d = decode(*f, node_of(r.node), m, reading::strict);
         return r.error == errc{} ? d.has_value() : d == r.error;
     });
 }

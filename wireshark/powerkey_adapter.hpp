@@ -208,6 +208,8 @@ inline std::vector<field_spec> message_fields() {
         for (const auto& vary : variations) vary();
         return false;
     });
+    // powerkey.form: a frame not in the manual's form (docs/decoder.md), one field for every kind.
+    note("form", powerkey::frame_form::manual);
     std::vector<field_spec> out;
     for (auto& s : seen) {
         field_spec f;
@@ -430,6 +432,16 @@ inline frame_view view(const frame_in& in, const frame_record& r,
             detail::fill(fo, name, v);
             out.fields.push_back(std::move(fo));
         });
+        if (const auto form = form_of(*msg); form != frame_form::manual) {
+            const auto it = std::find_if(catalog.begin(), catalog.end(),
+                                         [](const field_spec& s) { return s.name == "form"; });
+            if (it != catalog.end()) {
+                field_out fo;
+                fo.spec = static_cast<std::size_t>(it - catalog.begin());
+                detail::fill(fo, "form", form);
+                out.fields.push_back(std::move(fo));
+            }
+        }
     }
     if (const auto n = canopen::node_id::make(cls.node)) {
         if (cls.fn == canopen::function::sdo_rx)

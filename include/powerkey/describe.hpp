@@ -15,6 +15,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/hex.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/result.hpp>
 
 #include <cstddef>
@@ -183,6 +184,15 @@ template <class M>
         w.put(name);
         w.put(": ");
         describe_value(w, name, value);
+    });
+    // A frame not in the manual's form says so (frame_form.hpp); the manual's form says nothing.
+    visit_message(msg, [&w](const auto& s) {
+        if constexpr (requires { s.form; }) {
+            if (s.form != frame_form::manual) {
+                w.put("  form: ");
+                w.put(to_string(s.form));
+            }
+        }
     });
     if (w.overflow()) return errc::buffer_too_small;
     return w.view();

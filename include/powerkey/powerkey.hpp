@@ -7,6 +7,7 @@
 #include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/index_set.hpp>
 #include <powerkey/names.hpp>
 #include <powerkey/result.hpp>

@@ -93,8 +93,10 @@ struct session_event {
 template <std::size_t TextCapacity = 64>
 class session {
 public:
-    constexpr session(powerkey::model m, canopen::node_id node) noexcept
-        : model_(m), info_(&detail::row_or_none(m)), node_(node), upload_(node) {}
+    // `how`: frames not in the manual's form decoded (the default) or refused (reading::strict).
+    constexpr session(powerkey::model m, canopen::node_id node,
+                      reading how = reading::tolerant) noexcept
+        : model_(m), info_(&detail::row_or_none(m)), node_(node), upload_(node), how_(how) {}
 
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
@@ -112,7 +114,7 @@ public:
         // During a node change the keypad may still answer (an abort) from the old id.
         e.node = node_;
         if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
-        e.decoded = decode(f, e.node, model_);
+        e.decoded = decode(f, e.node, model_, how_);
         const bool ours = e.cls.node == e.node.value();
         if (e.cls.fn == canopen::function::sdo_rx && ours) {
             e.sdo_frame = sdo_frame_of(f, e);
@@ -170,8 +172,10 @@ private:
                 },
                 *e.decoded);
         }
-        if (f.size() != 8) return std::nullopt;
-        const auto w = canopen::sdo_word::of(f);
+        // A frame of another length (trimmed, or refused as too short) is read zero-filled: its
+        // request still waits for a reply whatever its form (issue 22).
+        if (f.size() < 4) return std::nullopt;
+        const auto w = canopen::sdo_word::of(detail::with_length(f, 8));
         const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
                                                              : canopen::sdo_response_op(w);
         if (!o) return std::nullopt;
@@ -318,6 +322,7 @@ private:
     std::optional<canopen::node_id> previous_node_;  // the id before a change answered from the new
     std::optional<canopen::node_id> change_;         // the id after the reply (old-id models)
     canopen::segmented_upload<TextCapacity> upload_;
+    reading how_ = reading::tolerant;
 };
 
 }  // namespace powerkey

@@ -742,6 +742,9 @@ PYBIND11_MODULE(_powerkey, mod) {
     py::class_<py_message>(mod, "Message", "A decoded (or built) keypad message")
         .def_property_readonly("kind",
                                [](const py_message& m) { return std::string(kind_of(m.m)); })
+        .def_property_readonly(
+            "form", [](const py_message& m) { return std::string(to_string(form_of(m.m))); },
+            "\"manual\", or \"trimmed\" / \"padded\" for a frame not in the manual's form")
         .def_property_readonly("model",
                                [](const py_message& m) -> py::object {
                                    return m.md ? py::object(py::cast(*m.md))

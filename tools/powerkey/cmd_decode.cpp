@@ -30,6 +30,7 @@ using namespace std::string_view_literals;
 struct decode_options {
     bool json = false;
     bool show = false;
+    bool strict = false;  // only the manual's form (docs/decoder.md, "Tolerant and strict reading")
     // For the benchmark (scripts/bench_cli.sh): read and parse only, or decode without output.
     bool parse_only = false;
     bool quiet = false;
@@ -115,7 +116,11 @@ struct counts {
 class decoder final : public frame_handler {
 public:
     decoder(const options& c, const decode_options& o, model m, output& out)
-        : o_(o), session_(m, c.node), picture_(m), tty_(isatty(1) != 0), out_(out) {}
+        : o_(o),
+          session_(m, c.node, o.strict ? reading::strict : reading::tolerant),
+          picture_(m),
+          tty_(isatty(1) != 0),
+          out_(out) {}
 
     void frame(const logs::record& r) override {
         ++counts_.frames;
@@ -322,6 +327,9 @@ private:
                 write_json_value(fw, v);
             });
             fw.close();
+            // Only a frame not in the manual's form says so (docs/decoder.md).
+            if (const auto form = form_of(*e.decoded); form != frame_form::manual)
+                w.field("form", to_string(form));
         }
         write_generic_fields(w, r.frame, e);
         if (e.sdo != sdo_pairing::none) w.field("sdo", to_string(e.sdo));
@@ -381,6 +389,8 @@ private:
                 fields[std::string(name)] = json_value(v);
             });
             j["fields"] = fields;
+            if (const auto form = form_of(*e.decoded); form != frame_form::manual)
+                j["form"] = std::string(to_string(form));
         }
         if (e.sdo != sdo_pairing::none) j["sdo"] = std::string(to_string(e.sdo));
         if (e.upload_done) j["text"] = std::string(session_.text());
@@ -621,10 +631,12 @@ int run_decode(const options& c, const decode_options& o) {
 void add_decode(registry& r) {
     static decode_options o;
     auto& sub = r.add(
-        {"decode", "[--model M|auto] [--node N] [--json | --show] [FILE...]",
+        {"decode", "[--model M|auto] [--node N] [--json | --show] [--strict] [FILE...]",
          "every frame of a bus log, in text or JSON lines",
          "  --json       JSON lines, one per frame (docs/cli.md has the schema)\n"
-         "  --show       draw the keypad after each frame that changes it (not with --json)\n",
+         "  --show       draw the keypad after each frame that changes it (not with --json)\n"
+         "  --strict     refuse frames not in the manual's form (trimmed, padded) with "
+         "wrong_length\n",
          model_use::or_auto},
         [&r] {
             if (o.json && o.show)
@@ -637,6 +649,7 @@ void add_decode(registry& r) {
         });
     sub.add_flag("--json", o.json);
     sub.add_flag("--show", o.show);
+    sub.add_flag("--strict", o.strict);
     sub.add_flag("--parse-only", o.parse_only);
     sub.add_flag("--quiet", o.quiet);
     sub.add_flag("--nlohmann-writer", o.nlohmann_writer);

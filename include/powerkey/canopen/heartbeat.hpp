@@ -8,6 +8,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
+#include <powerkey/frame_form.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -41,6 +42,7 @@ struct heartbeat_message {
         f("state", self.state);
     }
     nmt_state state = nmt_state::boot_up;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 [[nodiscard]] constexpr can::frame encode(node_id node, const heartbeat_message& m) noexcept {

@@ -9,6 +9,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
+#include <powerkey/frame_form.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -50,6 +51,7 @@ struct nmt_message {
     }
     nmt_command command = nmt_command::start;
     nmt_target target = all_nodes;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 [[nodiscard]] constexpr can::frame encode(const nmt_message& m) noexcept {

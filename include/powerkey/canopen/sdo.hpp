@@ -18,6 +18,7 @@
 #include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/result.hpp>
 
 #include <array>
@@ -108,6 +109,7 @@ struct sdo_segment_request {
         f("toggle", self.toggle);
     }
     bool toggle = false;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // --- server -> client (580h + node) ---------------------------------------------------------
@@ -151,6 +153,7 @@ struct sdo_upload_initiate_response {
     sdo_address address;
     bool size_indicated = true;
     std::uint32_t size = 0;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // One segment: byte 0 = 000t nnnc (t toggle, n bytes without data, c last segment), then 7 bytes
@@ -172,6 +175,7 @@ struct sdo_segment_response {
     [[nodiscard]] constexpr std::span<const std::uint8_t> data() const noexcept {
         return {bytes.data(), static_cast<std::size_t>(7 - unused.value())};
     }
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // --- both directions --------------------------------------------------------------------------
@@ -250,6 +254,7 @@ struct sdo_abort_request {
         sdo_abort::fields(self.abort, f);
     }
     sdo_abort abort;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // Sent by the keypad (580h + node):
@@ -260,6 +265,7 @@ struct sdo_abort_response {
         sdo_abort::fields(self.abort, f);
     }
     sdo_abort abort;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 using sdo_request =

@@ -6,6 +6,7 @@
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/detail/message.hpp>
+#include <powerkey/frame_form.hpp>
 
 #include <string_view>
 
@@ -15,6 +16,7 @@ struct sync_message {
     POWERKEY_DETAIL_MESSAGE(sync_message);
     template <class Self, class F>
     static constexpr void fields(Self&, F&&) {}
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 [[nodiscard]] constexpr can::frame encode(const sync_message&) noexcept {

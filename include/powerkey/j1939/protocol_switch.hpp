@@ -8,6 +8,7 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/detail/message.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/j1939/id.hpp>
 
 #include <array>
@@ -32,6 +33,7 @@ struct switch_to_canopen {
     j1939::priority priority = 6;
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 [[nodiscard]] constexpr can::frame encode(const switch_to_canopen& m) noexcept {

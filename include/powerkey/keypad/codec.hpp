@@ -483,6 +483,69 @@ constexpr result<message> decode_extended(const model_layout& keypad,
     return lift(j1939::decode_switch_to_canopen(f));
 }
 
+// --- frames not in the manual's form -----------------------------------------------------------
+// (docs/decoder.md, "Tolerant and strict reading")
+
+// The bytes from the first up to the last one whose bits `mask` names.
+constexpr std::uint8_t bytes_of(std::uint64_t mask) noexcept {
+    return static_cast<std::uint8_t>((std::bit_width(mask) + 7) / 8);
+}
+
+// How many leading bytes of msg's frame may carry anything on this keypad: every byte after them
+// is 00h in every valid frame of its kind (a byte the manual marks "not used", reserved bits, the
+// high bytes of a value whose range never reaches them, the bytes past an SDO's size). A frame
+// cut after them says all that its manual form says.
+constexpr std::uint8_t used_length(const model_layout& keypad, const message& msg) noexcept {
+    return std::visit(
+        [&keypad](const auto& v) -> std::uint8_t {
+            using T = std::remove_cvref_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, canopen::sync_message>) {
+                return 0;
+            } else if constexpr (std::is_same_v<T, canopen::heartbeat_message> ||
+                                 std::is_same_v<T, led_brightness>) {
+                return 1;
+            } else if constexpr (std::is_same_v<T, canopen::nmt_message>) {
+                return 2;
+            } else if constexpr (std::is_same_v<T, key_state>) {
+                return 5;  // the tick in byte 4
+            } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
+                return bytes_of(keypad.led_bits);
+            } else if constexpr (std::is_same_v<T, backlight>) {
+                return keypad.backlight_colour ? 2 : 1;
+            } else if constexpr (std::is_same_v<T, encoder_state> ||
+                                 std::is_same_v<T, encoder_leds>) {
+                return 4;
+            } else if constexpr (std::is_same_v<T, sdo_read> ||
+                                 std::is_same_v<T, sdo_write_reply>) {
+                return 4;  // the specifier and the address
+            } else if constexpr (std::is_same_v<T, sdo_write> ||
+                                 std::is_same_v<T, sdo_read_reply>) {
+                const codec_row& r = codec_rows[find_codec_row(keypad.dictionary, v.object)];
+                const std::uint8_t size = row_size(keypad, r, v.value.size);
+                const std::uint32_t bits =
+                    visit_kind(r.kind, [&](auto k) { return decltype(k)::used_bits(keypad, r); });
+                return static_cast<std::uint8_t>(4 + bytes_of(bits & largest_of_size[size & 7u]));
+            } else if constexpr (std::is_same_v<T, command>) {
+                const auto row = find_command(static_cast<std::uint8_t>(v.code));
+                if (!row) return 8;
+                return static_cast<std::uint8_t>(5 + (row->p1 != command_param::none ? 1 : 0) +
+                                                 (row->p2 != command_param::none ? 1 : 0));
+            } else {
+                return 8;  // analog inputs, segments, aborts, the J1939 switch: every byte
+            }
+        },
+        msg);
+}
+
+// f with `length` bytes: its first ones, then 00h.
+constexpr can::frame with_length(const can::frame& f, std::uint8_t length) noexcept {
+    can::payload p{};
+    for (std::size_t i = 0; i < length && i < f.size(); ++i) p[i] = f[i];
+    const auto dlc = can::dlc::make(length).value();
+    if (f.is_extended()) return can::frame(*f.ext_id(), dlc, p);
+    return can::frame(*f.std_id(), dlc, p);
+}
+
 // --- encoding -----------------------------------------------------------------------------------
 
 POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
@@ -562,11 +625,12 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 
 }  // namespace detail
 
-// Any frame of keypad `node` of model `m`. Errors:
+// The errors of decode, for a frame in the manual's form (decode_printed below):
 //   wrong_id_format     a 29-bit frame for a keypad without J1939
 //   wrong_id            another node's COB-ID, a function the model does not use, a 29-bit frame
 //                       on a PGN other than EF00h
-//   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes)
+//   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes) that is not
+//                       trimmed or padded either (or any other dlc, read strictly)
 //   unknown_command     an NMT command or SDO specifier the keypads do not use; an access the
 //                       object does not have (a write to a read-only object, a read of 6500h,
 //                       the acknowledgement of either); a command byte 6500h does not define
@@ -577,9 +641,11 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 //                       size, reserved bits of COB-IDs and of the PDOs
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
-[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(const can::frame& f,
-                                                                      canopen::node_id node,
-                                                                      model m) noexcept {
+namespace detail {
+// The front: f in the manual's form only (decode's strict reading).
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame& f,
+                                                                canopen::node_id node,
+                                                                model m) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const detail::model_layout& keypad = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
@@ -620,7 +686,53 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
     }
 }
 
-// The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg.
+// f, which decode_printed refused with wrong_length, at the one length that its identifier has
+// in the manuals: trimmed when f is shorter and every byte it lacks is one its kind leaves unused
+// (used_length), padded when f is longer and every extra byte is 00h. The message says which.
+// A padded frame whose manual form is refused keeps that refusal (every byte is there); anything
+// else stays wrong_length. Out of line: frames of the manual's length never come here.
+POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f, canopen::node_id node,
+                                                      model m) noexcept {
+    const std::uint8_t n = f.size();
+    for (std::uint8_t k = 0; k <= 8; ++k) {
+        if (k == n) continue;
+        const auto r = decode_printed(with_length(f, k), node, m);
+        if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
+        for (std::uint8_t i = k; i < n; ++i)
+            if (f[i] != 0) return errc::wrong_length;
+        if (!r) return k < n ? r : result<message>(errc::wrong_length);
+        if (k > n) {
+            if (n < used_length(layout(m), *r)) return errc::wrong_length;
+            return with_form(*r, frame_form::trimmed);
+        }
+        return with_form(*r, frame_form::padded);
+    }
+    return errc::wrong_length;
+}
+}  // namespace detail
+
+// How decode reads a frame whose length is not the manual's (docs/decoder.md).
+enum class reading : std::uint8_t {
+    tolerant,  // trimmed and padded frames decode, their message's `form` says so (the default)
+    strict,    // only the manual's form: any other length is errc::wrong_length
+};
+
+// Any frame of keypad `node` of model `m`. A frame shorter than the manual's form whose missing
+// bytes are all unused (the manual's "not used" bytes, reserved bits, value bytes the object's
+// range never sets, bytes past the SDO's size), or longer with extra bytes all 00h, decodes as its
+// manual form with `form` trimmed or padded; `reading::strict` refuses them with wrong_length.
+// Errors: those of the manual's form, below. A frame of the manual's length pays nothing for the
+// tolerance: the other lengths are read again out of line (detail::reread).
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
+    const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
+    result<message> r = detail::decode_printed(f, node, m);
+    if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
+        r = detail::reread(f, node, m);
+    return r;
+}
+
+// The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg: the
+// manual's form, whatever msg's `form` says.
 // A message decode could never return is refused with the error decode gives its frame
 // (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
 // carry, members the message's kind does not use set), or unknown_object for an object the
@@ -630,9 +742,9 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
-    const auto back = decode(*f, node, m);
+    const auto back = detail::decode_printed(*f, node, m);
     if (!back) return back.error();
-    if (!(*back == msg)) return errc::value_out_of_range;
+    if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;
 }
 

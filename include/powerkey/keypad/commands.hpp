@@ -10,6 +10,7 @@
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/detail/message.hpp>
 #include <powerkey/enum_names.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/keypad/values.hpp>
 
 #include <array>
@@ -133,6 +134,7 @@ struct command {
     std::uint8_t period_10ms = 0;
     canopen::node_id node_id = canopen::default_node_id;
     startup_show show = startup_show::complete;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 template <>

@@ -20,6 +20,7 @@
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sync.hpp>
 #include <powerkey/detail/message.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/objects.hpp>
@@ -46,6 +47,7 @@ struct key_state {
     }
     key_set keys;
     std::uint8_t tick = 0;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // RPDO1 200h + node, host -> keypad: which LEDs are on (PK1000 section 12, PKP section 11).
@@ -56,6 +58,7 @@ struct led_on {
         detail::map_fields(self.map, f);
     }
     leds map;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // RPDO2 300h + node: which LEDs blink; on and blink together blink alternately (PK1000 13, PKP 12).
@@ -66,6 +69,7 @@ struct led_blink {
         detail::map_fields(self.map, f);
     }
     leds map;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // RPDO3 400h + node: LED brightness until power off (PK1000 section 14): level | 00h x 7.
@@ -76,6 +80,7 @@ struct led_brightness {
         f("level", self.level);
     }
     powerkey::level level = 0x3F;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // RPDO4 500h + node: backlight level and colour until power off (PK1000 section 15):
@@ -89,6 +94,7 @@ struct backlight {
     }
     powerkey::level level = 0;
     backlight_colour colour = backlight_colour::keep;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // TPDO2 280h + node (encoder 1) and TPDO3 380h + node (encoder 2), PKP-3500-MT sections 12, 13:
@@ -109,6 +115,7 @@ struct encoder_state {
     std::uint8_t ticks = 0;     // 0..127 since the last message
     std::uint16_t counter = 0;  // the tick counter, 0..65535 (or 0..TOP)
     std::uint8_t top = 0;       // 00h (none) or 02h..10h
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // TPDO4 480h + node, PKP-3500-MT section 14: the four 0..5 V inputs, each 16 bits little endian,
@@ -123,6 +130,7 @@ struct analog_inputs {
         f("in3_mv", self.mv[3]);
     }
     std::array<std::uint16_t, 4> mv{};
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // RPDO3 400h + node on the PKP-3500-MT (section 17): the encoder ring LEDs, 1..16 encoder 1,
@@ -134,6 +142,7 @@ struct encoder_leds {
         f("leds", self.leds);
     }
     led_set leds;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // --- SDO reads and writes of the object dictionary ----------------------------------------------
@@ -146,6 +155,7 @@ struct sdo_read {
         f("object", self.object);
     }
     powerkey::object object = powerkey::object::keys;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // Keypad -> host, 580h + node: the value read (expedited upload response 43h/47h/4Bh/4Fh).
@@ -158,6 +168,7 @@ struct sdo_read_reply {
     }
     powerkey::object object = powerkey::object::keys;
     object_value value;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // Host -> keypad, 600h + node: write an object (expedited download 23h/27h/2Bh/2Fh).
@@ -170,6 +181,7 @@ struct sdo_write {
     }
     powerkey::object object = powerkey::object::led_brightness;
     object_value value;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // Keypad -> host, 580h + node: a write was done (60h); the manuals' "command accepted".
@@ -180,6 +192,7 @@ struct sdo_write_reply {
         f("object", self.object);
     }
     powerkey::object object = powerkey::object::led_brightness;
+    powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
 // Every frame any keypad speaks or hears.
@@ -190,6 +203,20 @@ using message =
                  canopen::sdo_upload_initiate_response, canopen::sdo_segment_request,
                  canopen::sdo_segment_response, canopen::sdo_abort_request,
                  canopen::sdo_abort_response, encoder_state, analog_inputs, encoder_leds>;
+
+// How msg's frame was written: the manual's form, or trimmed or padded (frame_form.hpp); every
+// alternative has `form`, which decode sets and encode ignores (it builds the manual's form).
+[[nodiscard]] constexpr frame_form form_of(const message& msg) noexcept {
+    return std::visit([](const auto& s) { return s.form; }, msg);
+}
+
+namespace detail {
+// msg with its form set to `form`.
+constexpr message with_form(message msg, frame_form form) noexcept {
+    std::visit([form](auto& s) { s.form = form; }, msg);
+    return msg;
+}
+}  // namespace detail
 
 }  // namespace powerkey
 

@@ -9,6 +9,8 @@
 //   pack(m, r, v)             the wire value of a value (the encoder; the virtual keypad reads
 //                             an LED object from its maps this way)
 //   size(m, r, carried)       its expedited bytes
+//   used_bits(m, r)           the bits a valid value may set: a frame cut before the bytes of the
+//                             others still says the whole value (codec.hpp, tolerant reading)
 //   covered(m, r)             for the LED kinds, the LEDs a value states (the accessors'
 //                             led_map_update, the virtual keypad's merge into its maps)
 //   abort_for(e, data, r)     the SDO abort a keypad answers a refused write with
@@ -30,6 +32,7 @@
 #include <powerkey/result.hpp>
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
@@ -73,6 +76,9 @@ struct kind_defaults {
         return v.raw;
     }
     static constexpr leds covered(const m_layout&, const codec_row&) noexcept { return {}; }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
+        return 0xFFFF'FFFF;
+    }
     // A refused write's abort (the virtual keypad): bits that name nothing are an invalid value,
     // a number outside its range too low or too high (CiA 301 table 22).
     static constexpr canopen::sdo_abort_code abort_for(errc e, std::uint32_t data,
@@ -113,12 +119,23 @@ constexpr void map_fields(V& map, F& f) {
     f("blue", map.blue);
 }
 
+// The bits of the numbers of row r's range (its largest value's, and of `also` when it has one).
+constexpr std::uint32_t range_bits(const codec_row& r) noexcept {
+    const value_range& v = value_ranges[r.a];
+    const std::uint32_t top = v.min + v.span < v.min ? 0xFFFF'FFFF : v.min + v.span;
+    const std::uint32_t most = v.also != 0xFFFF'FFFF && v.also > top ? v.also : top;
+    return static_cast<std::uint32_t>(low_bits(static_cast<unsigned>(std::bit_width(most))));
+}
+
 // A value that is one number within the row's range.
 struct one_number : kind_defaults {
     static constexpr bool common = true;
     static constexpr errc check(const m_layout&, const codec_row& r, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
         return value_ranges[r.a].contains(data) ? errc{} : errc::value_out_of_range;
+    }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row& r) noexcept {
+        return range_bits(r);
     }
 };
 
@@ -198,6 +215,9 @@ struct period : detail::kind_defaults {
         if (data != 0 && !detail::value_ranges[r.a].contains(data)) return errc::value_out_of_range;
         return errc{};
     }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row& r) noexcept {
+        return detail::range_bits(r);
+    }
 };
 // "keys": key bits 0..N-1; a bit above the model's keys is reserved.
 struct keys : detail::kind_defaults {
@@ -209,6 +229,9 @@ struct keys : detail::kind_defaults {
     static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
         return (data & keypad.not_keys) != 0 ? errc::reserved_not_zero : errc{};
+    }
+    static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row&) noexcept {
+        return ~keypad.not_keys;
     }
 
 private:
@@ -236,6 +259,9 @@ struct led_plane : detail::kind_defaults {
     static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {
         return (data & ~keypad.led_mask) != 0 ? errc::reserved_not_zero : errc{};
+    }
+    static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row&) noexcept {
+        return keypad.led_mask;
     }
     static constexpr object_value value(const m_layout&, const codec_row& r, std::uint8_t,
                                         std::uint32_t data) noexcept {
@@ -270,6 +296,9 @@ struct led_map : detail::kind_defaults {
                                 std::uint32_t data, bool) noexcept {
         return (data & keypad.object_not_leds) != 0 ? errc::reserved_not_zero : errc{};
     }
+    static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row&) noexcept {
+        return ~keypad.object_not_leds;
+    }
     static constexpr object_value value(const m_layout& keypad, const codec_row&, std::uint8_t,
                                         std::uint32_t data) noexcept {
         const std::uint64_t up = std::uint64_t{data} >> keypad.stride;
@@ -303,6 +332,9 @@ struct consumer_heartbeat : detail::kind_defaults {
             (time != 0 && !detail::value_ranges[r.a].contains(time)))
             return errc::value_out_of_range;
         return errc{};
+    }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
+        return 0x00FF'FFFF;  // byte 3 reserved
     }
     // PK1000 28: a producer that is no node id is an invalid value, a period below 10 ms too low.
     static constexpr canopen::sdo_abort_code abort_for(errc e, std::uint32_t data,
@@ -347,6 +379,9 @@ struct device_type : detail::kind_defaults {
     static constexpr errc check(const m_layout&, const codec_row&, std::uint8_t, std::uint32_t data,
                                 bool) noexcept {
         return (data >> 20) != 0 ? errc::reserved_not_zero : errc{};
+    }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
+        return 0x000F'FFFF;
     }
 };
 // "size", "bytes": up to 4 bytes of a string expedited (more come by segments).
@@ -401,6 +436,10 @@ struct led_part : detail::kind_defaults {
             return errc::reserved_not_zero;
         return errc{};
     }
+    static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row& r) noexcept {
+        return static_cast<std::uint32_t>(detail::low_bits(r.part_width()) &
+                                          (keypad.led_bits >> r.a));
+    }
     static constexpr object_value value(const m_layout& keypad, const codec_row& r, std::uint8_t,
                                         std::uint32_t data) noexcept {
         return {0, unpack_leds(keypad, std::uint64_t{data} << r.a, keypad.planes).value_or(leds{}),
@@ -432,6 +471,9 @@ struct direction_counter : detail::kind_defaults {
     static constexpr void fields(const object_info&, V& v, F& f) {
         detail::bits_field<bool>(v, f, "counterclockwise", 7, 1);
         detail::bits_field<std::uint8_t>(v, f, "ticks", 0, 7);
+    }
+    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
+        return 0xFF;
     }
 };
 // No value: the keypad aborts a read (1001h, PK1000 31).
