@@ -12,7 +12,7 @@ llvm_ver=${LLVM_VERSION:-14}
 profdata=$(command -v llvm-profdata-$llvm_ver || command -v llvm-profdata)
 cov=$(command -v llvm-cov-$llvm_ver || command -v llvm-cov)
 
-# The tool on: the suite's tests/test_cli_parts.cpp links the tool's log readers
+# The tool on: the suite's tests/test_tool_parts.cpp links the tool's log readers
 # (powerkey_log_formats); only the targets below are built, not the tool itself.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="-fprofile-instr-generate -fcoverage-mapping" \

@@ -7,7 +7,7 @@ packages=(g++ clang cmake make doctest-dev libbenchmark-dev clang-format-14 valg
           libcli11-dev nlohmann-json3-dev zlib1g-dev python3-can can-utils
           pybind11-dev python3-dev python3-pytest python3-canmatrix)
 # libcli11-dev, nlohmann-json3-dev, zlib1g-dev: the powerkey tool's options, JSON input and BLF
-# containers. python3-can, can-utils: tests/test_log_formats.sh writes its logs with them.
+# containers. python3-can, can-utils: tests/test_tool_log_formats.sh writes its logs with them.
 # pybind11-dev, python3-dev: the Python module (python/, docs/python.md); python3-pytest (with
 # python3-can) runs its tests. python3-canmatrix: tests/test_dbc.py reads `powerkey export dbc`'s
 # files with it.

@@ -1,7 +1,7 @@
 // behaviour/checker.hpp: the bus-log checker. Each problem kind from a small log, a clean log
 // with none, and the explanations. A log row is (time in ms, frame); its line is its position
 // from 1. The controller's own sessions against the virtual keypad are checked in
-// test_controller.cpp.
+// test_behaviour_controller.cpp.
 #include "support.hpp"
 
 #include <powerkey/behaviour/checker.hpp>

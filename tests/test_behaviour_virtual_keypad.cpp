@@ -1,6 +1,6 @@
 // behaviour/virtual_keypad.hpp: the virtual keypad. The manuals' transcripts replayed against it,
 // model by model; one test per behaviour; every model answering every readable object. Its runs
-// against the controller are in test_controller.cpp.
+// against the controller are in test_behaviour_controller.cpp.
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"

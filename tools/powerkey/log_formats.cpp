@@ -1,7 +1,7 @@
 // powerkey tool: the log readers (log_formats.hpp). Written from the formats as their writers
 // produce them (candump and log2asc of can-utils 2020.11, python-can 4.1's writers, PEAK's TRC
 // file format document 1.0-2.1), and tested against files those writers make at test time
-// (tests/test_log_formats.sh).
+// (tests/test_tool_log_formats.sh).
 #include "log_formats.hpp"
 
 #include "numbers.hpp"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every log form reads like its candump equivalent, in every subcommand (registered by
 # tools/powerkey/CMakeLists.txt as cli_log_formats):
-#   test_log_formats.sh POWERKEY_BINARY SOURCE_DIR
+#   test_tool_log_formats.sh POWERKEY_BINARY SOURCE_DIR
 # The files are written at test time by the real writers: Debian's python3-can (ASC, BLF, TRC 1.0
 # and 2.1, CSV, candump log; /usr/bin/python3, not a python on PATH that may lack the package)
 # and can-utils' log2asc/asc2log. The frames are every frame of the sample logs, plus a remote, a

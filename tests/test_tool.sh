@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Tests of the powerkey tool (registered by tools/powerkey/CMakeLists.txt):
-#   test_cli.sh POWERKEY_BINARY SOURCE_DIR [SAMPLE_LOGS_BINARY]
+#   test_tool.sh POWERKEY_BINARY SOURCE_DIR [SAMPLE_LOGS_BINARY]
 # Every sample log (every manual frame, per model) decodes without an error and comes back byte
 # for byte through `decode --json | encode --json`; bad input gets a one-line error naming the
 # file and line and the rest is still decoded; the exit status says whether anything failed.
