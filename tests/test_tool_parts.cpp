@@ -1,7 +1,7 @@
 // The pieces of the powerkey tool (tools/powerkey/): the log readers, the field values both ways,
 // numbers, model names, escaping, and why encode refuses a message. The tool itself is tested end
 // to end by tests/test_tool.sh, tests/test_tool_log_formats.sh (files of the real writers) and
-// tests/test_cli_live.sh.
+// tests/test_tool_live.sh.
 #include <doctest/doctest.h>
 
 #include "../tools/powerkey/common.hpp"
