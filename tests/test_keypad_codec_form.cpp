@@ -10,7 +10,7 @@
 #include <powerkey/describe.hpp>
 #include <powerkey/keypad/codec.hpp>
 
-#include "decoder_rows.hpp"
+#include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "si_reference_rows.hpp"
@@ -25,20 +25,20 @@
 
 namespace {
 using namespace powerkey;
-using namespace decoder_rows;
+using namespace codec_rows;
 using powerkey_tests::check_rows;
 using powerkey_tests::first_failing;
 using powerkey_tests::frame_of;
 
-constexpr std::uint16_t every = all | si;
-constexpr std::uint16_t colour = m1000 | m2600si | m3500mt | m2200si | m2300si | m2400si | m1600si;
+constexpr model_set every = all | si;
+constexpr model_set colour = m1000 | m2600si | m3500mt | m2200si | m2300si | m2400si | m1600si;
 
 // `frame` decodes for every model of the row to what `manual` (the manual's form) decodes to,
 // described as `text` (which ends in its form), and strictly it is wrong_length; encode builds
 // `manual` back.
 struct form_row {
     std::string_view section;
-    std::uint16_t models;
+    model_set models;
     std::string_view frame;
     std::string_view manual;
     std::string_view text;
@@ -201,7 +201,7 @@ void every_length(const Row (&table)[N]) {
         REQUIRE(f);
         for (std::size_t i = 0; i < model_count; ++i) {
             const auto m = static_cast<model>(i);
-            if (!applies(r.models, m)) continue;
+            if (!r.models.contains(m)) continue;
             const auto node = node_of(r.node);
             const auto full = decode(*f, node, m);
             INFO(std::string(r.section), "  ", std::string(r.frame), "  ",
