@@ -106,7 +106,7 @@ constexpr bool round_trips(const row& r) {
 constexpr bool refused(const error_row& r) {
     const auto f = can::parse_candump(r.frame);
     if (!f) return false;
-    // Strictly: the rows pin the manual's form (test_tolerance.cpp reads the other lengths).
+    // Strictly: the rows pin the manual form (test_keypad_codec_form.cpp reads other lengths).
     return for_models(r.models, [&](model m) {
         return decode(*f, node_of(r.node), m, reading::strict) == r.error;
     });
