@@ -398,7 +398,7 @@ TEST_CASE("dbc: every J1939 frame of the manuals is described, with its values i
     const auto check_rows = [&](std::span<const j1939_rows::row> rows) {
         for (const auto& r : rows)
             for (const auto m : enum_values<model>()) {
-                if ((r.models & j1939_rows::bit(m)) == 0) continue;
+                if (!r.models.contains(m)) continue;
                 const std::string where = std::string(to_string(m)) + " " + std::string(r.section) +
                                           " " + std::string(r.frame);
                 INFO(where);
