@@ -56,7 +56,7 @@ namespace powerkey::behaviour {
     X(pdo_not_operational)  /* detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0 */ \
     X(heartbeat_silence)  /* detail: ms silent so far, period ms (1017h), line of the last heartbeat */ \
     X(key_state_silence)  /* detail: ms silent so far, period ms, line of the last key state */ \
-    X(old_node_traffic)  /* detail: COB-ID, old node id, new node id */ \
+    X(old_node_traffic)  /* detail: COB-ID, old node id, the node id it moved to */ \
     X(segment_toggle)  /* detail: toggle expected, toggle sent, 0 from the host / 1 the keypad */ \
     X(segment_size)  /* detail: size announced, bytes received, index */
 // clang-format on
