@@ -23,9 +23,7 @@
 namespace {
 using namespace powerkey;
 using namespace codec_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
 static_assert(first_failing(core_rows, round_trips) == std::size(core_rows));
