@@ -759,6 +759,17 @@ constexpr result<message> misfit(const can::frame& f, const model_layout& keypad
     return detail::decode_at<reading::tolerant>(f, node, keypad);
 }
 
+// decode for a keypad whose model is known when the program is built: decode<model::pk1000>(f,
+// node). The model is a constant, so every test of its row folds away and the cases it never
+// has (another model's PDOs and objects) are not in the program. Same results as decode(f, node,
+// M, how) for every frame.
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
+    const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    return decode(f, node, M, how);
+}
+
 // The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg: the
 // manual's form, whatever msg's `form` says.
 // A message decode could never return is refused with the error decode gives its frame
