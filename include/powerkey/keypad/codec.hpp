@@ -49,9 +49,16 @@ constexpr result<message> answer(const T& v) noexcept {
 // A frame whose length is not the one its identifier has in the manuals goes from the length test
 // that finds it straight to `misfit`: read strictly, wrong_length; tolerantly, read again out of
 // line (reread, below). The reading is a template argument, so a frame of the manual's length
-// pays nothing for the tolerance.
-template <reading how>
-constexpr result<message> misfit(const can::frame& f, const model_layout& keypad) noexcept;
+// pays nothing for the tolerance. Defined here, before any use (clang evaluates a constant
+// expression only through functions defined where it is used); reread, defined after the front
+// it calls, is found when misfit<reading::tolerant> is instantiated (its Frame is a parameter).
+template <reading how, class Frame>
+constexpr result<message> misfit(const Frame& f, const model_layout& keypad) noexcept {
+    if constexpr (how == reading::strict)
+        return errc::wrong_length;
+    else
+        return reread(f, keypad);
+}
 
 // The answer of a decoder of the CiA 301 or J1939 layer (NMT, SYNC, the switch back), its
 // wrong_length read again as every other frame's.
@@ -713,14 +720,6 @@ POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
         return with_form(*r, frame_form::padded);
     }
     return errc::wrong_length;
-}
-
-template <reading how>
-constexpr result<message> misfit(const can::frame& f, const model_layout& keypad) noexcept {
-    if constexpr (how == reading::strict)
-        return errc::wrong_length;
-    else
-        return reread(f, keypad);
 }
 }  // namespace detail
 
