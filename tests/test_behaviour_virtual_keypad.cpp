@@ -973,3 +973,50 @@ static_assert(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
 TEST_CASE("the keypad's run states have one name each") {
     CHECK(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
 }
+
+// The timers woken exactly at, and exactly one period after, their deadline: one frame, and the
+// next deadline one period after the wake, not at it (PK1000 29 heartbeat, 46 b event timer).
+TEST_CASE("timers woken at their deadline and exactly one period late") {
+    SUBCASE("the heartbeat producer") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2B17100064000000", {10}) == "595#6017100000000000");  // 100 ms
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{110});
+        k.advance(millis{109});
+        CHECK_FALSE(k.transmit());
+        k.advance(millis{210});  // due at 110: one heartbeat, the next at 310
+        CHECK(text_of(*k.transmit()) == "715#7F");
+        CHECK_FALSE(k.transmit());
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{310});
+        k.advance(millis{210});
+        CHECK_FALSE(k.transmit());
+    }
+    SUBCASE("the event timer of the key state") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2B00180532000000") == "595#6000180500000000");  // 50 ms
+        k.receive(frame_of("000#0115"), millis{100});
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{150});
+        k.advance(millis{149});
+        CHECK_FALSE(k.transmit());
+        k.advance(millis{200});  // due at 150: one key state, the next at 250
+        REQUIRE(k.transmit());
+        CHECK_FALSE(k.transmit());
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{250});
+    }
+    SUBCASE("the consumer heartbeat's deadline: operational until it, pre-operational at it") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2316100164000100") == "595#6016100100000000");  // 100 ms from node 1
+        k.receive(frame_of("000#0115"), millis{20});
+        k.receive(frame_of("701#00"), millis{30});  // a boot-up (00h) starts no monitoring
+        k.advance(millis{500});
+        CHECK(k.state() == run_state::operational);
+        k.receive(frame_of("701#05"), millis{600});
+        k.advance(millis{699});
+        CHECK(k.state() == run_state::operational);
+        k.advance(millis{700});
+        CHECK(k.state() == run_state::pre_operational);
+    }
+}
