@@ -276,3 +276,101 @@ TEST_CASE("j1939: a message describes itself through its fields") {
           "red: -  green: -  blue: -  yellow: -  cyan: 4  violet: -  white: -  amber: -  "
           "yellow_green: -  blink: 3 5 6");
 }
+
+// --- every parameter byte of every J1939 command, every reserved byte's bits -----------------
+// Walked from the command table for every J1939 model: each configuration command (EF00h, 04h 1Bh
+// code p1 p2, then FFh) with each parameter at every byte, accepted exactly when the manuals'
+// range of the parameter's kind holds (below; PKP2600SI J1939 and PKP1600SI J1939 manuals,
+// sections 8-27), else value_out_of_range; each bit of each byte after the parameters cleared
+// alone: reserved_not_ff. A command the model's manuals lack is unknown_command, one no source
+// shows on it undocumented, whatever its bytes.
+namespace {
+namespace pj = powerkey::j1939;
+using jp = pj::command_param;
+using powerkey::errc;
+// The manuals' range of a parameter's byte; `p1` the command's first byte (the heartbeat's
+// FFh is taken only when it is switched off).
+constexpr bool j1939_param_accepts(jp p, unsigned b, unsigned p1) {
+    switch (p) {
+        case jp::none: return b == 0xFF;
+        case jp::level: return b <= 0x3F;
+        case jp::flag: return b <= 1;
+        case jp::show: return b <= 2;
+        case jp::management: return b == 0 || b == 2;
+        case jp::destination: return b != 0xFE;
+        case jp::baud: return b == 2 || b == 3;
+        case jp::source: return (b >= 1 && b <= 0xFD) || b == 0xFF;
+        case jp::identifier: return b != 0xFE;
+        case jp::period: return b >= 0x05 && b <= 0xFE;
+        case jp::heartbeat_time: return (b >= 0x05 && b <= 0xFE) || (b == 0xFF && p1 == 0);
+        case jp::colour: return b >= 1 && b <= 9;
+    }
+    return false;
+}
+constexpr unsigned j1939_lowest(jp p) {
+    for (unsigned b = 0; b < 0x100; ++b)
+        if (j1939_param_accepts(p, b, 0)) return b;
+    return 0xFF;
+}
+can::frame config_frame(unsigned code, unsigned p1, unsigned p2, unsigned cleared_bit = 64) {
+    std::uint64_t w = 0xFFFF'FFFF'FFFF'FFFFu;
+    w = (w & ~std::uint64_t{0xFF'FFFF'FFFF}) | 0x04 | 0x1B << 8 | std::uint64_t{code} << 16 |
+        std::uint64_t{p1} << 24 | std::uint64_t{p2} << 32;
+    if (cleared_bit < 64) w &= ~(std::uint64_t{1} << cleared_bit);
+    can::payload p{};
+    for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+    return can::frame(can::extended_id::make(0x18EF'2100).value(), 8, p);
+}
+}  // namespace
+
+TEST_CASE("every parameter byte of every J1939 command and every reserved bit, in every model") {
+    std::size_t walked = 0;
+    for (std::size_t i = 0; i < pj::model_row_count; ++i) {
+        const auto m = static_cast<powerkey::model>(i);
+        const auto r = *pj::row(m);
+        CAPTURE(i);
+        for (unsigned code = 0; code < 0x100; ++code) {
+            const auto* row = pj::find_command(static_cast<std::uint8_t>(code));
+            if (row == nullptr || code == 0x2A) continue;  // 2Ah: the revision request and answer
+            CAPTURE(code);
+            const auto cov = r.frames.of(row->what);
+            const unsigned v1 = j1939_lowest(row->p1), v2 = j1939_lowest(row->p2);
+            if (cov == pj::coverage::absent || cov == pj::coverage::unknown) {
+                CHECK(pj::decode(config_frame(code, v1, v2), m) ==
+                      (cov == pj::coverage::absent ? errc::unknown_command : errc::undocumented));
+                continue;
+            }
+            ++walked;
+            if (row->p1 != jp::none) {
+                for (unsigned b = 0; b < 0x100; ++b) {
+                    CAPTURE(b);
+                    // the second parameter at a byte valid whatever the first is
+                    const unsigned other = row->p2 == jp::heartbeat_time ? 0x05 : v2;
+                    const auto got = pj::decode(config_frame(code, b, other), m);
+                    if (j1939_param_accepts(row->p1, b, 0))
+                        CHECK(got.has_value());
+                    else
+                        CHECK(got == errc::value_out_of_range);
+                }
+            }
+            if (row->p2 != jp::none) {
+                for (unsigned b = 0; b < 0x100; ++b) {
+                    CAPTURE(b);
+                    const auto got = pj::decode(config_frame(code, v1, b), m);
+                    if (j1939_param_accepts(row->p2, b, v1))
+                        CHECK(got.has_value());
+                    else
+                        CHECK(got == errc::value_out_of_range);
+                }
+            }
+            const unsigned used = row->p1 == jp::none   ? 3
+                                  : row->p2 == jp::none ? 4
+                                                        : 5;  // bytes up to the params
+            for (unsigned bit = 8 * used; bit < 64; ++bit) {
+                CAPTURE(bit);
+                CHECK(pj::decode(config_frame(code, v1, v2, bit), m) == errc::reserved_not_ff);
+            }
+        }
+    }
+    CHECK(walked >= 20);
+}
