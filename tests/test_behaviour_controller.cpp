@@ -983,6 +983,28 @@ TEST_CASE("key modes: momentary, toggle, cycle") {
     CHECK(k.set(3, key_mode::cycle, 3));
     CHECK(!k.set(4, key_mode::cycle, 1));
     CHECK(!k.set(17, key_mode::toggle));
+    // Each bound at its end and one step outside: keys 1..16, a cycle of 2 states or more.
+    {
+        key_modes<> b;
+        CHECK(!b.set(0, key_mode::toggle));
+        CHECK(b.set(16, key_mode::toggle));
+        CHECK(!b.set(4, key_mode::cycle, 0));
+        CHECK(b.set(4, key_mode::cycle, 2));
+        CHECK(b.state(16) == 0);
+        CHECK(b.state(17) == 0);
+        CHECK(b.mode(17) == key_mode::momentary);
+        // A cycle of 2 wraps after state 1; one of 255 counts to 254.
+        const controller_event p4{event_kind::key_pressed, 4};
+        CHECK(b.on_event(p4) == key_mode_change{4, 1});
+        CHECK(b.on_event(p4) == key_mode_change{4, 0});
+        CHECK(b.set(5, key_mode::cycle, 255));
+        const controller_event p5{event_kind::key_pressed, 5};
+        for (unsigned s = 1; s < 255; ++s)
+            CHECK(b.on_event(p5) == key_mode_change{5, static_cast<std::uint8_t>(s)});
+        CHECK(b.on_event(p5) == key_mode_change{5, 0});
+        // A key past Keys changes nothing.
+        CHECK(b.on_event(controller_event{event_kind::key_pressed, 17}) == std::nullopt);
+    }
     const auto press = [](unsigned n) {
         return controller_event{event_kind::key_pressed, static_cast<std::uint8_t>(n)};
     };
