@@ -108,3 +108,33 @@ TEST_CASE("an abort keeps its direction") {
 TEST_CASE("the codec's compile-time check of the command module, again at run time") {
     CHECK(opaque(&detail::commands_writable)());
 }
+
+// Every byte of the one-byte fields of the CiA 301 frames every model takes, through decode: the
+// heartbeat's state (00h boot-up, 04h stopped, 05h operational, 7Fh pre-operational; PK1000 8-9,
+// PKP 8-9), the NMT command (01h, 02h, 80h, 81h, 82h and the legacy 00h; PK1000 4-7) with this
+// node and 00h (all) as the target. Anything else is refused with value_out_of_range (a state)
+// or unknown_command (a command).
+TEST_CASE("every heartbeat state byte and NMT command byte, in every model") {
+    const canopen::node_id node = canopen::default_node_id;
+    for (const model m : enum_values<model>()) {
+        CAPTURE(std::string(to_string(m)));
+        for (unsigned b = 0; b < 0x100; ++b) {
+            CAPTURE(b);
+            const can::payload hb{static_cast<std::uint8_t>(b)};
+            const auto state = decode(can::frame(can::standard_id{0x715}, 1, hb), node, m);
+            if (b == 0x00 || b == 0x04 || b == 0x05 || b == 0x7F)
+                CHECK(state.has_value());
+            else
+                CHECK(state == errc::value_out_of_range);
+            for (const unsigned target : {0x00u, 0x15u}) {
+                const can::payload nmt{static_cast<std::uint8_t>(b),
+                                       static_cast<std::uint8_t>(target)};
+                const auto command = decode(can::frame(can::standard_id{0x000}, 2, nmt), node, m);
+                if (b <= 0x02 || (b >= 0x80 && b <= 0x82))
+                    CHECK(command.has_value());
+                else
+                    CHECK(command == errc::unknown_command);
+            }
+        }
+    }
+}
