@@ -19,6 +19,7 @@ The mutant list (tests/mutants.txt): blocks separated by a blank line, each
     find: one line of the file's text, which must occur exactly once in the file
     replace: what it becomes
     equivalent: why no test can tell (optional: the mutant is counted apart)
+    tests: the test files (names without .cpp) to try first (optional)
 and '#' lines as comments. A snippet that no longer occurs exactly once is reported as stale
 (and fails the run), never skipped silently.
 """
@@ -52,6 +53,7 @@ class Mutant:
         self.find = fields.get("find", "")
         self.replace = fields.get("replace", "")
         self.equivalent = fields.get("equivalent")
+        self.tests = fields.get("tests", "").split()
         self.stale = None
 
     def label(self):
@@ -71,8 +73,8 @@ def parse(path):
                 fields = {}
             continue
         key, sep, value = raw.partition(": ")
-        if not sep or key not in ("file", "find", "replace", "equivalent"):
-            sys.exit(f"{path}:{n}: expected 'file: ', 'find: ', 'replace: ' or 'equivalent: '")
+        if not sep or key not in ("file", "find", "replace", "equivalent", "tests"):
+            sys.exit(f"{path}:{n}: expected 'file: ', 'find: ', 'replace: ', 'equivalent: ' or 'tests: '")
         if not fields:
             start = n
         fields[key] = value
@@ -261,7 +263,9 @@ def main():
                 here = kills.get((m.file, s), 0)
                 anywhere = sum(n for (h, f), n in kills.items() if f == s)
                 return (5 * here + 0.05 * anywhere + (8 if s in own else 0) + 1) / cost(s)
-            return sorted((s for s in sources if rel in deps[s]), key=score, reverse=True)
+            ranked = sorted((s for s in sources if rel in deps[s]), key=score, reverse=True)
+        hinted = [s for name in m.tests for s in ranked if s.stem == name]
+        return hinted + [s for s in ranked if s not in hinted]
 
     def run(m):
         w = take()

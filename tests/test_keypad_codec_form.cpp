@@ -140,6 +140,8 @@ static_assert(first_failing(rows, reads_as_manual) == std::size(rows));
 // 00h: refused both ways with wrong_length (or, padded, the manual form's own refusal).
 constexpr error_row refusals[] = {
     {"key state cut before the tick (E-PK-12)", every, 0x15, "195#0100", errc::wrong_length},
+    {"key state cut just before the tick, 4 bytes", every, 0x15, "195#01000000",
+     errc::wrong_length},
     {"key state padded with a byte set", every, 0x15, "195#010000002A01", errc::wrong_length},
     {"PK1000 LED map, 7 bytes (green LED 28 is in byte 7)", m1000, 0x15, "215#01000000000000",
      errc::wrong_length},
