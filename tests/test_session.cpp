@@ -84,8 +84,8 @@ constexpr step_row unanswered[] = {
 static_assert(follows(model::pk1000, unanswered));
 
 // Each pairing rule at its edge: an SDO frame cut to its 4 bytes of specifier and address (a
-// trimmed read, docs/decoder.md) still pairs; a write acknowledgement answers a write, not a
-// read of the same object, and a value read answers a read, not a write.
+// trimmed read, docs/decoder.md) still pairs, decoded or not; a write acknowledgement answers a
+// write, not a read of the same object, and a value read answers a read, not a write.
 constexpr step_row pairing_edges[] = {
     {"615#40171000", sdo_pairing::request, 0x15, true, 0},
     {"595#4B17100064000000", sdo_pairing::reply, 0x15, true, 0},
@@ -94,6 +94,9 @@ constexpr step_row pairing_edges[] = {
     {"615#2B17100064000000", sdo_pairing::request, 0x15, true, 0},
     {"595#4B17100064000000", sdo_pairing::unanswered, 0x15, true, 0},
     {"595#6017100000000000", sdo_pairing::reply, 0x15, true, 0},
+    // 4 bytes that decode to nothing (no object 1FFFh) are still a read, which the abort answers
+    {"615#40FF1F00", sdo_pairing::request, 0x15, false, 0},
+    {"595#80FF1F0000000206", sdo_pairing::reply, 0x15, true, 0},
 };
 static_assert(follows(model::pk1000, pairing_edges));
 
