@@ -620,6 +620,20 @@ TEST_CASE("SYNC: RPDOs of types 00h..F0h wait for the next SYNC, the TPDO every 
     CHECK(text_of(*k.transmit()) == "195#0400000000");
     k.receive(frame_of("080#"), millis{70});
     CHECK_FALSE(k.transmit());
+    // The last synchronous type, F0h: buffered too, and the TPDO every 240th SYNC.
+    auto f0 = booted(model::pk1000);
+    CHECK(ask(f0, "615#2F011402F0000000") == "595#6001140200000000");
+    CHECK(ask(f0, "615#2F001802F0000000", {20}) == "595#6000180200000000");
+    f0.receive(frame_of("000#0115"), millis{30});
+    f0.receive(frame_of("315#0100000000000000"), millis{40});
+    CHECK(f0.led_blink() == leds{});
+    for (std::uint32_t n = 1; n < 240; ++n) {
+        f0.receive(frame_of("080#"), millis{40 + n});
+        CHECK_FALSE(f0.transmit());
+    }
+    CHECK(f0.led_blink().red.contains(1));
+    f0.receive(frame_of("080#"), millis{300});
+    CHECK(text_of(*f0.transmit()).starts_with("195#"));
 }
 
 TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command module") {
