@@ -5,6 +5,10 @@
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sync.hpp>
 #include <powerkey/names.hpp>
 
 #include "support.hpp"
@@ -112,3 +116,28 @@ TEST_CASE("COB-IDs both ways") {
 TEST_CASE("which frames concern a keypad") { check_rows(concerns_rows, concerns_right); }
 
 TEST_CASE("the names of the functions") { CHECK(name_table_is<function>(function_rows, 15)); }
+
+// The CiA 301 decoders take their frame at its one length only (NMT 2, SYNC 0, heartbeat 1, SDO
+// 8): every other length 0..8 is wrong_length, the identifier right.
+TEST_CASE("each CiA 301 frame at its length only") {
+    using namespace powerkey::canopen;
+    const node_id node = default_node_id;
+    for (std::uint8_t n = 0; n <= 8; ++n) {
+        CAPTURE(int{n});
+        const powerkey::can::payload p{0x01, 0x15};  // NMT start of 15h; a heartbeat byte 01h...
+        const auto at = [&](std::uint16_t id) {
+            return powerkey::can::frame(powerkey::can::standard_id::make(id).value(),
+                                        powerkey::can::dlc::make(n).value(), p);
+        };
+        CHECK((decode_nmt(at(0x000)) == powerkey::errc::wrong_length) == (n != 2));
+        CHECK((decode_sync(at(0x080)) == powerkey::errc::wrong_length) == (n != 0));
+        const powerkey::can::payload state{0x05};
+        const auto hb = powerkey::can::frame(powerkey::can::standard_id{0x715},
+                                             powerkey::can::dlc::make(n).value(), state);
+        CHECK((decode_heartbeat(hb, node) == powerkey::errc::wrong_length) == (n != 1));
+        const powerkey::can::payload read{0x40, 0x00, 0x10};
+        const auto sdo = powerkey::can::frame(powerkey::can::standard_id{0x615},
+                                              powerkey::can::dlc::make(n).value(), read);
+        CHECK((decode_sdo_request(sdo, node) == powerkey::errc::wrong_length) == (n != 8));
+    }
+}

@@ -249,12 +249,12 @@ constexpr result<sdo_op> expected_response(std::uint8_t c, bool data_zero) {
 constexpr sdo_word word_of(std::uint8_t c, std::uint32_t index_sub, std::uint32_t data) {
     return {c | (std::uint64_t{index_sub} << 8) | (std::uint64_t{data} << 32)};
 }
-// Every specifier, with bytes 1..7 zero, with an address, and with data.
+// Every specifier, with bytes 1..7 zero, with an address (each of bytes 1..3 set), and with data.
 constexpr bool every_specifier_read_as_the_layout_says() {
     for (unsigned c = 0; c < 0x100; ++c) {
         const auto b = static_cast<std::uint8_t>(c);
         for (const std::uint32_t data : {0u, 1u, 0x8000'0000u}) {
-            for (const std::uint32_t address : {0u, 0x01'2000u}) {
+            for (const std::uint32_t address : {0u, 0x01'2000u, 0x00'0001u, 0x01'0000u}) {
                 const bool rest_zero = data == 0 && address == 0;
                 if (sdo_request_op(word_of(b, address, data)) !=
                     expected_request(b, data == 0, rest_zero))

@@ -102,3 +102,26 @@ static_assert(every_name_bit_alone());
 TEST_CASE("J1939 NAME: each of its 64 bits alone, bit 48 reserved") {
     CHECK(every_name_bit_alone());
 }
+
+// make_id at the PDU1/PDU2 border: a PDU1 PGN (PF below F0h) carries no low byte (it is the
+// destination): EF00h takes any destination, EF01h none; a PDU2 PGN (F000h) goes to FFh only.
+TEST_CASE("J1939 identifiers: the PGN's low byte at the PDU1 and PDU2 border") {
+    using namespace powerkey::j1939;
+    identifier id{};
+    id.priority = priority::make(6).value();
+    id.source = 0x00;
+    id.destination = 0x21;
+    id.pgn = pgn::make(0xEF00).value();
+    CHECK(make_id(id).has_value());
+    id.pgn = pgn::make(0xEF01).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);
+    id.pgn = pgn::make(0xEF80).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);
+    id.pgn = pgn::make(0xF000).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);  // PDU2: only to FFh
+    id.destination = global_address;
+    CHECK(make_id(id).has_value());
+    CHECK(parse_id(*make_id(id)).pgn.value() == 0xF000);
+    id.pgn = pgn::make(0xEFFF).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);  // PDU1: EFh is below F0h
+}
