@@ -360,3 +360,21 @@ TEST_CASE("the LED-map and key-map rule, each of 64 bits alone, in every model")
         }
     }
 }
+
+// A model set holds models of the table only: every value of the enum's byte, at compile time.
+namespace {
+constexpr bool model_set_bounds() {
+    model_set s = model_set::all();
+    for (unsigned v = 0; v < 256; ++v) {
+        const auto m = static_cast<model>(v);
+        if (s.contains(m) != (v < model_count)) return false;
+        model_set one;
+        one.insert(m);
+        if (one.empty() != (v >= model_count)) return false;
+    }
+    return true;
+}
+static_assert(model_set_bounds());
+}  // namespace
+
+TEST_CASE("a model set holds models of the table only") { CHECK(model_set_bounds()); }
