@@ -226,3 +226,27 @@ TEST_CASE("every parameter byte of every command and every reserved bit, in ever
     }
     CHECK(models >= 3);  // the PKP-2200, 2400 and 2600-LI
 }
+
+// The command module's own codes of the shared values: PKP 13 e (baud rate: 00h 125k, 01h 250k,
+// 02h 500k) and 13 m (start-up show: 01h complete, 02h fast flash, 03h disabled), each both ways.
+TEST_CASE("the command module's codes of the baud rate and the start-up show, both ways") {
+    const auto row = find_row(info(model::pkp2400)->dictionary, object::command_module);
+    REQUIRE(row.has_value());
+    const baud_rate bauds[] = {baud_rate::kbit_125, baud_rate::kbit_250, baud_rate::kbit_500};
+    const startup_show shows[] = {startup_show::complete, startup_show::fast_flash,
+                                  startup_show::disabled};
+    for (unsigned b = 0; b < 3; ++b) {
+        CAPTURE(b);
+        const auto baud = command_frame(model::pkp2400, 4, 0x11, b, 0, 0);
+        REQUIRE(baud.has_value());
+        CHECK(std::get<command>(*baud).baud == bauds[b]);
+        const auto show = command_frame(model::pkp2400, 4, 0x50, b + 1, 0, 0);
+        REQUIRE(show.has_value());
+        CHECK(std::get<command>(*show).show == shows[b]);
+        CHECK(encode(command_node, model::pkp2400, *baud) ==
+              powerkey_tests::expedited_frame(command_node, row->address, 4, 0x11 | b << 8, true));
+        CHECK(encode(command_node, model::pkp2400, *show) ==
+              powerkey_tests::expedited_frame(command_node, row->address, 4, 0x50 | (b + 1) << 8,
+                                              true));
+    }
+}
