@@ -131,6 +131,38 @@ constexpr bool table3_holds() {
 }
 static_assert(table3_holds());
 
+// Every pair of codes 0h..Fh, and every look of every mode, colour and secondary colour 0..15:
+// a defined look comes back from its codes; codes_for gives codes exactly for a colour (and, to
+// alternate, a secondary colour) in 1h..9h, and those codes show the look asked for.
+constexpr bool every_code_pair_and_look() {
+    for (unsigned c1 = 0; c1 < 16; ++c1) {
+        for (unsigned c2 = 0; c2 < 16; ++c2) {
+            const led_look look =
+                combine(static_cast<std::uint8_t>(c1), static_cast<std::uint8_t>(c2));
+            if (!look.defined) continue;
+            const auto back = codes_for(look.mode, look.colour, look.secondary);
+            if (!back || !(combine(back->colour_1, back->colour_2) == look)) return false;
+        }
+    }
+    for (const led_mode mode : {led_mode::on, led_mode::blink, led_mode::alternate_blink}) {
+        for (unsigned c = 0; c < 16; ++c) {
+            for (unsigned s2 = 0; s2 < 16; ++s2) {
+                const auto colour = static_cast<lc>(c), secondary = static_cast<lc>(s2);
+                const auto codes = codes_for(mode, colour, secondary);
+                const bool valid =
+                    c >= 1 && c <= 9 && (mode != led_mode::alternate_blink || (s2 >= 1 && s2 <= 9));
+                if (codes.has_value() != valid) return false;
+                if (!codes) continue;
+                const led_look look = combine(codes->colour_1, codes->colour_2);
+                if (!look.defined || look.mode != mode || look.colour != colour) return false;
+                if (mode == led_mode::alternate_blink && look.secondary != secondary) return false;
+            }
+        }
+    }
+    return true;
+}
+static_assert(every_code_pair_and_look());
+
 // encode never builds a frame decode refuses, nor one that decodes to another message: run for
 // every model over raw field values (fuzz/j1939.cpp does the same with arbitrary bytes).
 constexpr bool encodes_back(model m, const j1939_rows::message& msg, keypad_address k = {}) {
@@ -322,6 +354,10 @@ can::frame config_frame(unsigned code, unsigned p1, unsigned p2, unsigned cleare
     return can::frame(can::extended_id::make(0x18EF'2100).value(), 8, p);
 }
 }  // namespace
+
+TEST_CASE("TABLE 3: every pair of codes and every look of every colour") {
+    CHECK(every_code_pair_and_look());
+}
 
 TEST_CASE("every parameter byte of every J1939 command and every reserved bit, in every model") {
     std::size_t walked = 0;
