@@ -408,3 +408,76 @@ TEST_CASE("every parameter byte of every J1939 command and every reserved bit, i
     }
     CHECK(walked >= 20);
 }
+
+// The LED command (7a) and the LED acknowledgement (19) of the SI form, every byte of each field:
+// colour 00h..09h, state 00h..03h, secondary colour 00h..09h or FFh, an LED the model has; any
+// other byte value_out_of_range. The command's byte 6 FFh reads as a key contact state where the
+// other bytes allow it (the command is told by byte 6), so the command's secondary is walked to
+// FEh.
+TEST_CASE("every byte of the SI-form LED command and acknowledgement, in every J1939 model") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    const auto frame = [](std::uint32_t id, std::uint64_t w) {
+        can::payload p{};
+        for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+        return can::frame(can::extended_id::make(id).value(), 8, p);
+    };
+    const auto bytes = [](std::initializer_list<unsigned> b) {
+        std::uint64_t w = 0;
+        unsigned i = 0;
+        for (const unsigned x : b) w |= std::uint64_t{x} << (8 * i++);
+        return w;
+    };
+    std::size_t walked = 0;
+    for (std::size_t i = 0; i < pj::model_row_count; ++i) {
+        const auto m = static_cast<powerkey::model>(i);
+        const auto r = *pj::row(m);
+        if (r.form != pj::led_form::si) continue;
+        CAPTURE(i);
+        const bool command = r.frames.has(pj::feature::led_command);
+        const bool ack = r.frames.has(pj::feature::led_ack);
+        unsigned led = 0;
+        for (unsigned k = 1; k <= 16 && led == 0; ++k)
+            if (((r.leds >> (k - 1)) & 1u) != 0) led = k;
+        if (led == 0) continue;
+        ++walked;
+        for (unsigned b = 0; b < 0x100; ++b) {
+            CAPTURE(b);
+            // to the keypad: 04h 1Bh 01h, LED, colour, state, secondary, FFh
+            if (command) {
+                const auto at = [&](unsigned c, unsigned s, unsigned s2) {
+                    return pj::decode(
+                        frame(0x18EF'2100, bytes({0x04, 0x1B, 0x01, led, c, s, s2, 0xFF})), m);
+                };
+                const auto colour = at(b, 1, 0);
+                CHECK((colour.has_value() ? errc{} : colour.error()) ==
+                      (b <= 9 ? errc{} : errc::value_out_of_range));
+                const auto state = at(1, b, 0);
+                CHECK((state.has_value() ? errc{} : state.error()) ==
+                      (b <= 3 ? errc{} : errc::value_out_of_range));
+                if (b != 0xFF) {
+                    const auto secondary = at(1, 3, b);
+                    CHECK((secondary.has_value() ? errc{} : secondary.error()) ==
+                          (b <= 9 ? errc{} : errc::value_out_of_range));
+                }
+            }
+            // from the keypad: 00h, state, LED, colour, secondary, FFh FFh FFh
+            if (ack) {
+                const auto at = [&](unsigned s, unsigned c, unsigned s2) {
+                    return pj::decode(
+                        frame(0x18EF'FF21, bytes({0x00, s, led, c, s2, 0xFF, 0xFF, 0xFF})), m);
+                };
+                const auto state = at(b, 1, 0);
+                CHECK((state.has_value() ? errc{} : state.error()) ==
+                      (b <= 3 ? errc{} : errc::value_out_of_range));
+                const auto colour = at(1, b, 0);
+                CHECK((colour.has_value() ? errc{} : colour.error()) ==
+                      (b <= 9 ? errc{} : errc::value_out_of_range));
+                const auto secondary = at(3, 1, b);
+                CHECK((secondary.has_value() ? errc{} : secondary.error()) ==
+                      (b <= 9 || b == 0xFF ? errc{} : errc::value_out_of_range));
+            }
+        }
+    }
+    CHECK(walked >= 2);
+}
