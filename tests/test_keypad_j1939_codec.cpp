@@ -481,3 +481,26 @@ TEST_CASE("every byte of the SI-form LED command and acknowledgement, in every J
     }
     CHECK(walked >= 2);
 }
+
+// The software revision's answer (11): each of its five bytes at every value: printable ASCII
+// 20h..7Eh, or 00h to end the text (after which only 00h); anything else value_out_of_range.
+TEST_CASE("every byte of each character of the software revision's answer") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    for (unsigned at = 0; at < 5; ++at) {
+        for (unsigned b = 0; b < 0x100; ++b) {
+            if (b == 0xFF) continue;  // five FFh bytes are the request
+            CAPTURE(at);
+            CAPTURE(b);
+            can::payload p{0x04, 0x1B, 0x2A, 'V', '2', '.', '1', '0'};
+            p[3 + at] = static_cast<std::uint8_t>(b);
+            const auto got =
+                pj::decode(can::frame(can::extended_id::make(0x18EF'FF21).value(), 8, p),
+                           powerkey::model::pkp1600si);
+            // 00h ends the text: the bytes after it must be 00h too (only the last may be 00h here)
+            const bool ok = (b >= 0x20 && b <= 0x7E) || (b == 0 && at == 4);
+            CHECK((got.has_value() ? errc{} : got.error()) ==
+                  (ok ? errc{} : errc::value_out_of_range));
+        }
+    }
+}
