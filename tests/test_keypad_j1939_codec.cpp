@@ -501,6 +501,30 @@ TEST_CASE("every byte of each character of the software revision's answer") {
             const bool ok = (b >= 0x20 && b <= 0x7E) || (b == 0 && at == 4);
             CHECK((got.has_value() ? errc{} : got.error()) ==
                   (ok ? errc{} : errc::value_out_of_range));
+            if (got) CHECK(std::get<pj::software_revision>(*got).length() == (b == 0 ? 4u : 5u));
         }
+    }
+}
+
+// The switch back to CANopen (27): 04h 1Bh 80h 00h, then FFh; byte 3 at every other value is
+// value_out_of_range, each bit of bytes 4..7 cleared alone reserved_not_ff.
+TEST_CASE("every byte 3 and every reserved bit of the switch back to CANopen") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    const auto at = [](std::uint64_t w) {
+        can::payload p{};
+        for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+        return pj::decode(can::frame(can::extended_id::make(0x18EF'2100).value(), 8, p),
+                          powerkey::model::pkp2600si);
+    };
+    const std::uint64_t manual = 0xFFFF'FFFF'0080'1B04u;
+    REQUIRE(at(manual).has_value());
+    for (unsigned b = 1; b < 0x100; ++b) {
+        CAPTURE(b);
+        CHECK(at(manual | std::uint64_t{b} << 24) == errc::value_out_of_range);
+    }
+    for (unsigned bit = 32; bit < 64; ++bit) {
+        CAPTURE(bit);
+        CHECK(at(manual & ~(std::uint64_t{1} << bit)) == errc::reserved_not_ff);
     }
 }
