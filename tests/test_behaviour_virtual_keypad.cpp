@@ -1039,3 +1039,20 @@ TEST_CASE("timers woken at their deadline and exactly one period late") {
         CHECK(k.state() == run_state::pre_operational);
     }
 }
+
+// The millisecond clock wraps after 2^32 ms (behaviour/clock.hpp): a time up to 2^31 - 1 ms ahead
+// is after, 2^31 ms or more is taken as before; a deadline is reached at its own millisecond.
+TEST_CASE("the clock across its wrap: before and reached at their bounds") {
+    using behaviour::before;
+    using behaviour::reached;
+    constexpr millis zero{0}, near_end{0xFFFF'FFFFu};
+    static_assert(!before(zero, zero) && reached(zero, zero));
+    static_assert(before(zero, millis{1}) && !before(millis{1}, zero));
+    static_assert(before(zero, millis{0x7FFF'FFFFu}) && !before(zero, millis{0x8000'0000u}));
+    static_assert(before(zero, millis{0x4000'0000u}));
+    static_assert(before(near_end, zero) && !before(zero, near_end));  // across the wrap
+    static_assert(reached(near_end, zero) && !reached(zero, near_end));
+    static_assert(!reached(millis{1}, zero) && reached(millis{1}, millis{1}));
+    CHECK(before(zero, millis{0x7FFF'FFFFu}));
+    CHECK_FALSE(before(zero, millis{0x8000'0000u}));
+}
