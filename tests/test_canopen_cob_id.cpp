@@ -115,25 +115,31 @@ TEST_CASE("the names of the functions") { CHECK(name_table_is<function>(function
 
 // The CiA 301 decoders take their frame at its one length only (NMT 2, SYNC 0, heartbeat 1, SDO
 // 8): every other length 0..8 is wrong_length, the identifier right.
+namespace {
+powerkey::can::frame sized(std::uint16_t id, std::uint8_t n, const powerkey::can::payload& p) {
+    return powerkey::can::frame(powerkey::can::standard_id::make(id).value(),
+                                powerkey::can::dlc::make(n).value(), p);
+}
+bool refused_for_length(const powerkey::result<powerkey::canopen::nmt_message>& r) {
+    return r == powerkey::errc::wrong_length;
+}
+}  // namespace
+
 TEST_CASE("each CiA 301 frame at its length only") {
     using namespace powerkey::canopen;
-    const node_id node = default_node_id;
+    const powerkey::can::payload nmt{0x01, 0x15};  // NMT start of 15h
+    const powerkey::can::payload state{0x05};
+    const powerkey::can::payload read{0x40, 0x00, 0x10};
     for (std::uint8_t n = 0; n <= 8; ++n) {
         CAPTURE(int{n});
-        const powerkey::can::payload p{0x01, 0x15};  // NMT start of 15h; a heartbeat byte 01h...
-        const auto at = [&](std::uint16_t id) {
-            return powerkey::can::frame(powerkey::can::standard_id::make(id).value(),
-                                        powerkey::can::dlc::make(n).value(), p);
-        };
-        CHECK((decode_nmt(at(0x000)) == powerkey::errc::wrong_length) == (n != 2));
-        CHECK((decode_sync(at(0x080)) == powerkey::errc::wrong_length) == (n != 0));
-        const powerkey::can::payload state{0x05};
-        const auto hb = powerkey::can::frame(powerkey::can::standard_id{0x715},
-                                             powerkey::can::dlc::make(n).value(), state);
-        CHECK((decode_heartbeat(hb, node) == powerkey::errc::wrong_length) == (n != 1));
-        const powerkey::can::payload read{0x40, 0x00, 0x10};
-        const auto sdo = powerkey::can::frame(powerkey::can::standard_id{0x615},
-                                              powerkey::can::dlc::make(n).value(), read);
-        CHECK((decode_sdo_request(sdo, node) == powerkey::errc::wrong_length) == (n != 8));
+        CHECK(refused_for_length(decode_nmt(sized(0x000, n, nmt))) == (n != 2));
+        const bool sync_refused = decode_sync(sized(0x080, n, nmt)) == powerkey::errc::wrong_length;
+        CHECK(sync_refused == (n != 0));
+        const bool hb_refused = decode_heartbeat(sized(0x715, n, state), default_node_id) ==
+                                powerkey::errc::wrong_length;
+        CHECK(hb_refused == (n != 1));
+        const bool sdo_refused = decode_sdo_request(sized(0x615, n, read), default_node_id) ==
+                                 powerkey::errc::wrong_length;
+        CHECK(sdo_refused == (n != 8));
     }
 }
