@@ -271,7 +271,7 @@ can::frame segment(bool toggle, unsigned bytes, bool last) {
     p[0] =
         static_cast<std::uint8_t>((toggle ? 0x10u : 0u) | ((7u - bytes) << 1) | (last ? 1u : 0u));
     for (unsigned i = 0; i < bytes; ++i) p[1 + i] = static_cast<std::uint8_t>('a' + i);
-    return can::frame(can::standard_id{0x595}, 8, p);
+    return can::frame(can::standard_id::make(0x595).value(), can::dlc::make(8).value(), p);
 }
 template <std::size_t Capacity = 32>
 struct upload_of_11 {

@@ -155,7 +155,9 @@ TEST_CASE("every heartbeat state byte and NMT command byte, in every model") {
         for (unsigned b = 0; b < 0x100; ++b) {
             CAPTURE(b);
             const can::payload hb{static_cast<std::uint8_t>(b)};
-            const auto state = decode(can::frame(can::standard_id{0x715}, 1, hb), node, m);
+            const auto state = decode(
+                can::frame(can::standard_id::make(0x715).value(), can::dlc::make(1).value(), hb),
+                node, m);
             if (b == 0x00 || b == 0x04 || b == 0x05 || b == 0x7F)
                 CHECK(state.has_value());
             else
@@ -163,7 +165,9 @@ TEST_CASE("every heartbeat state byte and NMT command byte, in every model") {
             for (const unsigned target : {0x00u, 0x15u}) {
                 const can::payload nmt{static_cast<std::uint8_t>(b),
                                        static_cast<std::uint8_t>(target)};
-                const auto command = decode(can::frame(can::standard_id{0x000}, 2, nmt), node, m);
+                const auto command = decode(can::frame(can::standard_id::make(0x000).value(),
+                                                       can::dlc::make(2).value(), nmt),
+                                            node, m);
                 if (b <= 0x02 || (b >= 0x80 && b <= 0x82))
                     CHECK(command.has_value());
                 else

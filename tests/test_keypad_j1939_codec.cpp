@@ -349,7 +349,7 @@ can::frame config_frame(unsigned code, unsigned p1, unsigned p2, unsigned cleare
     if (cleared_bit < 64) w &= ~(std::uint64_t{1} << cleared_bit);
     can::payload p{};
     for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
-    return can::frame(can::extended_id::make(0x18EF'2100).value(), 8, p);
+    return can::frame(can::extended_id::make(0x18EF'2100).value(), can::dlc::make(8).value(), p);
 }
 }  // namespace
 
@@ -420,7 +420,7 @@ TEST_CASE("every byte of the SI-form LED command and acknowledgement, in every J
     const auto frame = [](std::uint32_t id, std::uint64_t w) {
         can::payload p{};
         for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
-        return can::frame(can::extended_id::make(id).value(), 8, p);
+        return can::frame(can::extended_id::make(id).value(), can::dlc::make(8).value(), p);
     };
     const auto bytes = [](std::initializer_list<unsigned> b) {
         std::uint64_t w = 0;
@@ -494,9 +494,9 @@ TEST_CASE("every byte of each character of the software revision's answer") {
             CAPTURE(b);
             can::payload p{0x04, 0x1B, 0x2A, 'V', '2', '.', '1', '0'};
             p[3 + at] = static_cast<std::uint8_t>(b);
-            const auto got =
-                pj::decode(can::frame(can::extended_id::make(0x18EF'FF21).value(), 8, p),
-                           powerkey::model::pkp1600si);
+            const auto got = pj::decode(can::frame(can::extended_id::make(0x18EF'FF21).value(),
+                                                   can::dlc::make(8).value(), p),
+                                        powerkey::model::pkp1600si);
             // 00h ends the text: the bytes after it must be 00h too (only the last may be 00h here)
             const bool ok = (b >= 0x20 && b <= 0x7E) || (b == 0 && at == 4);
             CHECK((got.has_value() ? errc{} : got.error()) ==
@@ -514,8 +514,9 @@ TEST_CASE("every byte 3 and every reserved bit of the switch back to CANopen") {
     const auto at = [](std::uint64_t w) {
         can::payload p{};
         for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
-        return pj::decode(can::frame(can::extended_id::make(0x18EF'2100).value(), 8, p),
-                          powerkey::model::pkp2600si);
+        return pj::decode(
+            can::frame(can::extended_id::make(0x18EF'2100).value(), can::dlc::make(8).value(), p),
+            powerkey::model::pkp2600si);
     };
     const std::uint64_t manual = 0xFFFF'FFFF'0080'1B04u;
     REQUIRE(at(manual).has_value());
