@@ -849,6 +849,18 @@ TEST_CASE("controller: an LED the model lacks is refused") {
     CHECK(c.set_led(4, colour::white));
     CHECK(!c.set_led(5, colour::white));
     CHECK(!c.set_led(0, colour::white));
+    // The PKP-3500-MT has no LED 1 and no LED 11 (its led_mask): each hole refused, its
+    // neighbours and its last LED taken.
+    controller_config mt;
+    mt.keypad_model = model::pkp3500mt;
+    controller<> m(mt);
+    CHECK(!m.set_led(1, colour::red));
+    CHECK(m.set_led(2, colour::red));
+    CHECK(m.set_led(10, colour::red));
+    CHECK(!m.set_led(11, colour::red));
+    CHECK(m.set_led(12, colour::red));
+    CHECK(m.set_led(15, colour::red));
+    CHECK(!m.set_led(16, colour::red));
 }
 
 TEST_CASE("controller: a colour the keypad cannot show, or no colour, is refused") {
