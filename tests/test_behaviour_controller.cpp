@@ -855,6 +855,8 @@ TEST_CASE("controller: an LED the model lacks is refused") {
     mt.keypad_model = model::pkp3500mt;
     controller<> m(mt);
     CHECK(!m.set_led(1, colour::red));
+    CHECK(!m.set_led(1, colour::off));  // off too: the LED is not there to turn off
+    CHECK(!m.set_led(11, colour::off));
     CHECK(m.set_led(2, colour::red));
     CHECK(m.set_led(10, colour::red));
     CHECK(!m.set_led(11, colour::red));
