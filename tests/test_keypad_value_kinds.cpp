@@ -499,8 +499,9 @@ TEST_CASE("every PDO bit on its own and every PDO field at its ends, in every mo
                 const auto at = [&](std::uint64_t v) {
                     return decode(pdo(0x480, 8, v << (16 * input)), bits_node, m);
                 };
-                REQUIRE(at(500).has_value());
-                const auto* a = std::get_if<analog_inputs>(&*at(500));
+                const auto full = at(500);
+                REQUIRE(full.has_value());
+                const auto* a = std::get_if<analog_inputs>(&*full);
                 REQUIRE(a != nullptr);
                 CHECK(a->mv[input] == 5000);
                 CHECK(at(501) == errc::value_out_of_range);
