@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
+#include <powerkey/canopen/sdo.hpp>
 #include <powerkey/describe.hpp>
 #include <powerkey/error.hpp>
 #include <powerkey/keypad/messages.hpp>
@@ -103,6 +104,19 @@ void check_rows(const Row (&rows)[N], Check check) {
 
 constexpr powerkey::can::frame frame_of(std::string_view text) {
     return powerkey::can::parse_candump(text).value();
+}
+
+// An expedited SDO of `size` bytes (1, 2 or 4) to or from keypad `node`: a write (600h + node) or
+// the value read (580h + node) at `address`, its bytes 4..7 the little-endian `data` (bytes past
+// `size` too, so that a walker can set them).
+constexpr powerkey::can::frame expedited_frame(powerkey::canopen::node_id node,
+                                               powerkey::canopen::sdo_address address,
+                                               std::uint8_t size, std::uint32_t data, bool write) {
+    powerkey::canopen::expedited_data d{powerkey::canopen::expedited_size::make(size).value(), {}};
+    for (std::size_t i = 0; i < 4; ++i) d.bytes[i] = static_cast<std::uint8_t>(data >> (8 * i));
+    if (write)
+        return powerkey::canopen::encode(node, powerkey::canopen::sdo_download_request{address, d});
+    return powerkey::canopen::encode(node, powerkey::canopen::sdo_upload_response{address, d});
 }
 
 // --- frames a decoder refuses --------------------------------------------------------------------

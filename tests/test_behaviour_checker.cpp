@@ -326,3 +326,61 @@ TEST_CASE("checker: after the host's abort the next request is no overlap and no
                                 {900, "715#7F"}})
               .empty());
 }
+
+// Each timer of the checker at its boundary: the millisecond before the deadline, the deadline,
+// and the one after. The SDO timeout is reached at exactly sdo_timeout (>=); the silences are
+// problems only past the period and its tolerance (>); the consumer heartbeat only past 1016h's
+// period (PK1000 28 note 2).
+TEST_CASE("checker: every timer the millisecond before, at and after its deadline") {
+    SUBCASE("the SDO timeout: 200 ms by default") {
+        CHECK(checker_config{}.sdo_timeout.value == 200);
+        const auto at = [](std::uint32_t ms) {
+            return check(model::pk1000,
+                         {{0, "715#00"}, {10, "615#4011200000000000"}, {ms, "715#7F"}});
+        };
+        CHECK(at(209).empty());
+        CHECK(at(210) == std::vector<problem>{{2, pk::sdo_no_reply, {0x2011, 0, 200}}});
+        CHECK(at(211) == std::vector<problem>{{2, pk::sdo_no_reply, {0x2011, 0, 201}}});
+        // A reply within the timeout answers the request.
+        CHECK(check(model::pk1000,
+                    {{0, "715#00"}, {10, "615#4011200000000000"}, {209, "595#4F11200001000000"}})
+                  .empty());
+    }
+    SUBCASE("the heartbeat: 1.5 periods of silence allowed (tolerance 50 %)") {
+        checker_config cfg;
+        CHECK(cfg.tolerance_percent == 50);
+        cfg.heartbeat_period = duration_ms{100};
+        const auto at = [&cfg](std::uint32_t ms) {
+            return check(model::pk1000, {{0, "715#05"}, {ms, "080#"}}, cfg);
+        };
+        CHECK(at(149).empty());
+        CHECK(at(150).empty());
+        CHECK(at(151) == std::vector<problem>{{2, pk::heartbeat_silence, {151, 100, 1}}});
+        cfg.tolerance_percent = 0;
+        CHECK(at(100).empty());
+        CHECK(at(101) == std::vector<problem>{{2, pk::heartbeat_silence, {101, 100, 1}}});
+    }
+    SUBCASE("the key state: 1.5 event-timer periods of silence allowed") {
+        checker_config cfg;
+        cfg.key_state_period = duration_ms{50};
+        const auto at = [&cfg](std::uint32_t ms) {
+            return check(model::pk1000, {{0, "000#0115"}, {10, "195#0000000001"}, {ms, "080#"}},
+                         cfg);
+        };
+        CHECK(at(84).empty());
+        CHECK(at(85).empty());
+        CHECK(at(86) == std::vector<problem>{{3, pk::key_state_silence, {76, 50, 2}}});
+    }
+    SUBCASE("the consumer heartbeat (1016h): LEDs ignored only past its period") {
+        const auto at = [](std::uint32_t ms) {
+            return check(model::pk1000, {{0, "615#2316100164007E00"},
+                                         {1, "595#6016100100000000"},
+                                         {2, "000#0115"},
+                                         {10, "77E#05"},
+                                         {ms, "215#0100000000000000"}});
+        };
+        CHECK(at(109).empty());
+        CHECK(at(110).empty());
+        CHECK(at(111) == std::vector<problem>{{5, pk::pdo_not_operational, {0x215, 0x7F, 0}}});
+    }
+}

@@ -849,6 +849,20 @@ TEST_CASE("controller: an LED the model lacks is refused") {
     CHECK(c.set_led(4, colour::white));
     CHECK(!c.set_led(5, colour::white));
     CHECK(!c.set_led(0, colour::white));
+    // The PKP-3500-MT has no LED 1 and no LED 11 (its led_mask): each hole refused, its
+    // neighbours and its last LED taken.
+    controller_config mt;
+    mt.keypad_model = model::pkp3500mt;
+    controller<> m(mt);
+    CHECK(!m.set_led(1, colour::red));
+    CHECK(!m.set_led(1, colour::off));  // off too: the LED is not there to turn off
+    CHECK(!m.set_led(11, colour::off));
+    CHECK(m.set_led(2, colour::red));
+    CHECK(m.set_led(10, colour::red));
+    CHECK(!m.set_led(11, colour::red));
+    CHECK(m.set_led(12, colour::red));
+    CHECK(m.set_led(15, colour::red));
+    CHECK(!m.set_led(16, colour::red));
 }
 
 TEST_CASE("controller: a colour the keypad cannot show, or no colour, is refused") {
@@ -983,6 +997,28 @@ TEST_CASE("key modes: momentary, toggle, cycle") {
     CHECK(k.set(3, key_mode::cycle, 3));
     CHECK(!k.set(4, key_mode::cycle, 1));
     CHECK(!k.set(17, key_mode::toggle));
+    // Each bound at its end and one step outside: keys 1..16, a cycle of 2 states or more.
+    {
+        key_modes<> b;
+        CHECK(!b.set(0, key_mode::toggle));
+        CHECK(b.set(16, key_mode::toggle));
+        CHECK(!b.set(4, key_mode::cycle, 0));
+        CHECK(b.set(4, key_mode::cycle, 2));
+        CHECK(b.state(16) == 0);
+        CHECK(b.state(17) == 0);
+        CHECK(b.mode(17) == key_mode::momentary);
+        // A cycle of 2 wraps after state 1; one of 255 counts to 254.
+        const controller_event p4{event_kind::key_pressed, 4};
+        CHECK(b.on_event(p4) == key_mode_change{4, 1});
+        CHECK(b.on_event(p4) == key_mode_change{4, 0});
+        CHECK(b.set(5, key_mode::cycle, 255));
+        const controller_event p5{event_kind::key_pressed, 5};
+        for (unsigned s = 1; s < 255; ++s)
+            CHECK(b.on_event(p5) == key_mode_change{5, static_cast<std::uint8_t>(s)});
+        CHECK(b.on_event(p5) == key_mode_change{5, 0});
+        // A key past Keys changes nothing.
+        CHECK(b.on_event(controller_event{event_kind::key_pressed, 17}) == std::nullopt);
+    }
     const auto press = [](unsigned n) {
         return controller_event{event_kind::key_pressed, static_cast<std::uint8_t>(n)};
     };
@@ -1045,4 +1081,127 @@ static_assert(closed_loop_session());
 
 TEST_CASE("controller + virtual keypad: the same session at compile time and at run time") {
     CHECK(closed_loop_session());
+}
+
+// Each timer of the controller the millisecond before its deadline and at it (every deadline is
+// reached at its millisecond: behaviour/clock.hpp's reached), from the defaults, which are pinned
+// here (docs/controller.md).
+TEST_CASE("controller, scripted: every timer the millisecond before and at its deadline") {
+    const controller_config defaults;
+    CHECK(defaults.keypad_heartbeat.value == 200);
+    CHECK(defaults.lost_after.value == 600);
+    CHECK(defaults.sdo_timeout.value == 300);
+    CHECK(defaults.sdo_retries == 2);
+    CHECK(defaults.probe_period.value == 1000);
+    CHECK(defaults.refresh_period.value == 1000);
+    CHECK(defaults.long_press.value == 800);
+    CHECK(defaults.repeat_delay.value == 500);
+    CHECK(defaults.repeat_period.value == 200);
+
+    SUBCASE("a key held: the first repeat at 500 ms, then every 200 ms; the long press at 800") {
+        controller_config cfg;
+        cfg.identify = false;
+        cfg.keypad_heartbeat = duration_ms{0};
+        cfg.lost_after = duration_ms{0};
+        scripted s(cfg);
+        s.ctl.step(f_("715#00"), millis{0});
+        (void)s.events();
+        s.ctl.step(f_("195#0100000001"), millis{1000});
+        CHECK(s.events() == std::vector<controller_event>{{event_kind::key_pressed, 1}});
+        const auto at = [&s](std::uint32_t t) {
+            s.ctl.tick(millis{t});
+            return s.events();
+        };
+        const std::vector<controller_event> none;
+        const std::vector<controller_event> repeat{{event_kind::key_repeat, 1}};
+        CHECK(at(1499) == none);
+        CHECK(at(1500) == repeat);
+        CHECK(at(1699) == none);
+        CHECK(at(1700) == repeat);
+        CHECK(at(1799) == none);
+        CHECK(at(1800) == std::vector<controller_event>{{event_kind::key_long_press, 1}});
+        CHECK(at(1899) == none);
+        CHECK(at(1900) == repeat);
+        // Woken late (at 2400, due 2100): one repeat, then the period from then.
+        CHECK(at(2400) == repeat);
+        CHECK(at(2599) == none);
+        CHECK(at(2600) == repeat);
+        // repeat_period 0: the repeats come every repeat_delay; long_press 0: none.
+        cfg.repeat_period = duration_ms{0};
+        cfg.long_press = duration_ms{0};  // off
+        scripted z(cfg);
+        z.ctl.step(f_("715#00"), millis{0});
+        z.ctl.step(f_("195#0100000001"), millis{1000});
+        (void)z.events();
+        z.ctl.tick(millis{1500});
+        CHECK(z.events() == repeat);
+        z.ctl.tick(millis{1999});
+        CHECK(z.events().empty());
+        z.ctl.tick(millis{2000});
+        CHECK(z.events() == repeat);
+    }
+    SUBCASE("an SDO request: retried at 300 ms, twice by default, then timed out") {
+        const message config[] = {sdo_read{object::boot_up}};
+        controller_config cfg;
+        cfg.configuration = config;
+        cfg.identify = false;
+        cfg.keypad_heartbeat = duration_ms{0};
+        cfg.lost_after = duration_ms{0};
+        scripted s(cfg);
+        s.ctl.step(f_("715#00"), millis{10});
+        const std::vector<std::string> request{"615#4011200000000000"};
+        CHECK(s.sent() == request);
+        for (const std::uint32_t sent : {10u, 310u}) {
+            s.ctl.tick(millis{sent + 299});
+            CHECK(s.sent().empty());
+            s.ctl.tick(millis{sent + 300});
+            CHECK(s.sent() == request);
+        }
+        (void)s.events();
+        s.ctl.tick(millis{909});
+        CHECK(s.events().empty());
+        s.ctl.tick(millis{910});
+        const auto ev = s.events();
+        REQUIRE_FALSE(ev.empty());
+        CHECK(ev[0].kind == event_kind::sdo_timed_out);
+    }
+    SUBCASE("searching: the probe every 1000 ms") {
+        controller_config cfg;
+        cfg.identify = false;
+        scripted s(cfg);
+        const std::vector<std::string> probe{"615#4000100000000000"};
+        s.ctl.tick(millis{0});
+        CHECK(s.sent() == probe);
+        s.ctl.tick(millis{999});
+        CHECK(s.sent().empty());
+        s.ctl.tick(millis{1000});
+        CHECK(s.sent() == probe);
+    }
+    SUBCASE("lost after 600 ms of silence: not at 600, at 601") {
+        controller_config cfg;
+        cfg.identify = false;
+        cfg.keypad_heartbeat = duration_ms{0};
+        scripted s(cfg);
+        s.ctl.step(f_("715#00"), millis{0});
+        (void)s.events();
+        s.ctl.tick(millis{600});
+        CHECK(s.events().empty());
+        s.ctl.tick(millis{601});
+        const auto ev = s.events();
+        REQUIRE_FALSE(ev.empty());
+        CHECK(ev[0].kind == event_kind::lost);
+    }
+    SUBCASE("the LED picture again every 1000 ms") {
+        controller_config cfg;
+        cfg.identify = false;
+        cfg.keypad_heartbeat = duration_ms{0};
+        cfg.lost_after = duration_ms{0};
+        scripted s(cfg);
+        s.ctl.step(f_("715#00"), millis{0});
+        (void)s.sent();
+        s.ctl.tick(millis{999});
+        CHECK(s.sent().empty());
+        s.ctl.tick(millis{1000});
+        CHECK(s.sent() == std::vector<std::string>{"215#0000000000000000", "315#0000000000000000"});
+    }
 }

@@ -620,6 +620,20 @@ TEST_CASE("SYNC: RPDOs of types 00h..F0h wait for the next SYNC, the TPDO every 
     CHECK(text_of(*k.transmit()) == "195#0400000000");
     k.receive(frame_of("080#"), millis{70});
     CHECK_FALSE(k.transmit());
+    // The last synchronous type, F0h: buffered too, and the TPDO every 240th SYNC.
+    auto f0 = booted(model::pk1000);
+    CHECK(ask(f0, "615#2F011402F0000000") == "595#6001140200000000");
+    CHECK(ask(f0, "615#2F001802F0000000", {20}) == "595#6000180200000000");
+    f0.receive(frame_of("000#0115"), millis{30});
+    f0.receive(frame_of("315#0100000000000000"), millis{40});
+    CHECK(f0.led_blink() == leds{});
+    for (std::uint32_t n = 1; n < 240; ++n) {
+        f0.receive(frame_of("080#"), millis{40 + n});
+        CHECK_FALSE(f0.transmit());
+    }
+    CHECK(f0.led_blink().red.contains(1));
+    f0.receive(frame_of("080#"), millis{300});
+    CHECK(text_of(*f0.transmit()).starts_with("195#"));
 }
 
 TEST_CASE("LEDs, brightness and backlight from PDOs, SDOs and the PKP command module") {
@@ -675,6 +689,11 @@ TEST_CASE("SDO aborts with the CiA 301 codes") {
     CHECK(ask(k, "615#6000000000000000", {100}) == "595#8000000001000405");  // no upload
     CHECK(ask(k, "615#4008100000000000", {110}) == "595#410810000B000000");
     CHECK(ask(k, "615#7000000000000000", {120}) == "595#8008100000000305");  // toggle
+    // PK1000 28: a consumer period below 10 ms is too low, a producer that is no node id invalid
+    CHECK(ask(k, "615#2316100109000100", {130}) == "595#8016100132000906");
+    CHECK(ask(k, "615#2316100164000000", {140}) == "595#8016100130000906");
+    CHECK(ask(k, "615#231610010A000100", {150}) == "595#6016100100000000");  // 10 ms: taken
+    CHECK(ask(k, "615#2F03200300000000", {170}) == "595#8003200332000906");  // colour 0: too low
     auto p = booted(model::pkp2400);
     CHECK(ask(p, "615#4000650100000000") == "595#8000650101000106");        // write only
     CHECK(ask(p, "615#2300650101090100", {20}) == "595#8000650130000906");  // key 9 of 8
@@ -972,4 +991,68 @@ static_assert(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
 
 TEST_CASE("the keypad's run states have one name each") {
     CHECK(powerkey_tests::name_table_is<run_state>(run_state_rows, 5));
+}
+
+// The timers woken exactly at, and exactly one period after, their deadline: one frame, and the
+// next deadline one period after the wake, not at it (PK1000 29 heartbeat, 46 b event timer).
+TEST_CASE("timers woken at their deadline and exactly one period late") {
+    SUBCASE("the heartbeat producer") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2B17100064000000", {10}) == "595#6017100000000000");  // 100 ms
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{110});
+        k.advance(millis{109});
+        CHECK_FALSE(k.transmit());
+        k.advance(millis{210});  // due at 110: one heartbeat, the next at 310
+        CHECK(text_of(*k.transmit()) == "715#7F");
+        CHECK_FALSE(k.transmit());
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{310});
+        k.advance(millis{210});
+        CHECK_FALSE(k.transmit());
+    }
+    SUBCASE("the event timer of the key state") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2B00180532000000") == "595#6000180500000000");  // 50 ms
+        k.receive(frame_of("000#0115"), millis{100});
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{150});
+        k.advance(millis{149});
+        CHECK_FALSE(k.transmit());
+        k.advance(millis{200});  // due at 150: one key state, the next at 250
+        REQUIRE(k.transmit());
+        CHECK_FALSE(k.transmit());
+        REQUIRE(k.next_due());
+        CHECK(*k.next_due() == millis{250});
+    }
+    SUBCASE("the consumer heartbeat's deadline: operational until it, pre-operational at it") {
+        auto k = booted(model::pk1000);
+        CHECK(ask(k, "615#2316100164000100") == "595#6016100100000000");  // 100 ms from node 1
+        k.receive(frame_of("000#0115"), millis{20});
+        k.receive(frame_of("701#00"), millis{30});  // a boot-up (00h) starts no monitoring
+        k.advance(millis{500});
+        CHECK(k.state() == run_state::operational);
+        k.receive(frame_of("701#05"), millis{600});
+        k.advance(millis{699});
+        CHECK(k.state() == run_state::operational);
+        k.advance(millis{700});
+        CHECK(k.state() == run_state::pre_operational);
+    }
+}
+
+// The millisecond clock wraps after 2^32 ms (behaviour/clock.hpp): a time up to 2^31 - 1 ms ahead
+// is after, 2^31 ms or more is taken as before; a deadline is reached at its own millisecond.
+TEST_CASE("the clock across its wrap: before and reached at their bounds") {
+    using behaviour::before;
+    using behaviour::reached;
+    constexpr millis zero{0}, near_end{0xFFFF'FFFFu};
+    static_assert(!before(zero, zero) && reached(zero, zero));
+    static_assert(before(zero, millis{1}) && !before(millis{1}, zero));
+    static_assert(before(zero, millis{0x7FFF'FFFFu}) && !before(zero, millis{0x8000'0000u}));
+    static_assert(before(zero, millis{0x4000'0000u}));
+    static_assert(before(near_end, zero) && !before(zero, near_end));  // across the wrap
+    static_assert(reached(near_end, zero) && !reached(zero, near_end));
+    static_assert(!reached(millis{1}, zero) && reached(millis{1}, millis{1}));
+    CHECK(before(zero, millis{0x7FFF'FFFFu}));
+    CHECK_FALSE(before(zero, millis{0x8000'0000u}));
 }

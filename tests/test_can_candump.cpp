@@ -43,6 +43,8 @@ constexpr bad_text bad_rows[] = {
     {"no #", "615", errc::syntax_error},
     {"2-digit id", "61#00", errc::syntax_error},
     {"4-digit id", "6150#00", errc::syntax_error},
+    {"7-digit id", "0000615#00", errc::syntax_error},
+    {"9-digit id", "000000615#00", errc::syntax_error},
     {"odd digits", "615#0", errc::syntax_error},
     {"non-hex data", "615#0G", errc::syntax_error},
     {"non-hex id", "G15#00", errc::syntax_error},

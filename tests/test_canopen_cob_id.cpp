@@ -5,6 +5,10 @@
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/canopen/cob_id.hpp>
+#include <powerkey/canopen/heartbeat.hpp>
+#include <powerkey/canopen/nmt.hpp>
+#include <powerkey/canopen/sdo.hpp>
+#include <powerkey/canopen/sync.hpp>
 #include <powerkey/names.hpp>
 
 #include "support.hpp"
@@ -108,3 +112,34 @@ TEST_CASE("COB-IDs both ways") {
 TEST_CASE("which frames concern a keypad") { check_rows(concerns_rows, concerns_right); }
 
 TEST_CASE("the names of the functions") { CHECK(name_table_is<function>(function_rows, 15)); }
+
+// The CiA 301 decoders take their frame at its one length only (NMT 2, SYNC 0, heartbeat 1, SDO
+// 8): every other length 0..8 is wrong_length, the identifier right.
+namespace {
+powerkey::can::frame sized(std::uint16_t id, std::uint8_t n, const powerkey::can::payload& p) {
+    return powerkey::can::frame(powerkey::can::standard_id::make(id).value(),
+                                powerkey::can::dlc::make(n).value(), p);
+}
+bool refused_for_length(const powerkey::result<powerkey::canopen::nmt_message>& r) {
+    return r == powerkey::errc::wrong_length;
+}
+}  // namespace
+
+TEST_CASE("each CiA 301 frame at its length only") {
+    using namespace powerkey::canopen;
+    const powerkey::can::payload nmt{0x01, 0x15};  // NMT start of 15h
+    const powerkey::can::payload state{0x05};
+    const powerkey::can::payload read{0x40, 0x00, 0x10};
+    for (std::uint8_t n = 0; n <= 8; ++n) {
+        CAPTURE(int{n});
+        CHECK(refused_for_length(decode_nmt(sized(0x000, n, nmt))) == (n != 2));
+        const bool sync_refused = decode_sync(sized(0x080, n, nmt)) == powerkey::errc::wrong_length;
+        CHECK(sync_refused == (n != 0));
+        const bool hb_refused = decode_heartbeat(sized(0x715, n, state), default_node_id) ==
+                                powerkey::errc::wrong_length;
+        CHECK(hb_refused == (n != 1));
+        const bool sdo_refused = decode_sdo_request(sized(0x615, n, read), default_node_id) ==
+                                 powerkey::errc::wrong_length;
+        CHECK(sdo_refused == (n != 8));
+    }
+}

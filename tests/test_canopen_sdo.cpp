@@ -187,3 +187,108 @@ TEST_CASE("the SDO decoders refuse malformed frames with the documented error") 
     check_rows(bad_sdo_request, request_refuses);
     check_rows(bad_sdo_response, response_refuses);
 }
+
+// --- every specifier byte, and every reserved bit of one on its own -----------------------------
+// The specifier's fields as CiA 301 (7.2.4.3) lays them out: bits 7..5 the command (ccs from the
+// client, scs from the server), and for an initiation bit 4 reserved (x), bits 3..2 n (the bytes
+// of an expedited transfer that hold no data), bit 1 e (expedited), bit 0 s (size indicated); for
+// an upload segment request bit 4 the toggle and bits 3..0 reserved. The keypads' subset (PK1000
+// 29-37, PKP 17-31): only expedited downloads with size, reads (40h), segmented uploads, aborts
+// of 80h. Written field by field from the layout, not from the engine's masks.
+namespace {
+struct specifier_fields {
+    unsigned cs, x, n, e, s;
+};
+constexpr specifier_fields fields_of(std::uint8_t c) {
+    return {static_cast<unsigned>(c >> 5), (c >> 4) & 1u, (c >> 2) & 3u, (c >> 1) & 1u, c & 1u};
+}
+// What a request with specifier c (bytes 1..7 as given) is: an op, or the refusal.
+constexpr result<sdo_op> expected_request(std::uint8_t c, bool data_zero, bool rest_zero) {
+    const auto [cs, x, n, e, s] = fields_of(c);
+    static_cast<void>(n);
+    switch (cs) {
+        case 1:  // initiate download: expedited with size only, x clear
+            if (e == 1 && s == 1 && x == 0) return sdo_op::expedited_download;
+            return errc::unknown_command;
+        case 2:  // initiate upload: 40h, every other bit and bytes 4..7 reserved
+            if (c == 0x40 && data_zero) return sdo_op::upload;
+            return errc::reserved_not_zero;
+        case 3:  // upload segment: the toggle (bit 4) only, bytes 1..7 reserved
+            if ((c & 0x0F) == 0 && rest_zero) return sdo_op::segment_request;
+            return errc::reserved_not_zero;
+        case 4:  // abort: 80h, bits 4..0 reserved
+            if (c == 0x80) return sdo_op::abort_request;
+            return errc::reserved_not_zero;
+        default: return errc::unknown_command;  // download segment, block transfers, 5..7
+    }
+}
+constexpr result<sdo_op> expected_response(std::uint8_t c, bool data_zero) {
+    const auto [cs, x, n, e, s] = fields_of(c);
+    switch (cs) {
+        case 0: return sdo_op::segment;  // upload segment: toggle, n, c; every value
+        case 2:                          // initiate upload response
+            if (x == 1) return errc::reserved_not_zero;
+            if (e == 1)
+                return s == 1 ? result<sdo_op>(sdo_op::expedited_upload)
+                              : result<sdo_op>(errc::unknown_command);
+            if (n != 0) return errc::reserved_not_zero;  // n only for an expedited transfer
+            return sdo_op::upload_initiate;
+        case 3:  // initiate download response: 60h, bytes 4..7 reserved
+            if (c == 0x60 && data_zero) return sdo_op::download_response;
+            return errc::reserved_not_zero;
+        case 4:
+            if (c == 0x80) return sdo_op::abort_response;
+            return errc::reserved_not_zero;
+        default: return errc::unknown_command;
+    }
+}
+constexpr sdo_word word_of(std::uint8_t c, std::uint32_t index_sub, std::uint32_t data) {
+    return {c | (std::uint64_t{index_sub} << 8) | (std::uint64_t{data} << 32)};
+}
+// Every specifier, with bytes 1..7 zero, with an address (each of bytes 1..3 set), and with data.
+constexpr bool every_specifier_read_as_the_layout_says() {
+    for (unsigned c = 0; c < 0x100; ++c) {
+        const auto b = static_cast<std::uint8_t>(c);
+        for (const std::uint32_t data : {0u, 1u, 0x8000'0000u}) {
+            for (const std::uint32_t address : {0u, 0x01'2000u, 0x00'0001u, 0x01'0000u}) {
+                const bool rest_zero = data == 0 && address == 0;
+                if (sdo_request_op(word_of(b, address, data)) !=
+                    expected_request(b, data == 0, rest_zero))
+                    return false;
+                if (sdo_response_op(word_of(b, address, data)) != expected_response(b, data == 0))
+                    return false;
+            }
+        }
+    }
+    return true;
+}
+static_assert(every_specifier_read_as_the_layout_says());
+}  // namespace
+
+TEST_CASE("every SDO specifier byte, each reserved bit on its own, read as CiA 301 lays it out") {
+    CHECK(every_specifier_read_as_the_layout_says());
+    // The bits named one at a time, for the frames the keypads use (so that a failure names one).
+    for (const unsigned base : {0x23u, 0x2Bu, 0x2Fu, 0x40u, 0x60u, 0x80u}) {
+        for (unsigned bit = 0; bit < 8; ++bit) {
+            const auto c = static_cast<std::uint8_t>(base ^ (1u << bit));
+            CAPTURE(int{c});
+            CHECK(sdo_request_op(word_of(c, 0x01'2000, 0)) == expected_request(c, true, false));
+        }
+    }
+    for (const unsigned base : {0x41u, 0x43u, 0x4Bu, 0x4Fu, 0x60u, 0x80u}) {
+        for (unsigned bit = 0; bit < 8; ++bit) {
+            const auto c = static_cast<std::uint8_t>(base ^ (1u << bit));
+            CAPTURE(int{c});
+            CHECK(sdo_response_op(word_of(c, 0x01'2000, 0)) == expected_response(c, true));
+        }
+    }
+    // n of a non-expedited upload response, each bit alone (41h: 45h, 49h; 40h: 44h, 48h).
+    for (const unsigned c : {0x45u, 0x49u, 0x44u, 0x48u})
+        CHECK(sdo_response_op(word_of(static_cast<std::uint8_t>(c), 0x01'2000, 0)) ==
+              errc::reserved_not_zero);
+    // The size an expedited specifier says: 4 - n.
+    for (unsigned n = 0; n < 4; ++n) {
+        const auto c = static_cast<std::uint8_t>(0x43 | (n << 2));
+        CHECK(word_of(c, 0, 0).size() == 4 - n);
+    }
+}

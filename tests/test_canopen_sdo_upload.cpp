@@ -257,3 +257,86 @@ TEST_CASE("a segment other than the last that carries fewer than 7 bytes is note
     REQUIRE(strict.step(can::candump("595#410810000B000000")).has_value());
     CHECK(strict.step(can::candump("595#02426C696E6B4D00")) == errc::size_mismatch);
 }
+
+// The size rules at their boundaries: an upload of 1008h announcing 11 bytes, a first segment of
+// 7 bytes, then a last segment of 1..7 bytes (n = 7 - bytes): 4 bytes end it exactly; fewer end
+// it short of the size, more run past it; both are size_mismatch, and neither is
+// continued_past_size (the last segment ends the transfer). Then segments without the last flag:
+// one that reaches the size exactly is continued_past_size, one short of it is not. Strictly read,
+// each discrepancy ends the transfer with size_mismatch; the exact one completes. The capacity at
+// its boundary: 11 bytes fit a reader of 11, not of 10.
+namespace {
+can::frame segment(bool toggle, unsigned bytes, bool last) {
+    can::payload p{};
+    p[0] =
+        static_cast<std::uint8_t>((toggle ? 0x10u : 0u) | ((7u - bytes) << 1) | (last ? 1u : 0u));
+    for (unsigned i = 0; i < bytes; ++i) p[1 + i] = static_cast<std::uint8_t>('a' + i);
+    return can::frame(can::standard_id::make(0x595).value(), can::dlc::make(8).value(), p);
+}
+template <std::size_t Capacity = 32>
+struct upload_of_11 {
+    canopen::segmented_upload<Capacity> u;
+    explicit upload_of_11(canopen::upload_policy p = canopen::upload_policy::report)
+        : u(keypad, p) {
+        (void)u.start({0x1008, 0});
+        REQUIRE(u.step(can::candump("595#410810000B000000")).has_value());
+    }
+};
+}  // namespace
+
+TEST_CASE("segmented reader: the announced size at its boundary, one byte short and one past") {
+    for (unsigned last = 1; last <= 7; ++last) {
+        CAPTURE(last);
+        const bool exact = 7 + last == 11;
+        upload_of_11<> r;
+        REQUIRE(r.u.step(segment(false, 7, false)).has_value());
+        CHECK_FALSE(r.u.notes().continued_past_size);
+        const auto end = r.u.step(segment(true, last, true));
+        REQUIRE(end.has_value());
+        CHECK(r.u.state() == canopen::upload_state::done);
+        CHECK(r.u.bytes().size() == 7 + last);
+        CHECK(r.u.notes().size_mismatch == !exact);
+        CHECK_FALSE(r.u.notes().continued_past_size);
+        CHECK_FALSE(r.u.notes().short_segment);
+
+        upload_of_11<> s(canopen::upload_policy::strict);
+        REQUIRE(s.u.step(segment(false, 7, false)).has_value());
+        const auto strict_end = s.u.step(segment(true, last, true));
+        if (exact) {
+            CHECK(strict_end.has_value());
+            CHECK(s.u.state() == canopen::upload_state::done);
+        } else {
+            CHECK(strict_end == errc::size_mismatch);
+            CHECK(s.u.state() == canopen::upload_state::failed);
+        }
+    }
+    // Without the last flag: 7 + 3 bytes stay short of 11, 7 + 4 reach it, 7 + 5 run past.
+    for (unsigned second = 3; second <= 5; ++second) {
+        CAPTURE(second);
+        upload_of_11<> r;
+        REQUIRE(r.u.step(segment(false, 7, false)).has_value());
+        REQUIRE(r.u.step(segment(true, second, false)).has_value());
+        CHECK(r.u.notes().continued_past_size == (7 + second >= 11));
+        CHECK(r.u.notes().size_mismatch == (7 + second > 11));
+        CHECK(r.u.notes().short_segment);  // fewer than 7 bytes and not the last
+        CHECK(r.u.state() == canopen::upload_state::running);
+    }
+    // A segment other than the last with n = 1 is short; with n = 0 it is not.
+    upload_of_11<> full;
+    REQUIRE(full.u.step(segment(false, 7, false)).has_value());
+    CHECK_FALSE(full.u.notes().short_segment);
+    upload_of_11<> six;
+    REQUIRE(six.u.step(segment(false, 6, false)).has_value());
+    CHECK(six.u.notes().short_segment);
+    CHECK_FALSE(six.u.notes().size_mismatch);
+}
+
+TEST_CASE("segmented reader: the capacity at its boundary") {
+    upload_of_11<11> fits;
+    REQUIRE(fits.u.step(segment(false, 7, false)).has_value());
+    CHECK(fits.u.step(segment(true, 4, true)).has_value());
+    CHECK(fits.u.bytes().size() == 11);
+    upload_of_11<10> over;
+    REQUIRE(over.u.step(segment(false, 7, false)).has_value());
+    CHECK(over.u.step(segment(true, 4, true)) == errc::buffer_too_small);
+}

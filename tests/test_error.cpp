@@ -4,6 +4,7 @@
 
 #include <powerkey/error.hpp>
 #include <powerkey/names.hpp>
+#include <powerkey/result.hpp>
 
 #include "support.hpp"
 
@@ -28,3 +29,21 @@ static_assert(!is_named(static_cast<errc>(17)));
 TEST_CASE("every errc is named, listed once, and numbered 1..N") {
     CHECK(name_table_is<errc>(errc_rows, 0));
 }
+
+// A result compares equal to an errc only when it holds that error: a value never equals any
+// errc, errc{} included; and two results are equal when both hold the same value or error.
+namespace {
+constexpr bool result_comparisons() {
+    using powerkey::errc;
+    using powerkey::result;
+    const result<int> five{5}, six{6}, refused{errc::wrong_length};
+    for (const errc e : powerkey::enum_values<errc>())
+        if (five == e || (refused == e) != (e == errc::wrong_length)) return false;
+    return !(five == errc{}) && five == result<int>{5} && !(five == six) && !(five == refused) &&
+           refused == result<int>{errc::wrong_length} &&
+           !(refused == result<int>{errc::syntax_error});
+}
+static_assert(result_comparisons());
+}  // namespace
+
+TEST_CASE("a result equals an errc only when it holds that error") { CHECK(result_comparisons()); }

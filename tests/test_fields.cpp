@@ -3,14 +3,19 @@
 // value of the same enum has (what the tool prints and `encode --json` parses).
 #include <doctest/doctest.h>
 
+#include <powerkey/can/candump.hpp>
+#include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/names.hpp>
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 namespace {
@@ -95,4 +100,62 @@ TEST_CASE("message kinds are unique in the one message type, and kind_of names e
         return false;
     });
     CHECK(n == std::variant_size_v<message>);
+}
+
+// --- every message's default-built fields, pinned ---------------------------------------------
+// Each alternative of `message`, built with no argument, as describe() shows it: every field's
+// default. Where a manual gives a default, the default is the manual's: the LED brightness 3Fh
+// and the backlight level 00h (PK1000 section 3, "Default settings"; PK1000 14, 15), the colour
+// 00h of the backlight PDO that keeps the stored colour (PK1000 15 note 2), the J1939 switch's
+// priority 6 to the keypad's address 21h (PK1000 49), encoder 1 (TPDO2, MT 12). A kind added to
+// `message` fails the count until its row is here.
+namespace {
+constexpr std::string_view default_messages[] = {
+    "node 15h  NMT message  command: start  target: 00h",
+    "node 15h  sync message",
+    "node 15h  heartbeat message  state: boot_up",
+    "node 15h  J1939 switch to CANopen  priority: 6  destination: 21h  source: 00h",
+    "node 15h  key state  keys: -  tick: 0",
+    "node 15h  LED on  red: -  green: -  blue: -",
+    "node 15h  LED blink  red: -  green: -  blue: -",
+    "node 15h  LED brightness  level: 3Fh",
+    "node 15h  backlight  level: 00h  colour: keep",
+    "node 15h  SDO read  object: keys",
+    "node 15h  SDO read reply  object: keys  keys: -",
+    "node 15h  SDO write  object: led_brightness  level: 00h",
+    "node 15h  SDO write reply  object: led_brightness",
+    "node 15h  command  command: set_led_state  key: 0  state: off",
+    "node 15h  SDO upload initiate response  index: 0000h  subindex: 0  size_indicated: yes  size: "
+    "0",
+    "node 15h  SDO segment request  toggle: no",
+    "node 15h  SDO segment response  toggle: no  unused: 0  last: no  data: 00 00 00 00 00 00 00",
+    "node 15h  SDO abort request  index: 0000h  subindex: 0  code: general_error",
+    "node 15h  SDO abort response  index: 0000h  subindex: 0  code: general_error",
+    "node 15h  encoder state  encoder: 1  counterclockwise: no  ticks: 0  counter: 0  top: 0",
+    "node 15h  analog inputs  in0_mv: 0  in1_mv: 0  in2_mv: 0  in3_mv: 0",
+    "node 15h  encoder leds  leds: -",
+};
+template <std::size_t... I>
+void check_defaults(std::index_sequence<I...>) {
+    (
+        [] {
+            const message m{std::variant_alternative_t<I, message>{}};
+            std::array<char, 256> buf{};
+            const auto d = describe(m, canopen::default_node_id, buf);
+            CAPTURE(I);
+            REQUIRE(d.has_value());
+            CHECK(std::string(*d) == std::string(default_messages[I]));
+        }(),
+        ...);
+}
+}  // namespace
+
+TEST_CASE("every message built by default: its fields, pinned") {
+    static_assert(std::size(default_messages) == std::variant_size_v<message>);
+    check_defaults(std::make_index_sequence<std::variant_size_v<message>>{});
+    // The defaults on the wire (PK1000 14, 15): full LED brightness, the backlight off.
+    CHECK(encode(canopen::default_node_id, model::pk1000, led_brightness{}) ==
+          can::candump("415#3F00000000000000"));
+    CHECK(encode(canopen::default_node_id, model::pk1000, backlight{}) ==
+          can::candump("515#0000000000000000"));
 }

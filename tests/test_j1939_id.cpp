@@ -4,6 +4,7 @@
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/j1939/id.hpp>
+#include <powerkey/j1939/name.hpp>
 
 #include "support.hpp"
 
@@ -50,4 +51,76 @@ static_assert(refused_ids());
 TEST_CASE("J1939 identifiers both ways, and those a PGN cannot have") {
     check_rows(id_rows, id_holds);
     CHECK(refused_ids());
+}
+
+// The NAME (SAE J1939-81; the keypads' address claim, PKP2600SI J1939 manual 20): each of its 64
+// bits alone. Bit 48 is reserved (reserved_not_zero); any other lands in its field, at the field's
+// first bit as 1, and packs back to the same bit. The fields' bits, from bit 0: identity number
+// 21, manufacturer code 11, ECU instance 3, function instance 5, function 8, reserved 1,
+// vehicle system 7, vehicle system instance 4, industry group 3, arbitrary address capable 1.
+namespace {
+struct name_field {
+    unsigned at, width;
+};
+constexpr name_field name_fields[] = {{0, 21}, {21, 11}, {32, 3}, {35, 5}, {40, 8},
+                                      {49, 7}, {56, 4},  {60, 3}, {63, 1}};
+constexpr std::uint64_t field_value(const powerkey::j1939::name& n, std::size_t i) {
+    switch (i) {
+        case 0: return n.identity_number.value();
+        case 1: return n.manufacturer_code.value();
+        case 2: return n.ecu_instance.value();
+        case 3: return n.function_instance.value();
+        case 4: return n.function;
+        case 5: return n.vehicle_system.value();
+        case 6: return n.vehicle_system_instance.value();
+        case 7: return n.industry_group.value();
+        default: return n.arbitrary_address_capable ? 1 : 0;
+    }
+}
+constexpr bool every_name_bit_alone() {
+    using namespace powerkey::j1939;
+    for (unsigned b = 0; b < 64; ++b) {
+        const std::uint64_t v = std::uint64_t{1} << b;
+        const auto n = unpack_name(v);
+        if (b == 48) {
+            if (n || n.error() != powerkey::errc::reserved_not_zero) return false;
+            continue;
+        }
+        if (!n || pack_name(*n) != v) return false;
+        for (std::size_t i = 0; i < std::size(name_fields); ++i) {
+            const auto [at, width] = name_fields[i];
+            const bool here = b >= at && b < at + width;
+            if (field_value(*n, i) != (here ? std::uint64_t{1} << (b - at) : 0)) return false;
+        }
+    }
+    return true;
+}
+static_assert(every_name_bit_alone());
+}  // namespace
+
+TEST_CASE("J1939 NAME: each of its 64 bits alone, bit 48 reserved") {
+    CHECK(every_name_bit_alone());
+}
+
+// make_id at the PDU1/PDU2 border: a PDU1 PGN (PF below F0h) carries no low byte (it is the
+// destination): EF00h takes any destination, EF01h none; a PDU2 PGN (F000h) goes to FFh only.
+TEST_CASE("J1939 identifiers: the PGN's low byte at the PDU1 and PDU2 border") {
+    using namespace powerkey::j1939;
+    identifier id{};
+    id.priority = priority::make(6).value();
+    id.source = 0x00;
+    id.destination = 0x21;
+    id.pgn = pgn::make(0xEF00).value();
+    CHECK(make_id(id).has_value());
+    id.pgn = pgn::make(0xEF01).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);
+    id.pgn = pgn::make(0xEF80).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);
+    id.pgn = pgn::make(0xF000).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);  // PDU2: only to FFh
+    id.destination = global_address;
+    CHECK(make_id(id).has_value());
+    CHECK(parse_id(*make_id(id)).pgn.value() == 0xF000);
+    id.pgn = pgn::make(0xEFFF).value();
+    CHECK(make_id(id) == powerkey::errc::value_out_of_range);  // PDU1: EFh is below F0h
 }

@@ -142,3 +142,37 @@ TEST_CASE("decode<M> with the model known at compile time answers as decode(f, n
     check_rows(si_rows::errata_rows, both_model_apis_agree<error_row>);
     check_rows(si_reference_rows::rows, both_model_apis_agree<row>);
 }
+
+// Every byte of the one-byte fields of the CiA 301 frames every model takes, through decode: the
+// heartbeat's state (00h boot-up, 04h stopped, 05h operational, 7Fh pre-operational; PK1000 8-9,
+// PKP 8-9), the NMT command (01h, 02h, 80h, 81h, 82h and the legacy 00h; PK1000 4-7) with this
+// node and 00h (all) as the target. Anything else is refused with value_out_of_range (a state)
+// or unknown_command (a command).
+TEST_CASE("every heartbeat state byte and NMT command byte, in every model") {
+    const canopen::node_id node = canopen::default_node_id;
+    for (const model m : enum_values<model>()) {
+        CAPTURE(std::string(to_string(m)));
+        for (unsigned b = 0; b < 0x100; ++b) {
+            CAPTURE(b);
+            const can::payload hb{static_cast<std::uint8_t>(b)};
+            const auto state = decode(
+                can::frame(can::standard_id::make(0x715).value(), can::dlc::make(1).value(), hb),
+                node, m);
+            if (b == 0x00 || b == 0x04 || b == 0x05 || b == 0x7F)
+                CHECK(state.has_value());
+            else
+                CHECK(state == errc::value_out_of_range);
+            for (const unsigned target : {0x00u, 0x15u}) {
+                const can::payload nmt{static_cast<std::uint8_t>(b),
+                                       static_cast<std::uint8_t>(target)};
+                const auto command = decode(can::frame(can::standard_id::make(0x000).value(),
+                                                       can::dlc::make(2).value(), nmt),
+                                            node, m);
+                if (b <= 0x02 || (b >= 0x80 && b <= 0x82))
+                    CHECK(command.has_value());
+                else
+                    CHECK(command == errc::unknown_command);
+            }
+        }
+    }
+}

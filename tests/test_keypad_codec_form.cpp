@@ -96,6 +96,10 @@ constexpr form_row rows[] = {
      "node 15h  SDO write  object: protocol_j1939  enabled: yes  form: trimmed"},
     {"PK1000 20 baud rate, 5 bytes", m1000, "615#2F10200004", "615#2F10200004000000",
      "node 15h  SDO write  object: baud_rate  baud_rate: kbit_125  form: trimmed"},
+    {"PK1000 28 consumer heartbeat, 7 bytes (byte 3 reserved)", m1000, "615#2316100164007E",
+     "615#2316100164007E00",
+     "node 15h  SDO write  object: consumer_heartbeat  period_ms: 100  producer: 7Eh  form: "
+     "trimmed"},
     {"PK1000 2000h/1 keys read reply, 6 bytes (10 keys)", m1000, "595#4B0020010102",
      "595#4B00200101020000", "node 15h  SDO read reply  object: keys  keys: 1 10  form: trimmed"},
     {"PKP-3500-MT 2001h/1 red, 6 bytes", m3500mt, "615#2B0120010800", "615#2B01200108000000",
@@ -138,6 +142,8 @@ static_assert(first_failing(rows, reads_as_manual) == std::size(rows));
 // 00h: refused both ways with wrong_length (or, padded, the manual form's own refusal).
 constexpr error_row refusals[] = {
     {"key state cut before the tick (E-PK-12)", every, 0x15, "195#0100", errc::wrong_length},
+    {"key state cut just before the tick, 4 bytes", every, 0x15, "195#01000000",
+     errc::wrong_length},
     {"key state padded with a byte set", every, 0x15, "195#010000002A01", errc::wrong_length},
     {"PK1000 LED map, 7 bytes (green LED 28 is in byte 7)", m1000, 0x15, "215#01000000000000",
      errc::wrong_length},

@@ -3,7 +3,9 @@
 // command codes.
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/models.hpp>
 #include <powerkey/names.hpp>
 
 #include "support.hpp"
@@ -11,8 +13,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 
 namespace {
 using namespace powerkey;
@@ -127,4 +131,120 @@ TEST_CASE("the command table: every command byte of PKP section 13 and no other"
 
 TEST_CASE("the names of the command codes") {
     CHECK(name_table_is<command_code>(command_code_rows, 0x00));
+}
+
+// --- every parameter byte of every command, and every reserved bit on its own ----------------
+// Walked from the command table for every model with the command module: each command with each
+// of its parameters at every byte 00h..FFh (the other at its lowest valid byte), accepted exactly
+// when the manual's range for the parameter's kind holds (PKP 13 a-m, below), else
+// value_out_of_range; each bit of byte 7, and of byte 6 of a one-parameter command, alone:
+// reserved_not_zero; every command byte no row has: unknown_command; a size other than 4 bytes:
+// size_mismatch.
+namespace {
+// The manual's range of a parameter's byte on a keypad with `keys` keys.
+constexpr bool param_accepts(command_param p, unsigned b, unsigned keys) {
+    switch (p) {
+        case command_param::none: return b == 0;
+        case command_param::key: return b >= 1 && b <= keys;   // 13 a: key 1..N
+        case command_param::state:                             // 13 a: TABLE of states
+            return b <= 0x0A || b == 0x0C || b == 0x0E;        //   (0Bh, 0Dh unused)
+        case command_param::brightness: return b <= 0x3F;      // 13 b, i, j
+        case command_param::colour: return b >= 1 && b <= 9;   // 13 c, k
+        case command_param::flag: return b <= 1;               // 13 d, f, g, l
+        case command_param::baud: return b <= 2;               // 13 e: 125k, 250k, 500k
+        case command_param::period_10ms: return true;          // 13 f: 00h..FFh x 10 ms
+        case command_param::node: return b >= 1 && b <= 0x7F;  // 13 h
+        case command_param::show: return b >= 1 && b <= 3;     // 13 m
+    }
+    return false;
+}
+constexpr unsigned lowest_valid(command_param p, unsigned keys) {
+    for (unsigned b = 0; b < 0x100; ++b)
+        if (param_accepts(p, b, keys)) return b;
+    return 0;
+}
+constexpr canopen::node_id command_node = canopen::default_node_id;
+result<message> command_frame(model m, std::uint8_t size, unsigned code, unsigned p1, unsigned p2,
+                              unsigned b7) {
+    const auto row = find_row(info(m)->dictionary, object::command_module);
+    REQUIRE(row.has_value());
+    return decode(powerkey_tests::expedited_frame(command_node, row->address, size,
+                                                  code | p1 << 8 | p2 << 16 | b7 << 24, true),
+                  command_node, m);
+}
+}  // namespace
+
+TEST_CASE("every parameter byte of every command and every reserved bit, in every model") {
+    std::size_t models = 0;
+    for (const model m : enum_values<model>()) {
+        if (!find_row(info(m)->dictionary, object::command_module)) continue;
+        ++models;
+        const unsigned keys = info(m)->keys;
+        CAPTURE(std::string(to_string(m)));
+        for (unsigned code = 0; code < 0x100; ++code) {
+            CAPTURE(code);
+            const auto row = find_command(static_cast<std::uint8_t>(code));
+            if (!row) {
+                CHECK(command_frame(m, 4, code, 0, 0, 0) == errc::unknown_command);
+                continue;
+            }
+            const unsigned v1 = lowest_valid(row->p1, keys), v2 = lowest_valid(row->p2, keys);
+            for (unsigned b = 0; b < 0x100; ++b) {
+                CAPTURE(b);
+                const auto first = command_frame(m, 4, code, b, v2, 0);
+                if (param_accepts(row->p1, b, keys)) {
+                    REQUIRE(first.has_value());
+                    const auto* c = std::get_if<command>(&*first);
+                    REQUIRE(c != nullptr);
+                    CHECK(static_cast<unsigned>(c->code) == code);
+                    CHECK(encode(command_node, m, *first) ==
+                          powerkey_tests::expedited_frame(
+                              command_node,
+                              find_row(info(m)->dictionary, object::command_module)->address, 4,
+                              code | b << 8 | v2 << 16, true));
+                } else {
+                    CHECK(first == errc::value_out_of_range);
+                }
+                const auto second = command_frame(m, 4, code, v1, b, 0);
+                if (row->p2 == command_param::none)
+                    CHECK(second == (b == 0 ? result<message>(*command_frame(m, 4, code, v1, 0, 0))
+                                            : result<message>(errc::reserved_not_zero)));
+                else if (param_accepts(row->p2, b, keys))
+                    CHECK(second.has_value());
+                else
+                    CHECK(second == errc::value_out_of_range);
+            }
+            for (unsigned bit = 0; bit < 8; ++bit) {
+                CAPTURE(bit);
+                CHECK(command_frame(m, 4, code, v1, v2, 1u << bit) == errc::reserved_not_zero);
+            }
+            for (const std::uint8_t size : {std::uint8_t{1}, std::uint8_t{2}})
+                CHECK(command_frame(m, size, code, 0, 0, 0) == errc::size_mismatch);
+        }
+    }
+    CHECK(models >= 3);  // the PKP-2200, 2400 and 2600-LI
+}
+
+// The command module's own codes of the shared values: PKP 13 e (baud rate: 00h 125k, 01h 250k,
+// 02h 500k) and 13 m (start-up show: 01h complete, 02h fast flash, 03h disabled), each both ways.
+TEST_CASE("the command module's codes of the baud rate and the start-up show, both ways") {
+    const auto row = find_row(info(model::pkp2400)->dictionary, object::command_module);
+    REQUIRE(row.has_value());
+    const baud_rate bauds[] = {baud_rate::kbit_125, baud_rate::kbit_250, baud_rate::kbit_500};
+    const startup_show shows[] = {startup_show::complete, startup_show::fast_flash,
+                                  startup_show::disabled};
+    for (unsigned b = 0; b < 3; ++b) {
+        CAPTURE(b);
+        const auto baud = command_frame(model::pkp2400, 4, 0x11, b, 0, 0);
+        REQUIRE(baud.has_value());
+        CHECK(std::get<command>(*baud).baud == bauds[b]);
+        const auto show = command_frame(model::pkp2400, 4, 0x50, b + 1, 0, 0);
+        REQUIRE(show.has_value());
+        CHECK(std::get<command>(*show).show == shows[b]);
+        CHECK(encode(command_node, model::pkp2400, *baud) ==
+              powerkey_tests::expedited_frame(command_node, row->address, 4, 0x11 | b << 8, true));
+        CHECK(encode(command_node, model::pkp2400, *show) ==
+              powerkey_tests::expedited_frame(command_node, row->address, 4, 0x50 | (b + 1) << 8,
+                                              true));
+    }
 }

@@ -5,6 +5,7 @@
 // their own and shared rows; and every row well formed, of an object with a kind and a name.
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/dictionaries.hpp>
 #include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -18,6 +19,8 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 namespace {
 using namespace powerkey;
@@ -62,6 +65,65 @@ constexpr dict_row dict_rows[] = {
     {"PK1000 46, E-PK-11", "1800h/2", pk, object::tpdo1_transmission_type, 0x1800, 2, 1, rw, 1,
      0xF0, 0xFE, 0xFE},
     {"PK1000 48", "2200h/0", pk, object::serial_number_string, 0x2200, 0, 0, ro, 0, any, any, 0},
+    // Every other writable row with a range: both ends and the default (section 3's table)
+    {"PK1000 19 b, 3", "2003h/2", pk, object::backlight_level, 0x2003, 2, 1, rw, 0, 0x3F, any, 0},
+    {"PK1000 19 d, 3", "2003h/4", pk, object::default_backlight_colour, 0x2003, 4, 1, rw, 1, 9, any,
+     0x08},
+    {"PK1000 19 e, 3", "2003h/5", pk, object::default_led_brightness, 0x2003, 5, 1, rw, 0, 0x3F,
+     any, 0x3F},
+    {"PK1000 19 f, 3", "2003h/6", pk, object::default_backlight_level, 0x2003, 6, 1, rw, 0, 0x3F,
+     any, 0},
+    {"PK1000 21, 3: boot-up active", "2011h/0", pk, object::boot_up, 0x2011, 0, 1, rw, 0, 1, any,
+     1},
+    {"PK1000 22, 3: not active", "2012h/0", pk, object::active_on_startup, 0x2012, 0, 1, rw, 0, 1,
+     any, 0},
+    {"PK1000 25: enabled", "2015h/0", pk, object::led_power, 0x2015, 0, 1, rw, 0, 1, any, 1},
+    {"PK1000 26, 3: disabled", "2100h/0", pk, object::demo_mode, 0x2100, 0, 1, rw, 0, 1, any, 0},
+    {"PK1000 27", "20FFh/2", pk, object::protocol_rs485, 0x20FF, 2, 2, rw, 0, 1, any, 0},
+    {"PK1000 28, 3: off, node 01h", "1016h/1", pk, object::consumer_heartbeat, 0x1016, 1, 4, rw, 10,
+     0xFFFF, any, 0x0001'0000},
+    {"PK1000 29, 3, E-PK-8: 10 ms..", "1017h/0", pk, object::heartbeat_time, 0x1017, 0, 2, rw, 10,
+     0xFFFF, any, 0},
+    {"PK1000 38, 3: asynchronous", "1400h/2", pk, object::rpdo1_transmission_type, 0x1400, 2, 1, rw,
+     0, 0xF0, 0xFE, 0xFE},
+    {"PK1000 39, E-PK-9", "1401h/2", pk, object::rpdo2_transmission_type, 0x1401, 2, 1, rw, 0, 0xF0,
+     0xFE, 0xFE},
+    {"PK1000 46 b: 000Ah..FEFFh, 3: off", "1800h/5", pk, object::tpdo1_event_timer, 0x1800, 5, 2,
+     rw, 10, 0xFEFF, any, 0},
+    // The read-only rows of the PDO objects: the values of the examples' replies (38-47)
+    {"PK1000 38", "1400h/0", pk, object::rpdo1_count, 0x1400, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 38", "1400h/1", pk, object::rpdo1_cob_id, 0x1400, 1, 4, ro, 0, any, any, 0x4000'0215},
+    {"PK1000 39", "1401h/0", pk, object::rpdo2_count, 0x1401, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 39", "1401h/1", pk, object::rpdo2_cob_id, 0x1401, 1, 4, ro, 0, any, any, 0x4000'0315},
+    {"PK1000 40", "1402h/0", pk, object::rpdo3_count, 0x1402, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 40", "1402h/1", pk, object::rpdo3_cob_id, 0x1402, 1, 4, ro, 0, any, any, 0x4000'0415},
+    {"PK1000 41", "1403h/0", pk, object::rpdo4_count, 0x1403, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 41", "1403h/1", pk, object::rpdo4_cob_id, 0x1403, 1, 4, ro, 0, any, any, 0x4000'0515},
+    {"PK1000 42", "1600h/0", pk, object::rpdo1_mapping_count, 0x1600, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 42", "1600h/1", pk, object::rpdo1_mapping_1, 0x1600, 1, 4, ro, 0, any, any,
+     0x2001'0120},
+    {"PK1000 42", "1600h/2", pk, object::rpdo1_mapping_2, 0x1600, 2, 4, ro, 0, any, any,
+     0x2001'0220},
+    {"PK1000 43", "1601h/0", pk, object::rpdo2_mapping_count, 0x1601, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 43", "1601h/1", pk, object::rpdo2_mapping_1, 0x1601, 1, 4, ro, 0, any, any,
+     0x2002'0120},
+    {"PK1000 43, E-PK-5", "1601h/2", pk, object::rpdo2_mapping_2, 0x1601, 2, 4, ro, 0, any, any,
+     0x2002'0220},
+    {"PK1000 44", "1602h/0", pk, object::rpdo3_mapping_count, 0x1602, 0, 1, ro, 0, any, any, 1},
+    {"PK1000 44", "1602h/1", pk, object::rpdo3_mapping_1, 0x1602, 1, 4, ro, 0, any, any,
+     0x2003'0108},
+    {"PK1000 45", "1603h/0", pk, object::rpdo4_mapping_count, 0x1603, 0, 1, ro, 0, any, any, 2},
+    {"PK1000 45", "1603h/1", pk, object::rpdo4_mapping_1, 0x1603, 1, 4, ro, 0, any, any,
+     0x2003'0208},
+    {"PK1000 45", "1603h/2", pk, object::rpdo4_mapping_2, 0x1603, 2, 4, ro, 0, any, any,
+     0x2003'0308},
+    {"PK1000 46", "1800h/0", pk, object::tpdo1_count, 0x1800, 0, 1, ro, 0, any, any, 5},
+    {"PK1000 46", "1800h/1", pk, object::tpdo1_cob_id, 0x1800, 1, 4, ro, 0, any, any, 0x4000'0195},
+    {"PK1000 47", "1A00h/0", pk, object::tpdo1_mapping_count, 0x1A00, 0, 1, ro, 0, any, any, 1},
+    {"PK1000 47, E-PK-12", "1A00h/1", pk, object::tpdo1_mapping_1, 0x1A00, 1, 4, ro, 0, any, any,
+     0x2000'0110},
+    {"PK1000 40: FEh", "1402h/2", pk, object::rpdo3_transmission_type, 0x1402, 2, 1, ro, 0, 0xF0,
+     0xFE, 0xFE},
     // PKP-2200-2400-LI_CANopen_UM_rev1.1
     {"PKP 13", "6500h/1", li, object::command_module, 0x6500, 1, 4, wo, 0, any, any, 0},
     {"PKP 14", "6000h/0", li, object::keys, 0x6000, 0, 4, ro, 0, any, any, 0},
@@ -71,6 +133,11 @@ constexpr dict_row dict_rows[] = {
      0},
     {"PKP 23", "1018h/1", li, object::vendor_id, 0x1018, 1, 4, ro, 0, any, any, 0x35A},
     {"PKP 30", "6201h/1", li, object::led_brightness, 0x6201, 1, 1, rw, 0, 0x3F, any, 0x3F},
+    {"PKP 30", "6201h/2", li, object::backlight_level, 0x6201, 2, 1, rw, 0, 0x3F, any, 0},
+    {"PKP 27: 1800h/2 FDh (RTR only)", "1800h/2", li, object::tpdo1_transmission_type, 0x1800, 2, 2,
+     ro, 0, any, any, 0xFD},
+    {"PKP 24, E-PKP-5: 200h", "1400h/1", li, object::rpdo1_cob_id, 0x1400, 1, 2, ro, 0, any, any,
+     0x200},
     {"PKP 32", "6301h/0", li, object::bootloader_present, 0x6301, 0, 1, ro, 0, 1, any, 0},
     // PKP2600SI_CANopen_UM_rev1.5: 2001h/2002h in three pieces (17, 18)
     {"2600SI 17 a sub 1 (2Bh)", "2001h/1", packed, object::led_on_r1_12_g1_4, 0x2001, 1, 2, rw, 0,
@@ -105,6 +172,10 @@ constexpr dict_row dict_rows[] = {
     {"si-family 2000h", "2000h/1", per, object::keys, 0x2000, 1, 2, ro, 0, any, any, 0},
     {"si-family 20FFh (write only)", "20FFh/1", per, object::protocol_j1939, 0x20FF, 1, 2, wo, 0, 1,
      any, 0},
+    {"si-family 1800h/5: as PK1000 46 b", "1800h/5", per, object::tpdo1_event_timer, 0x1800, 5, 2,
+     rw, 10, 0xFEFF, any, 0},
+    {"si-family 1017h: 000Ah..FEFFh", "1017h/0", per, object::heartbeat_time, 0x1017, 0, 2, rw, 10,
+     0xFEFF, any, 0},
 };
 
 constexpr bool row_is(const object_row& r, const dict_row& e) {
@@ -344,4 +415,128 @@ TEST_CASE("every dictionary is well formed: one row per object and per address, 
     upside_down[0].min = 5;
     upside_down[0].max = 4;
     CHECK(!detail::rows_well_formed(upside_down));
+}
+
+// --- every range at both ends and one step outside, through the codec ------------------------
+// Walked from the rows themselves, for every model and every row of its dictionary whose kind is
+// one number checked against the row (number, flag, brightness, colour, baud, show, node, period;
+// value_kinds.hpp) and for the period of 1016h: min - 1, min, max, max + 1 and `also` with its
+// neighbours, each written (600h) and read back (580h). The row's own answer (in_range, and 0 for
+// a period: off) decides: accepted as that object and value, or refused with value_out_of_range.
+// An access the row lacks is unknown_command; any other size is size_mismatch; a bit past the
+// size is reserved_not_zero. A new row is walked without a new line here.
+namespace {
+constexpr canopen::node_id walk_node = canopen::default_node_id;
+
+constexpr bool one_number(value_kind k) {
+    return k == value_kind::number || k == value_kind::flag || k == value_kind::brightness ||
+           k == value_kind::colour || k == value_kind::baud || k == value_kind::show ||
+           k == value_kind::node || k == value_kind::period;
+}
+constexpr std::uint32_t largest_of(std::uint8_t size) {
+    return size >= 4 ? 0xFFFF'FFFFu : (std::uint32_t{1} << (8 * size)) - 1;
+}
+// The values to try: each end of the range, one step outside each, `also` and its neighbours,
+// and 0; those the row's size can carry.
+std::vector<std::uint32_t> boundary_values(const object_row& r) {
+    std::vector<std::uint32_t> v = {0, r.min, r.max};
+    if (r.min > 0) v.push_back(r.min - 1);
+    if (r.max < 0xFFFF'FFFFu) v.push_back(r.max + 1);
+    if (r.min < r.max) v.push_back(r.min + 1);
+    if (r.also != any) {
+        v.push_back(r.also);
+        v.push_back(r.also - 1);
+        if (r.also < 0xFFFF'FFFFu) v.push_back(r.also + 1);
+    }
+    std::vector<std::uint32_t> fit;
+    for (const auto x : v)
+        if (x <= largest_of(r.size)) fit.push_back(x);
+    return fit;
+}
+
+// What decode must answer for `data` in a write (or a read reply) of row r: the object and raw
+// value, or the error.
+struct answer_is {
+    bool accepted;
+    errc error;
+};
+template <class M>
+bool decodes_as(const result<message>& got, const object_row& r, std::uint32_t data,
+                const answer_is& want) {
+    if (!want.accepted) return !got && got.error() == want.error;
+    if (!got) return false;
+    const auto* m = std::get_if<M>(&*got);
+    return m != nullptr && m->object == r.id && m->value.raw == data;
+}
+void walk_value(model m, const object_row& r, std::uint32_t data, answer_is want) {
+    CAPTURE(data);
+    for (const bool write : {true, false}) {
+        CAPTURE(write);
+        const bool allowed = write ? r.writable() : r.readable();
+        const auto got =
+            decode(powerkey_tests::expedited_frame(walk_node, r.address, r.size, data, write),
+                   walk_node, m);
+        const answer_is w = allowed ? want : answer_is{false, errc::unknown_command};
+        if (write)
+            CHECK(decodes_as<sdo_write>(got, r, data, w));
+        else
+            CHECK(decodes_as<sdo_read_reply>(got, r, data, w));
+    }
+}
+}  // namespace
+
+TEST_CASE("every row's range at both ends and one step outside, in every model, both ways") {
+    std::size_t rows = 0, values = 0;
+    for (const model m : enum_values<model>()) {
+        const auto d = info(m)->dictionary;
+        for (const object_row& r : rows_of(d)) {
+            const value_kind k = info(r.id).kind;
+            CAPTURE(std::string(to_string(m)));
+            CAPTURE(std::string(to_string(r.id)));
+            if (r.size == 0) continue;  // strings and the per-colour planes: no range
+            if (one_number(k)) {
+                ++rows;
+                for (const auto v : boundary_values(r)) {
+                    ++values;
+                    const bool in = r.in_range(v) || (k == value_kind::period && v == 0);
+                    walk_value(m, r, v, {in, errc::value_out_of_range});
+                }
+            } else if (k == value_kind::consumer_heartbeat) {
+                // 1016h sub 1: the period (bits 0..15) off or within the row's range, the producer
+                // (bits 16..23) a node id (PK1000 28).
+                ++rows;
+                for (const std::uint32_t producer : {0x00u, 0x01u, 0x7Fu, 0x80u}) {
+                    for (const std::uint32_t t : {0u, r.min - 1, r.min, r.min + 1, 0xFFFFu}) {
+                        const bool in = producer >= 1 && producer <= 0x7F &&
+                                        (t == 0 || (t >= r.min && t <= r.max));
+                        walk_value(m, r, producer << 16 | t, {in, errc::value_out_of_range});
+                    }
+                }
+            } else {
+                continue;
+            }
+            // The object's size only, and nothing past it.
+            const std::uint32_t valid = r.in_range(r.initial) ? r.initial : r.min;
+            for (const std::uint8_t other : {std::uint8_t{1}, std::uint8_t{2}, std::uint8_t{4}}) {
+                if (other == r.size) continue;
+                CAPTURE(int{other});
+                if (r.writable())
+                    CHECK(decode(powerkey_tests::expedited_frame(walk_node, r.address, other,
+                                                                 valid & largest_of(other), true),
+                                 walk_node, m) == errc::size_mismatch);
+                if (r.readable())
+                    CHECK(decode(powerkey_tests::expedited_frame(walk_node, r.address, other,
+                                                                 valid & largest_of(other), false),
+                                 walk_node, m) == errc::size_mismatch);
+            }
+            for (unsigned bit = 8u * r.size; bit < 32; ++bit) {
+                CAPTURE(bit);
+                walk_value(m, r, valid | (1u << bit), {false, errc::reserved_not_zero});
+            }
+        }
+    }
+    // The walk reached rows of every kind above in every model (a table that lost its ranges
+    // would walk nothing).
+    CHECK(rows >= 100);
+    CHECK(values >= 400);
 }

@@ -129,6 +129,38 @@ constexpr bool table3_holds() {
 }
 static_assert(table3_holds());
 
+// Every pair of codes 0h..Fh, and every look of every mode, colour and secondary colour 0..15:
+// a defined look comes back from its codes; codes_for gives codes exactly for a colour (and, to
+// alternate, a secondary colour) in 1h..9h, and those codes show the look asked for.
+constexpr bool every_code_pair_and_look() {
+    for (unsigned c1 = 0; c1 < 16; ++c1) {
+        for (unsigned c2 = 0; c2 < 16; ++c2) {
+            const led_look look =
+                combine(static_cast<std::uint8_t>(c1), static_cast<std::uint8_t>(c2));
+            if (!look.defined) continue;
+            const auto back = codes_for(look.mode, look.colour, look.secondary);
+            if (!back || !(combine(back->colour_1, back->colour_2) == look)) return false;
+        }
+    }
+    for (const led_mode mode : {led_mode::on, led_mode::blink, led_mode::alternate_blink}) {
+        for (unsigned c = 0; c < 16; ++c) {
+            for (unsigned s2 = 0; s2 < 16; ++s2) {
+                const auto colour = static_cast<lc>(c), secondary = static_cast<lc>(s2);
+                const auto codes = codes_for(mode, colour, secondary);
+                const bool valid =
+                    c >= 1 && c <= 9 && (mode != led_mode::alternate_blink || (s2 >= 1 && s2 <= 9));
+                if (codes.has_value() != valid) return false;
+                if (!codes) continue;
+                const led_look look = combine(codes->colour_1, codes->colour_2);
+                if (!look.defined || look.mode != mode || look.colour != colour) return false;
+                if (mode == led_mode::alternate_blink && look.secondary != secondary) return false;
+            }
+        }
+    }
+    return true;
+}
+static_assert(every_code_pair_and_look());
+
 // encode never builds a frame decode refuses, nor one that decodes to another message: run for
 // every model over raw field values (fuzz/j1939.cpp does the same with arbitrary bytes).
 constexpr bool encodes_back(model m, const j1939_rows::message& msg, keypad_address k = {}) {
@@ -273,4 +305,227 @@ TEST_CASE("j1939: a message describes itself through its fields") {
           "node 15h  J1939 multiple leds  priority: 6  destination: 21h  source: 00h  frame: 02h  "
           "red: -  green: -  blue: -  yellow: -  cyan: 4  violet: -  white: -  amber: -  "
           "yellow_green: -  blink: 3 5 6");
+}
+
+// --- every parameter byte of every J1939 command, every reserved byte's bits -----------------
+// Walked from the command table for every J1939 model: each configuration command (EF00h, 04h 1Bh
+// code p1 p2, then FFh) with each parameter at every byte, accepted exactly when the manuals'
+// range of the parameter's kind holds (below; PKP2600SI J1939 and PKP1600SI J1939 manuals,
+// sections 8-27), else value_out_of_range; each bit of each byte after the parameters cleared
+// alone: reserved_not_ff. A command the model's manuals lack is unknown_command, one no source
+// shows on it undocumented, whatever its bytes.
+namespace {
+namespace pj = powerkey::j1939;
+using jp = pj::command_param;
+using powerkey::errc;
+// The manuals' range of a parameter's byte; `p1` the command's first byte (the heartbeat's
+// FFh is taken only when it is switched off).
+constexpr bool j1939_param_accepts(jp p, unsigned b, unsigned p1) {
+    switch (p) {
+        case jp::none: return b == 0xFF;
+        case jp::level: return b <= 0x3F;
+        case jp::flag: return b <= 1;
+        case jp::show: return b <= 2;
+        case jp::management: return b == 0 || b == 2;
+        case jp::destination: return b != 0xFE;
+        case jp::baud: return b == 2 || b == 3;
+        case jp::source: return (b >= 1 && b <= 0xFD) || b == 0xFF;
+        case jp::identifier: return b != 0xFE;
+        case jp::period: return b >= 0x05 && b <= 0xFE;
+        case jp::heartbeat_time: return (b >= 0x05 && b <= 0xFE) || (b == 0xFF && p1 == 0);
+        case jp::colour: return b >= 1 && b <= 9;
+    }
+    return false;
+}
+constexpr unsigned j1939_lowest(jp p) {
+    for (unsigned b = 0; b < 0x100; ++b)
+        if (j1939_param_accepts(p, b, 0)) return b;
+    return 0xFF;
+}
+can::frame config_frame(unsigned code, unsigned p1, unsigned p2, unsigned cleared_bit = 64) {
+    std::uint64_t w = 0xFFFF'FFFF'FFFF'FFFFu;
+    w = (w & ~std::uint64_t{0xFF'FFFF'FFFF}) | 0x04 | 0x1B << 8 | std::uint64_t{code} << 16 |
+        std::uint64_t{p1} << 24 | std::uint64_t{p2} << 32;
+    if (cleared_bit < 64) w &= ~(std::uint64_t{1} << cleared_bit);
+    can::payload p{};
+    for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+    return can::frame(can::extended_id::make(0x18EF'2100).value(), can::dlc::make(8).value(), p);
+}
+}  // namespace
+
+TEST_CASE("TABLE 3: every pair of codes and every look of every colour") {
+    CHECK(every_code_pair_and_look());
+}
+
+TEST_CASE("every parameter byte of every J1939 command and every reserved bit, in every model") {
+    std::size_t walked = 0;
+    for (std::size_t i = 0; i < pj::model_row_count; ++i) {
+        const auto m = static_cast<powerkey::model>(i);
+        const auto r = *pj::row(m);
+        CAPTURE(i);
+        for (unsigned code = 0; code < 0x100; ++code) {
+            const auto* row = pj::find_command(static_cast<std::uint8_t>(code));
+            if (row == nullptr || code == 0x2A) continue;  // 2Ah: the revision request and answer
+            CAPTURE(code);
+            const auto cov = r.frames.of(row->what);
+            const unsigned v1 = j1939_lowest(row->p1), v2 = j1939_lowest(row->p2);
+            if (cov == pj::coverage::absent || cov == pj::coverage::unknown) {
+                CHECK(pj::decode(config_frame(code, v1, v2), m) ==
+                      (cov == pj::coverage::absent ? errc::unknown_command : errc::undocumented));
+                continue;
+            }
+            ++walked;
+            if (row->p1 != jp::none) {
+                for (unsigned b = 0; b < 0x100; ++b) {
+                    CAPTURE(b);
+                    // the second parameter at a byte valid whatever the first is
+                    const unsigned other = row->p2 == jp::heartbeat_time ? 0x05 : v2;
+                    const auto got = pj::decode(config_frame(code, b, other), m);
+                    if (j1939_param_accepts(row->p1, b, 0))
+                        CHECK(got.has_value());
+                    else
+                        CHECK(got == errc::value_out_of_range);
+                }
+            }
+            if (row->p2 != jp::none) {
+                for (unsigned b = 0; b < 0x100; ++b) {
+                    CAPTURE(b);
+                    const auto got = pj::decode(config_frame(code, v1, b), m);
+                    if (j1939_param_accepts(row->p2, b, v1))
+                        CHECK(got.has_value());
+                    else
+                        CHECK(got == errc::value_out_of_range);
+                }
+            }
+            const unsigned used = row->p1 == jp::none   ? 3
+                                  : row->p2 == jp::none ? 4
+                                                        : 5;  // bytes up to the params
+            for (unsigned bit = 8 * used; bit < 64; ++bit) {
+                CAPTURE(bit);
+                CHECK(pj::decode(config_frame(code, v1, v2, bit), m) == errc::reserved_not_ff);
+            }
+        }
+    }
+    CHECK(walked >= 20);
+}
+
+// The LED command (7a) and the LED acknowledgement (19) of the SI form, every byte of each field:
+// colour 00h..09h, state 00h..03h, secondary colour 00h..09h or FFh, an LED the model has; any
+// other byte value_out_of_range. The command's byte 6 FFh reads as a key contact state where the
+// other bytes allow it (the command is told by byte 6), so the command's secondary is walked to
+// FEh.
+TEST_CASE("every byte of the SI-form LED command and acknowledgement, in every J1939 model") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    const auto frame = [](std::uint32_t id, std::uint64_t w) {
+        can::payload p{};
+        for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+        return can::frame(can::extended_id::make(id).value(), can::dlc::make(8).value(), p);
+    };
+    const auto bytes = [](std::initializer_list<unsigned> b) {
+        std::uint64_t w = 0;
+        unsigned i = 0;
+        for (const unsigned x : b) w |= std::uint64_t{x} << (8 * i++);
+        return w;
+    };
+    std::size_t walked = 0;
+    for (std::size_t i = 0; i < pj::model_row_count; ++i) {
+        const auto m = static_cast<powerkey::model>(i);
+        const auto r = *pj::row(m);
+        if (r.form != pj::led_form::si) continue;
+        CAPTURE(i);
+        const bool command = r.frames.has(pj::feature::led_command);
+        const bool ack = r.frames.has(pj::feature::led_ack);
+        unsigned led = 0;
+        for (unsigned k = 1; k <= 16 && led == 0; ++k)
+            if (((r.leds >> (k - 1)) & 1u) != 0) led = k;
+        if (led == 0) continue;
+        ++walked;
+        for (unsigned b = 0; b < 0x100; ++b) {
+            CAPTURE(b);
+            // to the keypad: 04h 1Bh 01h, LED, colour, state, secondary, FFh
+            if (command) {
+                const auto at = [&](unsigned c, unsigned s, unsigned s2) {
+                    return pj::decode(
+                        frame(0x18EF'2100, bytes({0x04, 0x1B, 0x01, led, c, s, s2, 0xFF})), m);
+                };
+                const auto colour = at(b, 1, 0);
+                CHECK((colour.has_value() ? errc{} : colour.error()) ==
+                      (b <= 9 ? errc{} : errc::value_out_of_range));
+                const auto state = at(1, b, 0);
+                CHECK((state.has_value() ? errc{} : state.error()) ==
+                      (b <= 3 ? errc{} : errc::value_out_of_range));
+                if (b != 0xFF) {
+                    const auto secondary = at(1, 3, b);
+                    CHECK((secondary.has_value() ? errc{} : secondary.error()) ==
+                          (b <= 9 ? errc{} : errc::value_out_of_range));
+                }
+            }
+            // from the keypad: 00h, state, LED, colour, secondary, FFh FFh FFh
+            if (ack) {
+                const auto at = [&](unsigned s, unsigned c, unsigned s2) {
+                    return pj::decode(
+                        frame(0x18EF'FF21, bytes({0x00, s, led, c, s2, 0xFF, 0xFF, 0xFF})), m);
+                };
+                const auto state = at(b, 1, 0);
+                CHECK((state.has_value() ? errc{} : state.error()) ==
+                      (b <= 3 ? errc{} : errc::value_out_of_range));
+                const auto colour = at(1, b, 0);
+                CHECK((colour.has_value() ? errc{} : colour.error()) ==
+                      (b <= 9 ? errc{} : errc::value_out_of_range));
+                const auto secondary = at(3, 1, b);
+                CHECK((secondary.has_value() ? errc{} : secondary.error()) ==
+                      (b <= 9 || b == 0xFF ? errc{} : errc::value_out_of_range));
+            }
+        }
+    }
+    CHECK(walked >= 2);
+}
+
+// The software revision's answer (11): each of its five bytes at every value: printable ASCII
+// 20h..7Eh, or 00h to end the text (after which only 00h); anything else value_out_of_range.
+TEST_CASE("every byte of each character of the software revision's answer") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    for (unsigned at = 0; at < 5; ++at) {
+        for (unsigned b = 0; b < 0x100; ++b) {
+            if (b == 0xFF) continue;  // five FFh bytes are the request
+            CAPTURE(at);
+            CAPTURE(b);
+            can::payload p{0x04, 0x1B, 0x2A, 'V', '2', '.', '1', '0'};
+            p[3 + at] = static_cast<std::uint8_t>(b);
+            const auto got = pj::decode(can::frame(can::extended_id::make(0x18EF'FF21).value(),
+                                                   can::dlc::make(8).value(), p),
+                                        powerkey::model::pkp1600si);
+            // 00h ends the text: the bytes after it must be 00h too (only the last may be 00h here)
+            const bool ok = (b >= 0x20 && b <= 0x7E) || (b == 0 && at == 4);
+            CHECK((got.has_value() ? errc{} : got.error()) ==
+                  (ok ? errc{} : errc::value_out_of_range));
+            if (got) CHECK(std::get<pj::software_revision>(*got).length() == (b == 0 ? 4u : 5u));
+        }
+    }
+}
+
+// The switch back to CANopen (27): 04h 1Bh 80h 00h, then FFh; byte 3 at every other value is
+// value_out_of_range, each bit of bytes 4..7 cleared alone reserved_not_ff.
+TEST_CASE("every byte 3 and every reserved bit of the switch back to CANopen") {
+    namespace pj = powerkey::j1939;
+    using powerkey::errc;
+    const auto at = [](std::uint64_t w) {
+        can::payload p{};
+        for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(w >> (8 * i));
+        return pj::decode(
+            can::frame(can::extended_id::make(0x18EF'2100).value(), can::dlc::make(8).value(), p),
+            powerkey::model::pkp2600si);
+    };
+    const std::uint64_t manual = 0xFFFF'FFFF'0080'1B04u;
+    REQUIRE(at(manual).has_value());
+    for (unsigned b = 1; b < 0x100; ++b) {
+        CAPTURE(b);
+        CHECK(at(manual | std::uint64_t{b} << 24) == errc::value_out_of_range);
+    }
+    for (unsigned bit = 32; bit < 64; ++bit) {
+        CAPTURE(bit);
+        CHECK(at(manual & ~(std::uint64_t{1} << bit)) == errc::reserved_not_ff);
+    }
 }

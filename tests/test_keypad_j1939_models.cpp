@@ -75,3 +75,17 @@ TEST_CASE("j1939: docs/j1939.md's coverage table is the model table") {
     }
     CHECK(rows == feature_count);
 }
+
+// The J1939 row of every value of the model enum's byte: the rows of the table, nothing past it.
+namespace {
+constexpr bool j1939_rows_bounded() {
+    for (unsigned v = 0; v < 256; ++v)
+        if (powerkey::j1939::row(static_cast<powerkey::model>(v)).has_value() !=
+            (v < powerkey::j1939::model_row_count))
+            return false;
+    return true;
+}
+static_assert(j1939_rows_bounded());
+}  // namespace
+
+TEST_CASE("a J1939 row for each model of the table, none past it") { CHECK(j1939_rows_bounded()); }

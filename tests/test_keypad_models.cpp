@@ -324,3 +324,57 @@ TEST_CASE("the decoders' copy of each row (model_layout), made again at run time
         CHECK(l.object_planes() == m.object_planes());
     }
 }
+
+// The LED-map and key-map rule bit by bit, for every model: each of the 64 bits alone through
+// unpack_leds (with 1, 2 and the model's planes) and unpack_keys. A bit is an LED when its plane
+// (bit / stride) is one of the planes asked for and its place in the plane (bit % stride) is in
+// led_mask; a key when it is below the model's keys. Any other bit is reserved_not_zero; pack_leds
+// gives each LED bit back.
+TEST_CASE("the LED-map and key-map rule, each of 64 bits alone, in every model") {
+    for (const model m : enum_values<model>()) {
+        const model_info k = *info(m);
+        CAPTURE(std::string(to_string(m)));
+        for (unsigned planes = 1; planes <= k.planes; ++planes) {
+            for (unsigned b = 0; b < 64; ++b) {
+                CAPTURE(planes);
+                CAPTURE(b);
+                const std::uint64_t v = std::uint64_t{1} << b;
+                const bool led = b / k.stride < planes && b % k.stride < 32 &&
+                                 ((k.led_mask >> (b % k.stride)) & 1u) != 0;
+                const auto l = unpack_leds(k, v, planes);
+                if (led) {
+                    REQUIRE(l.has_value());
+                    CHECK(pack_leds(k, *l, planes) == v);
+                } else {
+                    CHECK(l == errc::reserved_not_zero);
+                }
+            }
+        }
+        for (unsigned b = 0; b < 64; ++b) {
+            CAPTURE(b);
+            const auto keys = unpack_keys(k, std::uint64_t{1} << b);
+            if (b < k.keys)
+                CHECK((keys.has_value() && keys->contains(b + 1)));
+            else
+                CHECK(keys == errc::reserved_not_zero);
+        }
+    }
+}
+
+// A model set holds models of the table only: every value of the enum's byte, at compile time.
+namespace {
+constexpr bool model_set_bounds() {
+    model_set s = model_set::all();
+    for (unsigned v = 0; v < 256; ++v) {
+        const auto m = static_cast<model>(v);
+        if (s.contains(m) != (v < model_count)) return false;
+        model_set one;
+        one.insert(m);
+        if (one.empty() != (v >= model_count)) return false;
+    }
+    return true;
+}
+static_assert(model_set_bounds());
+}  // namespace
+
+TEST_CASE("a model set holds models of the table only") { CHECK(model_set_bounds()); }

@@ -342,3 +342,170 @@ TEST_CASE("the value builders give the manual's frames") {
 }
 
 TEST_CASE("the fields each kind shows") { powerkey_tests::check_rows(shown_rows, shows); }
+
+// --- every reserved bit on its own, walked from the dictionaries and the model table ------------
+// For every model and every row of its dictionary whose kind gives bits a meaning, each bit of
+// the value alone, written (600h) and read back (580h) as the row's access allows: a bit that
+// names nothing is reserved_not_zero, any other is accepted. What a bit names comes from the
+// model row's plain facts (keys, planes, stride, led_mask), not from the codec's derived masks:
+//   keys        bit k - 1 for keys 1..keys (PK1000 16, PKP 14)
+//   led_plane   bit k - 1 for an LED of led_mask (PK1000 17/18, the SI planes)
+//   led_map     plane p at bits p * stride, for the planes that fit 32 bits (PKP 15/16)
+//   cob_id      bits 11..29 reserved; 0..10 the identifier, 30 no RTR, 31 invalid (CiA 301
+//               7.5.2.35)
+//   device_type bits 20..31 reserved; 0..15 the profile, 16..19 the I/O kinds (CiA 401)
+//   consumer_heartbeat  byte 3 reserved (PK1000 28), on a valid value (off, producer 01h)
+namespace {
+constexpr canopen::node_id bits_node = canopen::default_node_id;
+
+constexpr bool led_bit(const model_info& k, unsigned plane_no, unsigned bit) {
+    return plane_no < k.planes && bit < k.stride && ((k.led_mask >> bit) & 1u) != 0;
+}
+// Whether bit b (0..31) of row r's value names something on model k; nullopt for a kind whose
+// bits this walk leaves to its own tests.
+constexpr std::optional<bool> bit_named(const model_info& k, value_kind kind, unsigned b) {
+    switch (kind) {
+        case value_kind::keys: return b < k.keys;
+        case value_kind::led_plane: return led_bit(k, 0, b);
+        case value_kind::led_map: {
+            const unsigned p = b / k.stride;
+            return (p + 1) * k.stride <= 32 && led_bit(k, p, b % k.stride);
+        }
+        case value_kind::cob_id: return b < 11 || b > 29;
+        case value_kind::device_type: return b < 20;
+        case value_kind::consumer_heartbeat: return b < 24;
+        default: return std::nullopt;
+    }
+}
+constexpr std::uint8_t row_bytes(const model_info& k, const object_row& r) {
+    return r.size != 0 ? r.size : static_cast<std::uint8_t>(k.stride / 8);
+}
+}  // namespace
+
+TEST_CASE("every reserved bit of every row on its own, in every model, both ways") {
+    std::size_t reserved = 0, named = 0;
+    for (const model m : enum_values<model>()) {
+        const model_info k = *info(m);
+        CAPTURE(std::string(to_string(m)));
+        for (const object_row& r : rows_of(k.dictionary)) {
+            const value_kind kind = info(r.id).kind;
+            if (!bit_named(k, kind, 0)) continue;
+            CAPTURE(std::string(to_string(r.id)));
+            const std::uint8_t size = row_bytes(k, r);
+            // consumer_heartbeat: each bit of byte 3 on a valid value; the others: alone.
+            const std::uint32_t base = kind == value_kind::consumer_heartbeat ? 0x0001'0000u : 0u;
+            for (unsigned b = 0; b < 8u * size; ++b) {
+                const bool is_named = *bit_named(k, kind, b);
+                if (kind == value_kind::consumer_heartbeat && is_named) continue;
+                CAPTURE(b);
+                const std::uint32_t data = base | (std::uint32_t{1} << b);
+                (is_named ? named : reserved) += 1;
+                for (const bool write : {true, false}) {
+                    if (write ? !r.writable() : !r.readable()) continue;
+                    CAPTURE(write);
+                    const auto got = decode(
+                        powerkey_tests::expedited_frame(bits_node, r.address, size, data, write),
+                        bits_node, m);
+                    if (is_named)
+                        CHECK(got.has_value());
+                    else
+                        CHECK(got == errc::reserved_not_zero);
+                }
+            }
+        }
+    }
+    CHECK(reserved >= 500);
+    CHECK(named >= 500);
+}
+
+// The PDOs' fields and reserved bits, from the model row: the key state (TPDO1, bytes 0..3 the
+// keys, byte 4 the tick), the LED maps (RPDO1/RPDO2: plane p at bits p * stride), the brightness
+// (RPDO3: byte 0, 00h..3Fh), the backlight (RPDO4: byte 0 the level, byte 1 the colour 00h..09h
+// where the model has one), each bit alone and each range at its ends (PK1000 11-15, PKP 10-12,
+// MT 12-18).
+TEST_CASE("every PDO bit on its own and every PDO field at its ends, in every model") {
+    const auto pdo = [](unsigned base, std::size_t dlc, std::uint64_t bits) {
+        can::payload p{};
+        for (std::size_t i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(bits >> (8 * i));
+        return can::frame(can::standard_id::make(base + bits_node.value()).value(),
+                          can::dlc::make(static_cast<std::uint8_t>(dlc)).value(), p);
+    };
+    for (const model m : enum_values<model>()) {
+        const model_info k = *info(m);
+        CAPTURE(std::string(to_string(m)));
+        for (unsigned b = 0; b < 40; ++b) {
+            CAPTURE(b);
+            const auto got = decode(pdo(0x180, 5, std::uint64_t{1} << b), bits_node, m);
+            if (b < k.keys || b >= 32)  // a key, or the tick in byte 4
+                CHECK(got.has_value());
+            else
+                CHECK(got == errc::reserved_not_zero);
+        }
+        for (const unsigned base : {0x200u, 0x300u}) {
+            for (unsigned b = 0; b < 64; ++b) {
+                CAPTURE(base);
+                CAPTURE(b);
+                const auto got = decode(pdo(base, 8, std::uint64_t{1} << b), bits_node, m);
+                if (led_bit(k, b / k.stride, b % k.stride))
+                    CHECK(got.has_value());
+                else
+                    CHECK(got == errc::reserved_not_zero);
+            }
+        }
+        if (k.brightness_pdo) {
+            CHECK(decode(pdo(0x400, 8, 0x3F), bits_node, m).has_value());
+            CHECK(decode(pdo(0x400, 8, 0x40), bits_node, m) == errc::value_out_of_range);
+            for (unsigned b = 8; b < 64; ++b) {
+                CAPTURE(b);
+                CHECK(decode(pdo(0x400, 8, std::uint64_t{1} << b), bits_node, m) ==
+                      errc::reserved_not_zero);
+            }
+        }
+        if (k.backlight_pdo) {
+            CHECK(decode(pdo(0x500, 8, 0x3F), bits_node, m).has_value());
+            CHECK(decode(pdo(0x500, 8, 0x40), bits_node, m) == errc::value_out_of_range);
+            if (k.backlight_colour) {
+                CHECK(decode(pdo(0x500, 8, 0x09'3F), bits_node, m).has_value());
+                CHECK(decode(pdo(0x500, 8, 0x0A'00), bits_node, m) == errc::value_out_of_range);
+            } else {
+                for (unsigned b = 8; b < 16; ++b) {
+                    CAPTURE(b);
+                    CHECK(decode(pdo(0x500, 8, std::uint64_t{1} << b), bits_node, m) ==
+                          errc::reserved_not_zero);
+                }
+            }
+            for (unsigned b = 16; b < 64; ++b) {
+                CAPTURE(b);
+                CHECK(decode(pdo(0x500, 8, std::uint64_t{1} << b), bits_node, m) ==
+                      errc::reserved_not_zero);
+            }
+        }
+        if (k.encoders) {
+            // TPDO2/TPDO3: byte 3 TOP 00h or 02h..10h, bytes 4..7 reserved; TPDO4: 0..500 (x 10 mV)
+            for (const unsigned base : {0x280u, 0x380u}) {
+                for (const std::uint64_t top : {0x00u, 0x02u, 0x10u})
+                    CHECK(decode(pdo(base, 8, top << 24), bits_node, m).has_value());
+                for (const std::uint64_t top : {0x01u, 0x11u})
+                    CHECK(decode(pdo(base, 8, top << 24), bits_node, m) ==
+                          errc::value_out_of_range);
+                for (unsigned b = 32; b < 64; ++b) {
+                    CAPTURE(b);
+                    CHECK(decode(pdo(base, 8, std::uint64_t{1} << b), bits_node, m) ==
+                          errc::reserved_not_zero);
+                }
+            }
+            for (unsigned input = 0; input < 4; ++input) {
+                CAPTURE(input);
+                const auto at = [&](std::uint64_t v) {
+                    return decode(pdo(0x480, 8, v << (16 * input)), bits_node, m);
+                };
+                const auto full = at(500);
+                REQUIRE(full.has_value());
+                const auto* a = std::get_if<analog_inputs>(&*full);
+                REQUIRE(a != nullptr);
+                CHECK(a->mv[input] == 5000);
+                CHECK(at(501) == errc::value_out_of_range);
+            }
+        }
+    }
+}

@@ -235,3 +235,44 @@ TEST_CASE("the name tables of the keypad values, row by row, with their aliases"
     CHECK(name_table_is<colour>(colour_name_rows, 8));
     CHECK(name_table_is<led_mode>(led_mode_rows, 4));
 }
+
+// --- the numbered sets (index_set.hpp) at their bounds -----------------------------------------
+// Key and LED numbers are 1..N: 0 and N + 1 are neither taken nor found, N is; a mask keeps bits
+// 0..N-1 only. For the sizes the library uses (10 and 16 keys, 32 LEDs, the 64 ring LEDs) and
+// every number up to 255, at compile time (a shift past the storage would not be constant).
+namespace {
+template <std::size_t N>
+constexpr bool set_bounds_hold() {
+    using set = index_set<N>;
+    set s;
+    if (s.insert(0) || s.insert(N + 1) || !s.empty()) return false;
+    if (!s.insert(N) || !s.contains(N) || s.contains(N - 1) || s.count() != 1) return false;
+    if (!s.insert(1) || !s.contains(1) || s.count() != 2) return false;
+    s.erase(N + 1);
+    s.erase(0);
+    if (s.count() != 2) return false;
+    s.erase(N);
+    if (s.contains(N) || s.count() != 1) return false;
+    const set all = set::from_mask(~std::uint64_t{0});
+    if (all.count() != N) return false;
+    if (all.mask() != (N == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << N) - 1)) return false;
+    for (unsigned n = 0; n < 256; ++n)
+        if (all.contains(n) != (n >= 1 && n <= N)) return false;
+    unsigned members = 0, last = 0;
+    for (const unsigned k : all) {
+        if (k != last + 1) return false;
+        last = k;
+        ++members;
+    }
+    return members == N && last == N;
+}
+static_assert(set_bounds_hold<10>() && set_bounds_hold<16>() && set_bounds_hold<32>() &&
+              set_bounds_hold<64>());
+}  // namespace
+
+TEST_CASE("key and LED sets: numbers 1..N, 0 and N + 1 neither taken nor found") {
+    CHECK(set_bounds_hold<10>());
+    CHECK(set_bounds_hold<16>());
+    CHECK(set_bounds_hold<32>());
+    CHECK(set_bounds_hold<64>());
+}

@@ -83,6 +83,23 @@ constexpr step_row unanswered[] = {
 };
 static_assert(follows(model::pk1000, unanswered));
 
+// Each pairing rule at its edge: an SDO frame cut to its 4 bytes of specifier and address (a
+// trimmed read, docs/decoder.md) still pairs, decoded or not; a write acknowledgement answers a
+// write, not a read of the same object, and a value read answers a read, not a write.
+constexpr step_row pairing_edges[] = {
+    {"615#40171000", sdo_pairing::request, 0x15, true, 0},
+    {"595#4B17100064000000", sdo_pairing::reply, 0x15, true, 0},
+    {"615#4017100000000000", sdo_pairing::request, 0x15, true, 0},
+    {"595#6017100000000000", sdo_pairing::unanswered, 0x15, true, 0},
+    {"615#2B17100064000000", sdo_pairing::request, 0x15, true, 0},
+    {"595#4B17100064000000", sdo_pairing::unanswered, 0x15, true, 0},
+    {"595#6017100000000000", sdo_pairing::reply, 0x15, true, 0},
+    // 4 bytes that decode to nothing (no object 1FFFh) are still a read, which the abort answers
+    {"615#40FF1F00", sdo_pairing::request, 0x15, false, 0},
+    {"595#80FF1F0000000206", sdo_pairing::reply, 0x15, true, 0},
+};
+static_assert(follows(model::pk1000, pairing_edges));
+
 // PK1000 section 32: the device name, segment by segment.
 constexpr std::string_view device_name_log[] = {
     "615#4008100000000000", "595#410810000B000000", "615#6000000000000000",
@@ -122,6 +139,7 @@ constexpr std::string_view serial_log[] = {
 }  // namespace
 
 TEST_CASE("the session pairs SDO requests with their replies") {
+    CHECK(follows(model::pk1000, pairing_edges));
     CHECK(follows(model::pk1000, unanswered));
 }
 
@@ -171,6 +189,9 @@ TEST_CASE("the session notices the switch to J1939 and back") {
     CHECK(s.protocol() == bus_protocol::canopen);
     // RS485 (sub 2) is no protocol switch.
     CHECK_FALSE(s.step(can::candump("615#2BFF200200000000")).new_protocol.has_value());
+    // Writing 0 to 20FFh/1 keeps CANopen: no switch.
+    CHECK_FALSE(s.step(can::candump("615#2BFF200100000000")).new_protocol.has_value());
+    CHECK(s.protocol() == bus_protocol::canopen);
 }
 
 TEST_CASE("a PKP keypad has no J1939: the switch frame is refused and nothing changes") {
