@@ -176,6 +176,32 @@ def junit():
         xml.update_statistics()
         if written != (xml.tests, xml.failures, xml.errors):
             fail("junit: total counts %s, junitparser %s" % (written, (xml.tests, xml.failures, xml.errors)))
+        # Many warnings: text shows 3 and counts them, JUnit lists 1000 and counts the rest.
+        import can  # Debian's python3-can
+
+        many = os.path.join(tmp, "many.log")
+        writer = can.CanutilsLogWriter(many, channel="can0")
+        writer.on_message_received(can.Message(timestamp=1700000000, arbitration_id=0x000,
+                                               is_extended_id=False, data=bytes([1, 0x15])))
+        for i in range(2500):
+            writer.on_message_received(can.Message(timestamp=1700000000.001 + i / 1000,
+                                                   arbitration_id=0x515, is_extended_id=False,
+                                                   data=bytes([0x3F, 0x01])))
+        writer.stop()
+        status, out, _ = check("--model", "pk1000", many)
+        if status != 0 or len(out) != 4 or \
+                out[3] != "warnings: not_manual_form 2500 (3 of each shown; --json lists each)":
+            fail("many warnings: status %d, %s" % (status, out[-2:]))
+        report_many = os.path.join(tmp, "many.xml")
+        subprocess.run([pk, "check", "--model", "pk1000", "--junit", report_many, many],
+                       capture_output=True)
+        suite = list(JUnitXml.fromfile(report_many))[0]
+        case = [c for c in suite if c.name == "not_manual_form"][0]
+        lines = case.system_out.splitlines()
+        props = {p.name: p.value for p in suite.properties()}
+        if len(lines) != 1001 or lines[-1] != "1500 more not listed" or \
+                props.get("warnings.not_manual_form") != "2500" or suite.failures != 0:
+            fail("many warnings, junit: %d lines, last %s, %s" % (len(lines), lines[-1:], props))
         # A report that cannot be written is an error.
         r = subprocess.run([pk, "check", "--model", "pk1000", "--junit", os.path.join(tmp, "no", "r.xml"),
                             os.path.join(logs_dir, "check-clean.log")], capture_output=True, text=True)

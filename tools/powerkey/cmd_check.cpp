@@ -221,6 +221,7 @@ public:
         checker_.emplace(config_);
         now_ = 0;
         problems_.clear();
+        kept_ = {};
         failures_before_ = failures;
     }
     void frame(const logs::record& r) override {
@@ -230,11 +231,11 @@ public:
                 now_ = static_cast<std::uint32_t>(static_cast<std::uint64_t>(*us) / 1000);
         for (const auto& p :
              checker_->step(r.frame, pb::millis{now_}, static_cast<std::uint32_t>(r.line)))
-            problems_.push_back(p);
+            keep(p);
     }
     void end(std::size_t input) override {
         // The end of the log: what is still unanswered there, and whether the model fits.
-        for (const auto& p : checker_->finish(pb::millis{now_})) problems_.push_back(p);
+        for (const auto& p : checker_->finish(pb::millis{now_})) keep(p);
         std::stable_sort(
             problems_.begin(), problems_.end(),
             [](const pb::problem& a, const pb::problem& b) { return a.line < b.line; });
@@ -243,10 +244,7 @@ public:
         for (const auto& p : problems_) {
             const auto k = static_cast<std::size_t>(p.kind);
             const bool warning = pb::severity_of(p.kind) == pb::severity::warning;
-            if (warning)
-                ++warnings_;
-            else
-                ++found_;
+            if (!warning) ++found_;
             std::string text = text_of(p);
             if (json_ || !warning || printed[k]++ < warnings_shown) print(p, text);
             if (junit_) report.texts.push_back(std::move(text));
@@ -267,6 +265,17 @@ public:
     [[nodiscard]] const std::vector<log_report>& reports() const noexcept { return reports_; }
 
 private:
+    // Problems are all kept; warnings only as many of a kind as an output shows (JSON: all), so
+    // that a log of a million trimmed frames costs no memory in text or JUnit (the checker counts
+    // them).
+    void keep(const pb::problem& p) {
+        auto& n = kept_[static_cast<std::size_t>(p.kind) % pb::problem_kind_count];
+        const std::size_t most = junit_ ? junit_failures_listed : warnings_shown;
+        if (pb::severity_of(p.kind) == pb::severity::warning && !json_ && n >= most) return;
+        ++n;
+        problems_.push_back(p);
+    }
+
     void print(const pb::problem& p, const std::string& text) {
         const auto kind = powerkey::to_string(p.kind);
         const auto severity = powerkey::to_string(pb::severity_of(p.kind));
@@ -331,8 +340,8 @@ private:
     std::optional<pb::checker<>> checker_;
     std::uint32_t now_ = 0;
     std::vector<pb::problem> problems_;
+    std::array<std::size_t, pb::problem_kind_count> kept_{};
     std::size_t found_ = 0;
-    std::size_t warnings_ = 0;
     int failures_before_ = 0;
     std::vector<log_report> reports_;
 };
