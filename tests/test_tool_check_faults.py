@@ -21,6 +21,7 @@ import sys
 import tempfile
 
 pk, src = sys.argv[2], sys.argv[3]
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(src, "scripts"))
 import controller_faults  # noqa: E402
 
