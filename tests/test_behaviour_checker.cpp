@@ -265,9 +265,11 @@ constexpr bool trimmed_controller() {
         can::frame(can::standard_id{0x515}, can::dlc{2}, {0x3F, 0x01})};
     std::uint32_t line = 0;
     std::size_t warnings = 0, problems = 0;
-    for (const auto& f : log)
-        for (const auto& p : c.step(f, millis{line * 10}, ++line))
+    for (const auto& f : log) {
+        ++line;
+        for (const auto& p : c.step(f, millis{line * 10}, line))
             (severity_of(p.kind) == severity::warning ? warnings : problems) += 1;
+    }
     problems += c.finish(millis{100}).size();
     return warnings == 3 && problems == 0 && c.count(problem_kind::not_manual_form) == 3 &&
            c.keypad_frames() == 4 && c.refused_frames() == 0;
