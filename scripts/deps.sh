@@ -5,12 +5,13 @@ packages=(g++ clang cmake make doctest-dev libbenchmark-dev clang-format-14 valg
           libclang-rt-14-dev gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
           llvm python3 wireshark-dev tshark
           libcli11-dev nlohmann-json3-dev zlib1g-dev python3-can can-utils
-          pybind11-dev python3-dev python3-pytest python3-canmatrix)
+          pybind11-dev python3-dev python3-pytest python3-canmatrix python3-junitparser)
 # libcli11-dev, nlohmann-json3-dev, zlib1g-dev: the powerkey tool's options, JSON input and BLF
 # containers. python3-can, can-utils: tests/test_tool_log_formats.sh writes its logs with them.
 # pybind11-dev, python3-dev: the Python module (python/, docs/python.md); python3-pytest (with
 # python3-can) runs its tests. python3-canmatrix: tests/test_dbc.py reads `powerkey export dbc`'s
-# files with it.
+# files with it. python3-junitparser: tests/test_tool_check_faults.py reads `powerkey check --junit`'s
+# report with it.
 # tshark (with wireshark-dev: the Wireshark plugin) is also what scripts/bench_cli.sh compares with.
 missing=()
 for p in "${packages[@]}"; do

@@ -74,7 +74,9 @@ static std::string cell(dictionary d, object o) {
     if (r->size != 0)
         s += " " + std::to_string(r->size) + " B";
     else
-        s += info(o).kind == value_kind::string ? " string" : " stride/8 B";
+        s += info(o).kind == value_kind::string ? " string"
+              : info(o).kind == value_kind::keys ? " 2 B (1 B up to 8 keys)"
+                                                 : " stride/8 B";
     s += r->access == access::read_only ? " ro" : r->access == access::write_only ? " wo" : " rw";
     const bool ranged = r->min != 0 || r->max != 0xFFFF'FFFF || r->also != 0xFFFF'FFFF;
     if (ranged) {

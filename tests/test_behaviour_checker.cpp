@@ -179,6 +179,52 @@ TEST_CASE("checker: one small log per problem kind") {
           {2, "615#6000000000000000"},
           {3, "595#01504B3130303000"}},
          {{4, pk::segment_size, {9, 7, 0x100B}}}},
+        // Issue 22: frames to the keypad that decode refuses, with its reason.
+        {"a 4-byte write of a 1-byte object, never answered",
+         model::pk1000,
+         {{0, "715#00"}, {10, "615#2314200002000000"}, {500, "715#7F"}},
+         {{2, pk::refused_frame, {static_cast<std::uint32_t>(errc::size_mismatch), 0x615, 8}},
+          {2, pk::sdo_no_reply, {0x2014, 0, 490}}}},
+        {"an LED map with a reserved bit set (PK1000: no LED 29)",
+         model::pk1000,
+         {{0, "000#0115"}, {10, "215#0000001000000000"}},
+         {{2, pk::refused_frame, {static_cast<std::uint32_t>(errc::reserved_not_zero), 0x215, 8}}}},
+        {"a brightness of 40h",
+         model::pk1000,
+         {{0, "000#0115"}, {10, "415#4000000000000000"}},
+         {{2,
+           pk::refused_frame,
+           {static_cast<std::uint32_t>(errc::value_out_of_range), 0x415, 8}}}},
+        {"an SDO write too short to carry its value, answered by nobody",
+         model::pk1000,
+         {{0, "715#00"}, {10, "615#2B171000"}, {300, "715#7F"}},
+         {{2, pk::refused_frame, {static_cast<std::uint32_t>(errc::wrong_length), 0x615, 4}},
+          {2, pk::sdo_no_reply, {0x1017, 0, 290}}}},
+        {"a trimmed request without reply: a warning, and the request still unanswered",
+         model::pk1000,
+         {{0, "715#00"}, {10, "615#2B171000F401"}, {300, "715#7F"}},
+         {{2, pk::not_manual_form, {0x615, 6, 1}}, {2, pk::sdo_no_reply, {0x1017, 0, 290}}}},
+        {"a padded NMT start and a trimmed backlight: warnings only",
+         model::pk1000,
+         {{0, "000#0115000000000000"}, {10, "515#3F01"}, {20, "715#05"}},
+         {{1, pk::not_manual_form, {0x000, 8, 2}}, {2, pk::not_manual_form, {0x515, 2, 1}}}},
+        {"the keypad's own refused frames are no refused_frame (2 of 3: no wrong_model)",
+         model::pkp2400si,
+         {{0, "195#000100002A"}, {10, "195#000100002A"}, {20, "195#010000002A"}},
+         {}},
+        {"a log mostly refused under the model given",
+         model::pkp2400si,
+         {{0, "715#00"},
+          {10, "195#000100002A"},
+          {20, "195#000200002A"},
+          {30, "215#0000000100000000"},
+          {40, "195#010000002A"}},
+         {{4, pk::refused_frame, {static_cast<std::uint32_t>(errc::reserved_not_zero), 0x215, 8}},
+          {2, pk::wrong_model, {3, 5, static_cast<std::uint32_t>(model::pkp2400si)}}}},
+        {"another node's frames are not the keypad's",
+         model::pk1000,
+         {{0, "216#FFFFFFFFFFFFFFFF"}, {1, "416#FF"}, {2, "616#2B"}, {3, "716#00"}},
+         {}},
     };
     for (const auto& r : rows) {
         INFO(std::string(r.name));
@@ -188,8 +234,51 @@ TEST_CASE("checker: one small log per problem kind") {
 }
 
 TEST_CASE("checker: every problem kind has a test row and a name") {
-    for (const auto k : enum_values<problem_kind>()) CHECK(!to_string(k).empty());
-    CHECK(enum_values<problem_kind>().size() == 9);
+    for (const auto k : enum_values<problem_kind>()) {
+        CHECK(!to_string(k).empty());
+        CHECK(!summary_of(k).empty());
+        CHECK(problem_kinds[static_cast<std::size_t>(k)].kind == k);
+    }
+    CHECK(enum_values<problem_kind>().size() == 12);
+    CHECK(problem_kind_count == 12);
+}
+
+TEST_CASE("checker: severities: only frames not in the manual's form are warnings") {
+    static_assert(severity_of(problem_kind::not_manual_form) == severity::warning);
+    static_assert(severity_of(problem_kind::refused_frame) == severity::problem);
+    static_assert(severity_of(problem_kind::wrong_model) == severity::problem);
+    for (const auto k : enum_values<problem_kind>())
+        CHECK((severity_of(k) == severity::warning) == (k == problem_kind::not_manual_form));
+    CHECK(to_string(severity::problem) == "problem");
+    CHECK(to_string(severity::warning) == "warning");
+}
+
+namespace {
+// A constexpr scenario (checked at compile time and at run time): a controller that trims every
+// frame gets a warning per frame, counted, and no problem.
+constexpr bool trimmed_controller() {
+    checker<> c({model::pk1000, canopen::default_node_id});
+    const std::array<can::frame, 4> log = {
+        can::frame(can::standard_id{0x000}, can::dlc{8}, {0x01, 0x15}),
+        can::frame(can::standard_id{0x615}, can::dlc{6}, {0x2B, 0x17, 0x10, 0x00, 0xF4, 0x01}),
+        can::frame(can::standard_id{0x595}, can::dlc{8}, {0x60, 0x17, 0x10}),
+        can::frame(can::standard_id{0x515}, can::dlc{2}, {0x3F, 0x01})};
+    std::uint32_t line = 0;
+    std::size_t warnings = 0, problems = 0;
+    for (const auto& f : log) {
+        ++line;
+        for (const auto& p : c.step(f, millis{line * 10}, line))
+            (severity_of(p.kind) == severity::warning ? warnings : problems) += 1;
+    }
+    problems += c.finish(millis{100}).size();
+    return warnings == 3 && problems == 0 && c.count(problem_kind::not_manual_form) == 3 &&
+           c.keypad_frames() == 4 && c.refused_frames() == 0;
+}
+}  // namespace
+
+TEST_CASE("checker: a controller that trims its frames has warnings, not problems") {
+    static_assert(trimmed_controller());
+    CHECK(trimmed_controller());
 }
 
 TEST_CASE("checker: a clean controller session has no problem") {
@@ -274,6 +363,20 @@ TEST_CASE("checker: explanations") {
          "segment"},
         {{4, pk::segment_size, {9, 7, 0x100B}},
          "segmented upload of 100Bh announced 9 bytes and sent 7"},
+        {{2, pk::refused_frame, {static_cast<std::uint32_t>(errc::size_mismatch), 0x615, 8}},
+         "frame 615h of 8 bytes refused (size_mismatch): the keypad does not act on it"},
+        {{2, pk::refused_frame, {static_cast<std::uint32_t>(errc::wrong_length), 0x415, 1}},
+         "frame 415h of 1 byte refused (wrong_length): the keypad does not act on it"},
+        {{2, pk::refused_frame, {0xEE, 0x18EF2100, 8}},
+         "frame 18EF2100h of 8 bytes refused (an unknown error): the keypad does not act on it"},
+        {{2, pk::wrong_model, {13, 58, static_cast<std::uint32_t>(model::pkp2400)}},
+         "13 of 58 keypad frames refused as pkp2400 frames: the keypad is likely another model"},
+        {{2, pk::not_manual_form, {0x615, 6, 1}},
+         "frame 615h of 6 bytes is trimmed, not the manual's form: read as the manual's form, as "
+         "the keypads do"},
+        {{2, pk::not_manual_form, {0x000, 8, 2}},
+         "frame 000h of 8 bytes is padded, not the manual's form: read as the manual's form, as "
+         "the keypads do"},
     };
     for (const auto& r : rows) {
         std::array<char, 160> buf{};

@@ -176,6 +176,8 @@ def check_sdo(label, decoded, kind, fields, mux):
         values = {k: v for k, v in fields.items() if k != "object"}
         if kind == "sdo_read_reply" and "bytes" in values:  # a string read expedited
             want = None
+        elif kind == "sdo_read_reply" and "size" in values:  # keys in 1 byte (4Fh): the DBC
+            want = None                                       # has the SI manuals' 2 bytes
         else:
             want = "command" if kind == "command" else f"{kind} {obj}"
     elif kind == "sdo_upload_initiate_response" and fields["size_indicated"]:

@@ -169,7 +169,8 @@ constexpr dict_row dict_rows[] = {
     // docs/si-family.md: the per-colour dictionary (planes of the model's stride: size 0)
     {"si-family 2001h", "2001h/1", per, object::led_on_red, 0x2001, 1, 0, rw, 0, any, any, 0},
     {"si-family 2002h", "2002h/3", per, object::led_blink_blue, 0x2002, 3, 0, rw, 0, any, any, 0},
-    {"si-family 2000h", "2000h/1", per, object::keys, 0x2000, 1, 2, ro, 0, any, any, 0},
+    // 2000h/1: 2 bytes, or 1 on 8 keys or fewer (size 0: value_kinds::keys; issue 22, inferred)
+    {"si-family 2000h", "2000h/1", per, object::keys, 0x2000, 1, 0, ro, 0, any, any, 0},
     {"si-family 20FFh (write only)", "20FFh/1", per, object::protocol_j1939, 0x20FF, 1, 2, wo, 0, 1,
      any, 0},
     {"si-family 1800h/5: as PK1000 46 b", "1800h/5", per, object::tpdo1_event_timer, 0x1800, 5, 2,

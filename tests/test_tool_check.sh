@@ -3,8 +3,9 @@
 #   test_tool_check.sh POWERKEY_BINARY SOURCE_DIR
 # The shipped clean session passes; the same session with planted problems gives exactly the
 # lines below, each right after its `# planted: KIND` comment; --json, several files, bad lines
-# and usage behave as documented (docs/controller.md). A controller's log merged with the virtual
-# keypad's answers to it (powerkey simulate) passes too.
+# and usage behave as documented (docs/cli.md, docs/checker.md). A controller's log merged with the
+# virtual keypad's answers to it (powerkey simulate) passes too. The controller fault logs, the
+# warnings and the JUnit report: tests/test_tool_check_faults.py.
 set -uo pipefail
 pk=$1
 src=$2
@@ -54,7 +55,7 @@ done >"$tmp/planted"
 # --json: one object per problem.
 check --model pk1000 --json "$logs/check-problems.log" >"$tmp/json"
 [ "$(wc -l <"$tmp/json")" -eq 9 ] || fail "json: $(wc -l <"$tmp/json") lines"
-head -1 "$tmp/json" | grep -qx '{"line":10,"kind":"segment_size","detail":\[9,7,4107\],"text":"segmented upload of 100Bh announced 9 bytes and sent 7"}' ||
+head -1 "$tmp/json" | grep -qx '{"line":10,"severity":"problem","kind":"segment_size","detail":\[9,7,4107\],"text":"segmented upload of 100Bh announced 9 bytes and sent 7"}' ||
   fail "json: $(head -1 "$tmp/json")"
 
 # Several files: FILE:LINE; standard input; bare frames (no time).

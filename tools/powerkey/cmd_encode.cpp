@@ -133,7 +133,9 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         return [&, moved](std::string_view name, auto& value) -> std::string {
             if (fields == v.end()) return "missing";
             const auto j = fields->find(name);
-            if (j == fields->end()) return "missing";
+            // A keys value shows "size" only for a 1-byte reply (value_kinds::keys): absent, 0.
+            if (j == fields->end())
+                return name == "size" && !fields->contains("bytes") ? "" : "missing";
             auto e = set_from_json(value, *j, name);
             if (e.empty() && moved && name == "target" && j->is_number_unsigned() &&
                 j->get<std::uint64_t>() == line_node.value())

@@ -543,9 +543,11 @@ std::string object_place(const context& c, const object_row& r) {
 }
 
 // The expedited bytes of a row's value (objects.hpp, object_row::size: 0 for a per-colour LED
-// plane, which has the model's stride / 8).
+// plane, which has the model's stride / 8, and for the keys of the SI sizes without a manual,
+// described in the SI manuals' 2 bytes: their 1-byte reply is not described).
 unsigned value_bytes(const context& c, const object_row& r) {
-    return r.size != 0 ? r.size : c.info.stride / 8u;
+    if (r.size != 0) return r.size;
+    return info(r.id).kind == value_kind::keys ? 2u : c.info.stride / 8u;
 }
 
 // The value signals of row r: one per field of its value kind (messages.hpp, value_fields), one

@@ -82,7 +82,7 @@ constexpr std::string_view input_text =
     "  0 all input read, nothing wrong found;\n"
     "  1 bad input: a file that cannot be read or is no log, a line that is not a frame, a\n"
     "    JSON line that does not rebuild its frame, a value encode refuses; check: a problem\n"
-    "    found in the log;\n"
+    "    found in the log (its warnings do not count);\n"
     "  2 usage: unknown command, option, model, message or field, a node id outside 1..127.\n"
     "See docs/cli.md.\n";
 

@@ -9,16 +9,10 @@
 //   for (const problem& p : c.finish()) print(p);
 //   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
 //
-// Problem kinds (problem_kind), the manual behaviour each comes from in docs/controller.md:
-//   sdo_overlap          a request while another is outstanding: the keypad drops it
-//   sdo_no_reply         a request never answered within the SDO timeout
-//   sdo_abort            the keypad aborted a request: the CiA 301 meaning of its code
-//   pdo_not_operational  an RPDO to a keypad that is not operational: it ignores it
-//   heartbeat_silence    no heartbeat for longer than the configured period (1017h) allows
-//   key_state_silence    no key state for longer than the periodic transmission allows
-//   old_node_traffic     a frame to the keypad's old node id after it changed its node id
-//   segment_toggle       a segment request or response with the wrong toggle bit
-//   segment_size         a segmented upload whose bytes do not match the size it announced
+// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST: its name, its severity and what it
+// means (problem_kinds[], summary_of()); docs/checker.md gives the manual behaviour each comes
+// from. A `problem` is a fault of the controller or the keypad; a `warning` is a frame the keypads
+// act on that a strict reader would refuse. Counted per kind: count(kind).
 // No heap, no I/O: problems come back as small structs, explain() writes the text.
 #ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
@@ -32,6 +26,8 @@
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/describe.hpp>
 #include <powerkey/enum_names.hpp>
+#include <powerkey/error.hpp>
+#include <powerkey/frame_form.hpp>
 #include <powerkey/keypad/commands.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -48,21 +44,74 @@
 
 namespace powerkey::behaviour {
 
+// How much a kind weighs: a problem fails a check (powerkey check's exit status), a warning does
+// not.
+// clang-format off
+#define POWERKEY_BEHAVIOUR_SEVERITY_LIST(X) \
+    X(problem) \
+    X(warning)
+// clang-format on
+enum class severity : std::uint8_t { POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_DETAIL_ENUMERATOR) };
+
+// X(name, severity, what it means); the detail each kind carries in its comment.
 // clang-format off
 #define POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(X) \
-    X(sdo_overlap)  /* detail: line of the outstanding request, its index, its sub-index */ \
-    X(sdo_no_reply)  /* detail: index, sub-index, ms waited */ \
-    X(sdo_abort)  /* detail: abort code, index, sub-index */ \
-    X(pdo_not_operational)  /* detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0 */ \
-    X(heartbeat_silence)  /* detail: ms silent so far, period ms (1017h), line of the last heartbeat */ \
-    X(key_state_silence)  /* detail: ms silent so far, period ms, line of the last key state */ \
-    X(old_node_traffic)  /* detail: COB-ID, old node id, the node id it moved to */ \
-    X(segment_toggle)  /* detail: toggle expected, toggle sent, 0 from the host / 1 the keypad */ \
-    X(segment_size)  /* detail: size announced, bytes received, index */
+    X(sdo_overlap, problem, "a request while another is outstanding: the keypad drops it") \
+      /* detail: line of the outstanding request, its index, its sub-index */ \
+    X(sdo_no_reply, problem, "a request never answered within the SDO timeout") \
+      /* detail: index, sub-index, ms waited */ \
+    X(sdo_abort, problem, "the keypad aborted a request") \
+      /* detail: abort code, index, sub-index */ \
+    X(pdo_not_operational, problem, "an RPDO to a keypad that is not operational: it ignores it") \
+      /* detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0 */ \
+    X(heartbeat_silence, problem, "no heartbeat for longer than the configured period allows") \
+      /* detail: ms silent so far, period ms (1017h), line of the last heartbeat */ \
+    X(key_state_silence, problem, "no key state for longer than the periodic transmission allows") \
+      /* detail: ms silent so far, period ms, line of the last key state */ \
+    X(old_node_traffic, problem, "a frame to the node id the keypad left") \
+      /* detail: COB-ID, old node id, the node id it moved to */ \
+    X(segment_toggle, problem, "a segment request or response with the wrong toggle bit") \
+      /* detail: toggle expected, toggle sent, 0 from the host / 1 the keypad */ \
+    X(segment_size, problem, "a segmented upload whose bytes do not match the size it announced") \
+      /* detail: size announced, bytes received, index */ \
+    X(refused_frame, problem, "a frame to the keypad that the decoder refuses: the keypad does not act on it") \
+      /* detail: the decoder's errc, COB-ID, dlc */ \
+    X(wrong_model, problem, "most keypad frames of the log are refused: the keypad is likely another model") \
+      /* detail: keypad frames refused, keypad frames, the model checked (at the first refused line) */ \
+    X(not_manual_form, warning, "a frame trimmed or padded: the keypads act on it, a strict reader refuses it") \
+      /* detail: COB-ID, dlc, form (frame_form: 1 trimmed, 2 padded) */
 // clang-format on
+#define POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR(name, ...) name,
 enum class problem_kind : std::uint8_t {
-    POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_DETAIL_ENUMERATOR)
+    POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR)
 };
+#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR
+
+// The row of a kind: its severity and what it means (one sentence, for reports' headings).
+struct problem_kind_info {
+    problem_kind kind;
+    behaviour::severity severity;
+    std::string_view summary;
+};
+
+#define POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW(name, sev, text) \
+    problem_kind_info{problem_kind::name, severity::sev, text},
+inline constexpr problem_kind_info problem_kinds[] = {
+    POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW)};
+#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW
+inline constexpr std::size_t problem_kind_count = std::size(problem_kinds);
+static_assert([] {
+    for (std::size_t i = 0; i < problem_kind_count; ++i)
+        if (static_cast<std::size_t>(problem_kinds[i].kind) != i) return false;
+    return true;
+}());
+
+[[nodiscard]] constexpr severity severity_of(problem_kind k) noexcept {
+    return problem_kinds[static_cast<std::size_t>(k) % problem_kind_count].severity;
+}
+[[nodiscard]] constexpr std::string_view summary_of(problem_kind k) noexcept {
+    return problem_kinds[static_cast<std::size_t>(k) % problem_kind_count].summary;
+}
 
 struct problem {
     std::uint32_t line = 0;
@@ -89,7 +138,9 @@ class checker {
 public:
     // The most problems one step() finds: the three the time brings (sdo_no_reply,
     // heartbeat_silence, key_state_silence) and two the frame does (a segment response with the
-    // wrong toggle that ends an upload of the wrong size; any other frame shows at most one).
+    // wrong toggle that ends an upload of the wrong size, which is never trimmed or padded: it
+    // uses all 8 bytes; a refused request sent while another is outstanding; any other frame
+    // shows at most one). finish() finds at most four: the three of the time and wrong_model.
     static constexpr std::size_t max_problems_per_frame = 5;
 
     constexpr explicit checker(const checker_config& c) noexcept
@@ -109,6 +160,7 @@ public:
         old_node(f, c);
         const canopen::node_id before = session_.node();
         const auto e = session_.step(f);
+        form(f, e);
         if (e.sdo == sdo_pairing::request) {
             on_request(e);
         } else if (e.cls.fn == canopen::function::sdo_tx &&
@@ -131,8 +183,23 @@ public:
         count_ = 0;
         now_ = t;
         timers();
+        // The same rule as powerkey decode's hint: at least 3, and at least a fifth, refused.
+        if (refused_ >= 3 && std::uint64_t{refused_} * 5 >= keypad_frames_ && !model_reported_) {
+            model_reported_ = true;
+            report(first_refused_line_, problem_kind::wrong_model, refused_, keypad_frames_,
+                   static_cast<std::uint32_t>(cfg_.keypad_model));
+        }
         return {found_.data(), count_};
     }
+
+    // How many problems (or warnings) of kind k the log showed so far, those dropped included.
+    [[nodiscard]] constexpr std::uint32_t count(problem_kind k) const noexcept {
+        return counts_[static_cast<std::size_t>(k) % problem_kind_count];
+    }
+    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and the
+    // J1939 switch), and how many of them the decoder refused.
+    [[nodiscard]] constexpr std::uint32_t keypad_frames() const noexcept { return keypad_frames_; }
+    [[nodiscard]] constexpr std::uint32_t refused_frames() const noexcept { return refused_; }
 
     // Problems a step() or finish() found past max_problems_per_frame, not returned (0 unless
     // the bound above is wrong: the fuzz target `behaviour` checks it).
@@ -148,6 +215,7 @@ public:
 private:
     constexpr void report(std::uint32_t line, problem_kind k, std::uint32_t a, std::uint32_t b,
                           std::uint32_t c) noexcept {
+        ++counts_[static_cast<std::size_t>(k) % problem_kind_count];
         if (count_ < found_.size())
             found_[count_++] = problem{line, k, {a, b, c}};
         else
@@ -195,6 +263,42 @@ private:
             ks_reported_ = true;
             report(line_, problem_kind::key_state_silence, elapsed(ks_last_->time, now_).value,
                    ks_period_, ks_last_->line);
+        }
+    }
+
+    // How the frame was written, and whether the keypad can act on it. A frame of the keypad that
+    // decode refuses counts towards wrong_model; one to the keypad (NMT, its SDO requests and
+    // RPDOs) is also refused_frame, with decode's reason: the keypad ignores it (or aborts it; a
+    // request still waits for its reply: session.hpp reads it zero-filled). Not a SYNC with data:
+    // CiA 301 allows a counter byte there, which the keypads' manuals do not show (decode refuses
+    // it) but no keypad is known to mind. A frame decode reads as trimmed or padded is
+    // not_manual_form.
+    constexpr void form(const can::frame& f, const session_event& e) noexcept {
+        if (e.decoded) {
+            ++keypad_frames_;
+            const auto how = form_of(*e.decoded);
+            if (how != frame_form::manual)
+                report(line_, problem_kind::not_manual_form, f.raw_id(), f.size(),
+                       static_cast<std::uint32_t>(how));
+            return;
+        }
+        const errc why = e.decoded.error();
+        if (e.cls.fn == canopen::function::j1939 ||
+            (why == errc::wrong_id && !canopen::concerns(e.cls, e.node)))
+            return;  // not the keypad's: another node's, or no keypad function
+        ++keypad_frames_;
+        if (refused_++ == 0) first_refused_line_ = line_;
+        switch (e.cls.fn) {
+            case canopen::function::nmt:
+            case canopen::function::sdo_rx:
+            case canopen::function::rpdo1:
+            case canopen::function::rpdo2:
+            case canopen::function::rpdo3:
+            case canopen::function::rpdo4:
+                report(line_, problem_kind::refused_frame, static_cast<std::uint32_t>(why),
+                       f.raw_id(), f.size());
+                break;
+            default: break;
         }
     }
 
@@ -408,6 +512,11 @@ private:
     std::uint32_t ks_period_ = 0;
     std::optional<seen> ks_last_;
     bool ks_reported_ = false;
+    std::uint32_t keypad_frames_ = 0;
+    std::uint32_t refused_ = 0;
+    std::uint32_t first_refused_line_ = 0;
+    bool model_reported_ = false;
+    std::array<std::uint32_t, problem_kind_count> counts_{};
     std::array<problem, max_problems_per_frame> found_{};
     std::size_t count_ = 0;
     std::size_t dropped_ = 0;
@@ -477,6 +586,14 @@ constexpr void put_address(text_writer& w, std::uint32_t index, std::uint32_t su
     w.put_hex(index, 4);
     w.put("h/");
     w.put_decimal(sub);
+}
+// "frame 615h of 6 bytes" (a 29-bit identifier with 8 digits)
+constexpr void put_frame(text_writer& w, std::uint32_t id, std::uint32_t dlc) noexcept {
+    w.put("frame ");
+    w.put_hex(id, id > 0x7FF ? 8 : 3);
+    w.put("h of ");
+    w.put_decimal(dlc);
+    w.put(dlc == 1 ? " byte" : " bytes");
 }
 constexpr void put_line(text_writer& w, std::uint32_t line) noexcept {
     w.put("line ");
@@ -558,6 +675,32 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
             w.put(" bytes and sent ");
             w.put_decimal(d[1]);
             break;
+        case problem_kind::refused_frame: {
+            detail::put_frame(w, d[1], d[2]);
+            w.put(" refused (");
+            const auto why = to_string(static_cast<errc>(d[0]));
+            w.put(why.empty() ? std::string_view{"an unknown error"} : why);
+            w.put("): the keypad does not act on it");
+            break;
+        }
+        case problem_kind::wrong_model: {
+            w.put_decimal(d[0]);
+            w.put(" of ");
+            w.put_decimal(d[1]);
+            w.put(" keypad frames refused as ");
+            const auto m = to_string(static_cast<model>(d[2]));
+            w.put(m.empty() ? std::string_view{"this model's"} : m);
+            w.put(" frames: the keypad is likely another model");
+            break;
+        }
+        case problem_kind::not_manual_form: {
+            detail::put_frame(w, d[0], d[1]);
+            w.put(" is ");
+            const auto how = to_string(static_cast<frame_form>(d[2]));
+            w.put(how.empty() ? std::string_view{"not"} : how);
+            w.put(", not the manual's form: read as the manual's form, as the keypads do");
+            break;
+        }
     }
 }
 
@@ -573,11 +716,19 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
 
 }  // namespace powerkey::behaviour
 
+#define POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME(name, ...) {value_type::name, #name},
 template <>
 struct powerkey::enum_names<powerkey::behaviour::problem_kind> {
     using value_type = powerkey::behaviour::problem_kind;
     static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_DETAIL_ENUM_NAME)};
+        POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME)};
+};
+#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME
+template <>
+struct powerkey::enum_names<powerkey::behaviour::severity> {
+    using value_type = powerkey::behaviour::severity;
+    static constexpr enum_name_entry<value_type> entries[] = {
+        POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
 #endif  // POWERKEY_BEHAVIOUR_CHECKER_HPP

@@ -73,20 +73,22 @@ constexpr result<message> lift(const result<T>& r, const can::frame& f,
 // What each kind checks and reads is its own (value_kinds.hpp); here is only the dispatch.
 
 // The expedited size of row r's value: its own, or what its kind says when the row leaves it 0
-// (a per-colour SI plane: the model's stride / 8; a string piece: what it carries). The two
-// kinds of size 0 are tested here rather than through visit_kind: a jump on every SDO value cost
+// (a per-colour SI plane: the model's stride / 8; the keys of an SI keypad without a manual: 2
+// bytes, or 1 on 8 keys or fewer; a string piece: what it carries). The kinds of size 0 are
+// tested here rather than through visit_kind: a jump on every SDO value cost
 // 4 instructions a frame (docs/performance.md); the static_assert keeps the shortcut honest.
 constexpr std::uint8_t row_size(const model_layout& keypad, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();
     if (r.kind == value_kind::led_plane) return value_kinds::led_plane::size(keypad, r, carried);
+    if (r.kind == value_kind::keys) return value_kinds::keys::size(keypad, r, carried);
     return value_kinds::string::size(keypad, r, carried);
 }
-// Every row of size 0 is a string or a per-colour plane.
+// Every row of size 0 is a string, a per-colour plane or the SI keys of two sizes.
 constexpr bool sized_rows_known() noexcept {
     for (const codec_row& r : codec_rows)
         if (r.size() == 0 && r.key != no_codec_row.key && r.kind != value_kind::led_plane &&
-            r.kind != value_kind::string)
+            r.kind != value_kind::keys && r.kind != value_kind::string)
             return false;
     return true;
 }

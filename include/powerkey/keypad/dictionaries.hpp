@@ -280,13 +280,22 @@ inline constexpr object_row si_mt_own_rows[] = {
 // stride (2 bytes when 16, 1 when 8: size 0 below). Printed for the 2500-SI and 1500-LI;
 // inferred for the others (docs/si-family.md says which fact is which). The mapping entries'
 // values depend on the stride and are not given.
+// 2000h sub 01h of size 0: 2 bytes, or 1 on a keypad of 8 keys or fewer (value_kinds::keys;
+// inferred, docs/si-family.md "Evidence").
 inline constexpr object_row si_per_colour_own_rows[] = {
-    {obj::led_on_red, {0x2001, 1}, 0, rw},      {obj::led_on_green, {0x2001, 2}, 0, rw},
-    {obj::led_on_blue, {0x2001, 3}, 0, rw},     {obj::led_blink_red, {0x2002, 1}, 0, rw},
-    {obj::led_blink_green, {0x2002, 2}, 0, rw}, {obj::led_blink_blue, {0x2002, 3}, 0, rw},
-    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro}, {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
-    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro}, {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
-    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro}, {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
+    {obj::keys, {0x2000, 1}, 0, ro},
+    {obj::led_on_red, {0x2001, 1}, 0, rw},
+    {obj::led_on_green, {0x2001, 2}, 0, rw},
+    {obj::led_on_blue, {0x2001, 3}, 0, rw},
+    {obj::led_blink_red, {0x2002, 1}, 0, rw},
+    {obj::led_blink_green, {0x2002, 2}, 0, rw},
+    {obj::led_blink_blue, {0x2002, 3}, 0, rw},
+    {obj::rpdo1_mapping_1, {0x1600, 1}, 4, ro},
+    {obj::rpdo1_mapping_2, {0x1600, 2}, 4, ro},
+    {obj::rpdo1_mapping_3, {0x1600, 3}, 4, ro},
+    {obj::rpdo2_mapping_1, {0x1601, 1}, 4, ro},
+    {obj::rpdo2_mapping_2, {0x1601, 2}, 4, ro},
+    {obj::rpdo2_mapping_3, {0x1601, 3}, 4, ro},
 };
 
 inline constexpr auto si_packed_rows =

@@ -134,7 +134,9 @@ constexpr keypad_string si_model_name(std::string_view bytes, std::string_view s
 
 // Every keypad: X(name, designated initialisers of the rest of its row). Appending keeps the
 // numbers of the models before it. The PKP-2200/2300/2400-SI's stride of 8, their backlight
-// colour byte (a bench log of a PKP-2200-SI shows it, docs/si-family.md), what the SI sizes
+// colour byte (a bench log of a PKP-2200-SI shows it, docs/si-family.md), their LED brightness
+// PDO (controllers of the PKP-2400-SI send it; the 2600-SI, 3500-SI and 2500-SI have it), their
+// 1-byte 2000h sub 01h besides the 2-byte one (dictionaries.hpp), what the SI sizes
 // without a manual report, and the whole CANopen side of the PKP-1600-SI (whose only manual is
 // its J1939 one: the SI family rule for six keys, as the PKP-2300-SI) are inferred
 // (docs/si-family.md).
@@ -198,25 +200,25 @@ constexpr keypad_string si_model_name(std::string_view bytes, std::string_view s
                   si_model_name("PKP1500LI"sv, "docs/si-family.md"), si_serial})                   \
     X(pkp2200si, .manual = "PKP-2200-SI", .dictionary = dict::si_per_colour,                       \
       .keys = 4, .leds = 4, .planes = 3, .stride = 8, .led_mask = 0xF,                             \
-      .backlight_pdo = true, .backlight_colour = true, .j1939 = true,                              \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
       .replies_from_new_id = true,                                                                 \
       .strings = {blinkmarine_si, si_hardware, si_software,                                        \
                   si_model_name("PKP2200SI"sv, "inferred from the naming"), si_serial})            \
     X(pkp2300si, .manual = "PKP-2300-SI", .dictionary = dict::si_per_colour,                       \
       .keys = 6, .leds = 6, .planes = 3, .stride = 8, .led_mask = 0x3F,                            \
-      .backlight_pdo = true, .backlight_colour = true, .j1939 = true,                              \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
       .replies_from_new_id = true,                                                                 \
       .strings = {blinkmarine_si, si_hardware, si_software,                                        \
                   si_model_name("PKP2300SI"sv, "inferred from the naming"), si_serial})            \
     X(pkp2400si, .manual = "PKP-2400-SI", .dictionary = dict::si_per_colour,                       \
       .keys = 8, .leds = 8, .planes = 3, .stride = 8, .led_mask = 0xFF,                            \
-      .backlight_pdo = true, .backlight_colour = true, .j1939 = true,                              \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
       .replies_from_new_id = true,                                                                 \
       .strings = {blinkmarine_si, si_hardware, si_software,                                        \
                   si_model_name("PKP2400SI"sv, "inferred from the naming"), si_serial})            \
     X(pkp1600si, .manual = "PKP-1600-SI", .dictionary = dict::si_per_colour,                       \
       .keys = 6, .leds = 6, .planes = 3, .stride = 8, .led_mask = 0x3F,                            \
-      .backlight_pdo = true, .backlight_colour = true, .j1939 = true,                              \
+      .brightness_pdo = true, .backlight_pdo = true, .backlight_colour = true, .j1939 = true,      \
       .replies_from_new_id = true,                                                                 \
       .strings = {blinkmarine_si, si_hardware, si_software,                                        \
                   si_model_name("PKP1600SI"sv, "inferred from the naming"), si_serial})

@@ -222,9 +222,25 @@ struct period : detail::kind_defaults {
 // "keys": key bits 0..N-1; a bit above the model's keys is reserved.
 struct keys : detail::kind_defaults {
     static constexpr bool common = true;
+    // "size" only where it is not the row's one size: 1 for the 1-byte reply below (a reader
+    // sees it only then; a writer may always set it).
     template <class V, class F>
     static constexpr void fields(const object_info&, V& v, F& f) {
         proxy_field_keys(v, f);
+        if (!std::is_const_v<V> || v.size != 0) f("size", v.size);
+    }
+    // A row of size 0 (2000h sub 01h of the SI keypads without a manual, docs/si-family.md):
+    // 2 bytes, as the SI manuals print it, or 1 byte on a keypad of 8 keys or fewer, as
+    // controllers of the PKP-2400-SI read it. Both accepted (inferred); the value keeps size 1
+    // for a 1-byte reply, so that encode rebuilds it (0: the 2-byte form).
+    static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
+                                       std::uint8_t carried) noexcept {
+        if (r.size() != 0) return r.size();
+        return carried == 1 && keypad.keys <= 8 ? 1 : 2;
+    }
+    static constexpr object_value value(const m_layout&, const codec_row& r, std::uint8_t size,
+                                        std::uint32_t data) noexcept {
+        return {data, {}, static_cast<std::uint8_t>(r.size() == 0 && size == 1 ? 1 : 0)};
     }
     static constexpr errc check(const m_layout& keypad, const codec_row&, std::uint8_t,
                                 std::uint32_t data, bool) noexcept {

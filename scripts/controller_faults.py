@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""The controller fault logs of examples/logs/faults/ (issue 22): one bus log per kind of fault a
+controller of the keypads makes, written by python-can's candump writer (CanutilsLogWriter), each
+with what `powerkey check` must say of it: its problems, its warnings and its exit status.
+
+    controller_faults.py write DIR     writes DIR/NAME.log for every row of FAULTS
+    controller_faults.py check DIR     exits 1 when a log in DIR differs from what `write` makes
+
+tests/test_tool_check_faults.py runs `powerkey check` on each log and compares with the rows.
+Run with Debian's /usr/bin/python3 (python3-can).
+"""
+import filecmp
+import os
+import sys
+import tempfile
+
+# A row: the log's name, the model and node it is checked under, what the controller did (one
+# line, the log's purpose), the frames as (ms from the start, candump ID#DATA), the lines
+# `powerkey check` prints, and its exit status. Node 15h, the keypads' factory node id.
+FAULTS = [
+    {
+        "name": "sdo-write-4-bytes",
+        "model": "pk1000",
+        "what": "a 4-byte expedited write (23h) of the 1-byte object 2014h, which the keypad "
+                "neither acts on nor answers",
+        "frames": [
+            (0, "715#00"),
+            (10, "000#0115"),
+            (20, "615#2314200002000000"),
+            (520, "215#0100000000000000"),
+        ],
+        "expected": [
+            "3: refused_frame: frame 615h of 8 bytes refused (size_mismatch): the keypad does not act on it",
+            "3: sdo_no_reply: SDO request 2014h/0 never answered (500 ms without a reply)",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "led-reserved-bit",
+        "model": "pk1000",
+        "what": "an LED map with bit 28 set: the PK1000 has LEDs 1..28 in bits 0..27 of each plane",
+        "frames": [
+            (0, "715#00"),
+            (10, "000#0115"),
+            (20, "215#0100000000000000"),
+            (30, "215#0000001000000000"),
+            (40, "215#0000000000000000"),
+        ],
+        "expected": [
+            "4: refused_frame: frame 215h of 8 bytes refused (reserved_not_zero): the keypad does not act on it",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "level-40h",
+        "model": "pk1000",
+        "what": "an LED brightness PDO of level 40h: the levels are 00h..3Fh (PK1000 section 14)",
+        "frames": [
+            (0, "715#00"),
+            (10, "000#0115"),
+            (20, "415#3F00000000000000"),
+            (30, "415#4000000000000000"),
+        ],
+        "expected": [
+            "4: refused_frame: frame 415h of 8 bytes refused (value_out_of_range): the keypad does not act on it",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "sdo-no-reply",
+        "model": "pk1000",
+        "what": "an SDO write sent trimmed to 6 bytes that the keypad never answers, after one "
+                "it answered",
+        "frames": [
+            (0, "715#00"),
+            (10, "615#4011200000000000"),
+            (11, "595#4F11200001000000"),
+            (20, "615#2B171000F401"),
+            (300, "000#0115"),
+        ],
+        "expected": [
+            "4: warning: not_manual_form: frame 615h of 6 bytes is trimmed, not the manual's form: read as the manual's form, as the keypads do",
+            "4: sdo_no_reply: SDO request 1017h/0 never answered (280 ms without a reply)",
+            "warnings: not_manual_form 1",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "trimmed",
+        "model": "pk1000",
+        "what": "a controller that sends frames only as long as their last used byte (and its NMT "
+                "padded to 8 bytes): warnings, not problems",
+        "frames": [
+            (0, "715#00"),
+            (10, "000#0115000000000000"),
+            (20, "615#2B171000F401"),
+            (21, "595#6017100000000000"),
+            (30, "515#3F01"),
+            (40, "415#20"),
+        ],
+        "expected": [
+            "2: warning: not_manual_form: frame 000h of 8 bytes is padded, not the manual's form: read as the manual's form, as the keypads do",
+            "3: warning: not_manual_form: frame 615h of 6 bytes is trimmed, not the manual's form: read as the manual's form, as the keypads do",
+            "5: warning: not_manual_form: frame 515h of 2 bytes is trimmed, not the manual's form: read as the manual's form, as the keypads do",
+            "warnings: not_manual_form 4 (3 of each shown; --json lists each)",
+        ],
+        "status": 0,
+    },
+]
+
+
+def write(directory):
+    import can  # Debian's python3-can
+
+    for row in FAULTS:
+        path = os.path.join(directory, row["name"] + ".log")
+        writer = can.CanutilsLogWriter(path, channel="can0")
+        for ms, frame in row["frames"]:
+            ident, data = frame.split("#")
+            writer.on_message_received(
+                can.Message(
+                    timestamp=1700000000 + ms / 1000,
+                    arbitration_id=int(ident, 16),
+                    is_extended_id=len(ident) > 3,
+                    data=bytes.fromhex(data),
+                    channel="can0",
+                )
+            )
+        writer.stop()
+
+
+def check(directory):
+    with tempfile.TemporaryDirectory() as fresh:
+        write(fresh)
+        stale = [r["name"] for r in FAULTS
+                 if not filecmp.cmp(os.path.join(fresh, r["name"] + ".log"),
+                                    os.path.join(directory, r["name"] + ".log"), shallow=False)]
+    if stale:
+        print("stale logs (scripts/controller_faults.py write DIR): " + ", ".join(stale))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3 or sys.argv[1] not in ("write", "check"):
+        sys.exit(__doc__)
+    sys.exit(write(sys.argv[2]) if sys.argv[1] == "write" else check(sys.argv[2]))
