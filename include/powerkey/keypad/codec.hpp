@@ -4,6 +4,8 @@
 //   encode(node, model, message)   -> result<can::frame>   the inverse: encode(decode(f)) == f
 //
 // `node` is the keypad's current node id: it picks the COB-IDs of the PDOs, SDOs and heartbeat.
+// A 29-bit frame is a J1939 one: the J1939 codec (keypad/j1939_codec.hpp) reads it, at whatever
+// address (an overload narrows to one keypad address, as `node` does in CANopen).
 // A frame that belongs to no keypad (another node, another function) is refused with
 // errc::wrong_id, never mis-decoded. encode refuses every message decode could never return
 // (a key or LED the model lacks, a value outside its object's range, a write to a read-only
@@ -24,6 +26,7 @@
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -476,12 +479,18 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
     }
 }
 
-// A 29-bit frame: the J1939 switch back to CANopen, for a keypad that has it.
-constexpr result<message> decode_extended(const model_layout& keypad,
-                                          const can::frame& f) noexcept {
-    if (!keypad.j1939) return errc::wrong_id_format;
-    return lift(j1939::decode_switch_to_canopen(f));
+// A 29-bit frame: a J1939 frame of the keypad, in the one vocabulary (every model has a J1939
+// row, keypad/j1939_models.hpp). Out of line: no CANopen frame comes here.
+POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(
+    model m, const can::frame& f, j1939::keypad_address address) noexcept {
+    const auto r = j1939::decode(f, m, address);
+    if (!r) return r.error();
+    return to_message(*r);
 }
+
+// A J1939 alternative of message (encode hands it to the J1939 codec).
+template <class T>
+inline constexpr bool is_j1939_alternative = j1939::message_alternative<T>;
 
 // --- frames not in the manual's form -----------------------------------------------------------
 // (docs/decoder.md, "Tolerant and strict reading")
@@ -562,10 +571,11 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
     return std::visit(
         [&](const auto& v) -> result<can::frame> {
             using T = std::remove_cvref_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, canopen::nmt_message> ||
-                          std::is_same_v<T, canopen::sync_message> ||
-                          std::is_same_v<T, j1939::switch_to_canopen>) {
-                return encode(v);  // canopen::encode or j1939::encode, found by ADL
+            if constexpr (is_j1939_alternative<T>) {
+                return j1939::detail::build(j1939::detail::j1939_row_of(keypad.id), v);
+            } else if constexpr (std::is_same_v<T, canopen::nmt_message> ||
+                                 std::is_same_v<T, canopen::sync_message>) {
+                return canopen::encode(v);
             } else if constexpr (std::is_same_v<T, key_state>) {
                 return pdo_frame(function::tpdo1, node, 5,
                                  (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
@@ -626,9 +636,9 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 }  // namespace detail
 
 // The errors of decode, for a frame in the manual's form (decode_printed below):
-//   wrong_id_format     a 29-bit frame for a keypad without J1939
-//   wrong_id            another node's COB-ID, a function the model does not use, a 29-bit frame
-//                       on a PGN other than EF00h
+//   wrong_id            another node's COB-ID, a function the model does not use
+//   (a 29-bit frame)    j1939::decode's (keypad/j1939_codec.hpp): wrong_id for a PGN the keypads
+//                       do not use, undocumented for a frame no source shows on the model, ...
 //   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes) that is not
 //                       trimmed or padded either (or any other dlc, read strictly)
 //   unknown_command     an NMT command or SDO specifier the keypads do not use; an access the
@@ -643,9 +653,9 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
 namespace detail {
 // The front: f in the manual's form only (decode's strict reading).
-POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame& f,
-                                                                canopen::node_id node,
-                                                                model m) noexcept {
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(
+    const can::frame& f, canopen::node_id node, model m,
+    j1939::keypad_address address = std::nullopt) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const detail::model_layout& keypad = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
@@ -678,7 +688,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame
             return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
         default:
-            if (f.is_extended()) return detail::decode_extended(keypad, f);
+            if (f.is_extended()) return detail::decode_extended(m, f, address);
             // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
             if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
             if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
@@ -692,11 +702,12 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame
 // A padded frame whose manual form is refused keeps that refusal (every byte is there); anything
 // else stays wrong_length. Out of line: frames of the manual's length never come here.
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f, canopen::node_id node,
-                                                      model m) noexcept {
+                                                      model m,
+                                                      j1939::keypad_address address) noexcept {
     const std::uint8_t n = f.size();
     for (std::uint8_t k = 0; k <= 8; ++k) {
         if (k == n) continue;
-        const auto r = decode_printed(with_length(f, k), node, m);
+        const auto r = decode_printed(with_length(f, k), node, m, address);
         if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
         for (std::uint8_t i = k; i < n; ++i)
             if (f[i] != 0) return errc::wrong_length;
@@ -727,7 +738,18 @@ enum class reading : std::uint8_t {
     const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
     result<message> r = detail::decode_printed(f, node, m);
     if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
-        r = detail::reread(f, node, m);
+        r = detail::reread(f, node, m, std::nullopt);
+    return r;
+}
+
+// The same, with the J1939 frames narrowed to the keypad at `address` (j1939::decode's
+// `keypad`: its own frames from it, commands to it; nullopt for any address).
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node, model m,
+                                               j1939::keypad_address address,
+                                               reading how = reading::tolerant) noexcept {
+    result<message> r = detail::decode_printed(f, node, m, address);
+    if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
+        r = detail::reread(f, node, m, address);
     return r;
 }
 
@@ -737,12 +759,15 @@ enum class reading : std::uint8_t {
 // (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
 // carry, members the message's kind does not use set), or unknown_object for an object the
 // model's dictionary does not have.
-[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
-                                                  const message& msg) noexcept {
+// A J1939 message's frame is the J1939 codec's, checked as j1939::encode checks it (`address` as
+// in decode; `node` is not used).
+[[nodiscard]] constexpr result<can::frame> encode(
+    canopen::node_id node, model m, const message& msg,
+    j1939::keypad_address address = std::nullopt) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
-    const auto back = detail::decode_printed(*f, node, m);
+    const auto back = detail::decode_printed(*f, node, m, address);
     if (!back) return back.error();
     if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;
