@@ -36,7 +36,9 @@
 
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <variant>
 
 namespace powerkey {
@@ -479,18 +481,59 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
     }
 }
 
-// A 29-bit frame: a J1939 frame of the keypad, in the one vocabulary (every model has a J1939
-// row, keypad/j1939_models.hpp). Out of line: no CANopen frame comes here.
-POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(
-    model m, const can::frame& f, j1939::keypad_address address) noexcept {
+// A 29-bit frame: a J1939 frame of the keypad at `address` (nullopt: any), in the one
+// vocabulary (every model has a J1939 row, keypad/j1939_models.hpp).
+constexpr result<message> decode_j1939(model m, const can::frame& f,
+                                       j1939::keypad_address address) noexcept {
     const auto r = j1939::decode(f, m, address);
     if (!r) return r.error();
     return to_message(*r);
+}
+// The same at any address, from the CANopen front's default case. Out of line, and given only
+// what the front already holds (the layout): no CANopen frame pays for a J1939 argument.
+POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
+                                                               const can::frame& f) noexcept {
+    return decode_j1939(keypad.id, f, std::nullopt);
 }
 
 // A J1939 alternative of message (encode hands it to the J1939 codec).
 template <class T>
 inline constexpr bool is_j1939_alternative = j1939::message_alternative<T>;
+
+// The J1939 alternatives are the switch back and every alternative from key_contact on. The
+// switch is built as before, with the CANopen messages; the others are told apart by one compare
+// of the index, not a visit.
+inline constexpr std::size_t switch_index =
+    message(std::in_place_type<j1939::switch_to_canopen>).index();
+inline constexpr std::size_t first_j1939_index =
+    message(std::in_place_type<j1939::key_contact>).index();
+constexpr bool j1939_alternatives_in_place() noexcept {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+        return ((is_j1939_alternative<std::variant_alternative_t<I, message>> ==
+                 (I == switch_index || I >= first_j1939_index)) &&
+                ...);
+    }
+    (std::make_index_sequence<std::variant_size_v<message>>{});
+}
+static_assert(j1939_alternatives_in_place());
+
+// A J1939 message's frame: j1939::encode's (it checks the frame by decoding it back, narrowed to
+// `address` when given). Out of line: no CANopen message comes here.
+POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
+    model m, const message& msg, j1939::keypad_address address) noexcept {
+    return std::visit(
+        [m, address](const auto& v) -> result<can::frame> {
+            using T = std::remove_cvref_t<decltype(v)>;
+            if constexpr (is_j1939_alternative<T>) {
+                T manual = v;  // whatever `form` says, the manual's form is built
+                if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
+                return j1939::encode(m, manual, address);
+            } else {
+                return errc::wrong_id_format;  // not reached: is_j1939_message chose this path
+            }
+        },
+        msg);
+}
 
 // --- frames not in the manual's form -----------------------------------------------------------
 // (docs/decoder.md, "Tolerant and strict reading")
@@ -571,11 +614,12 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
     return std::visit(
         [&](const auto& v) -> result<can::frame> {
             using T = std::remove_cvref_t<decltype(v)>;
-            if constexpr (is_j1939_alternative<T>) {
-                return j1939::detail::build(j1939::detail::j1939_row_of(keypad.id), v);
-            } else if constexpr (std::is_same_v<T, canopen::nmt_message> ||
-                                 std::is_same_v<T, canopen::sync_message>) {
-                return canopen::encode(v);
+            if constexpr (std::is_same_v<T, canopen::nmt_message> ||
+                          std::is_same_v<T, canopen::sync_message> ||
+                          std::is_same_v<T, j1939::switch_to_canopen>) {
+                return encode(v);  // canopen::encode or j1939::encode, found by ADL
+            } else if constexpr (is_j1939_alternative<T>) {
+                return errc::wrong_id_format;  // encode gives these to encode_j1939
             } else if constexpr (std::is_same_v<T, key_state>) {
                 return pdo_frame(function::tpdo1, node, 5,
                                  (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
@@ -653,9 +697,9 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
 namespace detail {
 // The front: f in the manual's form only (decode's strict reading).
-POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(
-    const can::frame& f, canopen::node_id node, model m,
-    j1939::keypad_address address = std::nullopt) noexcept {
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame& f,
+                                                                canopen::node_id node,
+                                                                model m) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     const detail::model_layout& keypad = detail::layout(m);
     // The same classification as canopen::classify, written into the dispatch (every frame
@@ -688,7 +732,11 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(
             return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
         default:
-            if (f.is_extended()) return detail::decode_extended(m, f, address);
+            if (f.is_extended()) {
+                // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
+                if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
+                return detail::decode_extended(keypad, f);
+            }
             // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
             if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
             if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
@@ -702,12 +750,11 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(
 // A padded frame whose manual form is refused keeps that refusal (every byte is there); anything
 // else stays wrong_length. Out of line: frames of the manual's length never come here.
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f, canopen::node_id node,
-                                                      model m,
-                                                      j1939::keypad_address address) noexcept {
+                                                      model m) noexcept {
     const std::uint8_t n = f.size();
     for (std::uint8_t k = 0; k <= 8; ++k) {
         if (k == n) continue;
-        const auto r = decode_printed(with_length(f, k), node, m, address);
+        const auto r = decode_printed(with_length(f, k), node, m);
         if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
         for (std::uint8_t i = k; i < n; ++i)
             if (f[i] != 0) return errc::wrong_length;
@@ -738,19 +785,18 @@ enum class reading : std::uint8_t {
     const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
     result<message> r = detail::decode_printed(f, node, m);
     if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
-        r = detail::reread(f, node, m, std::nullopt);
+        r = detail::reread(f, node, m);
     return r;
 }
 
 // The same, with the J1939 frames narrowed to the keypad at `address` (j1939::decode's
-// `keypad`: its own frames from it, commands to it; nullopt for any address).
+// `keypad`: its own frames from it, commands to it; nullopt for any address). A J1939 frame has
+// one length, 8 bytes: the tolerant reading finds no other form for it.
 [[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node, model m,
                                                j1939::keypad_address address,
                                                reading how = reading::tolerant) noexcept {
-    result<message> r = detail::decode_printed(f, node, m, address);
-    if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
-        r = detail::reread(f, node, m, address);
-    return r;
+    if (f.is_extended() && detail::is_model(m)) return detail::decode_j1939(m, f, address);
+    return decode(f, node, m, how);
 }
 
 // The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg: the
@@ -759,18 +805,31 @@ enum class reading : std::uint8_t {
 // (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
 // carry, members the message's kind does not use set), or unknown_object for an object the
 // model's dictionary does not have.
-// A J1939 message's frame is the J1939 codec's, checked as j1939::encode checks it (`address` as
-// in decode; `node` is not used).
-[[nodiscard]] constexpr result<can::frame> encode(
-    canopen::node_id node, model m, const message& msg,
-    j1939::keypad_address address = std::nullopt) noexcept {
+// A J1939 message's frame is the J1939 codec's, checked as j1939::encode checks it (`node` is not
+// used).
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
+                                                  const message& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
+    if (msg.index() >= detail::first_j1939_index) [[unlikely]]
+        return detail::encode_j1939(m, msg, std::nullopt);
     const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
-    const auto back = detail::decode_printed(*f, node, m, address);
+    const auto back = detail::decode_printed(*f, node, m);
     if (!back) return back.error();
     if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;
+}
+
+// The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,
+// model, address) reads it (a key contact state to an address needs it: otherwise its bytes
+// read as an LED command).
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
+                                                  const message& msg,
+                                                  j1939::keypad_address address) noexcept {
+    if (detail::is_model(m) &&
+        (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index))
+        return detail::encode_j1939(m, msg, address);
+    return encode(node, m, msg);
 }
 
 }  // namespace powerkey

@@ -122,6 +122,12 @@ constexpr std::uint8_t byte_of(std::uint64_t w, unsigned i) noexcept {
     return static_cast<std::uint8_t>(w >> (8 * i));
 }
 
+// Bits 25..16 of a 29-bit identifier (EDP, DP, PDU format: a PDU1 PGN's high bits) of a keypad
+// PGN: EF00h, A700h, A600h, EE00h.
+constexpr bool is_keypad_pf(std::uint32_t pf) noexcept {
+    return pf == 0xEF || pf == 0xA7 || pf == 0xA6 || pf == 0xEE;
+}
+
 // The identifier of a frame the keypad sends: from the narrowed keypad, if any.
 constexpr errc from_keypad(std::uint8_t source, keypad_address keypad) noexcept {
     return keypad && source != *keypad ? errc::wrong_id : errc{};
@@ -502,12 +508,13 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
                                                keypad_address keypad = std::nullopt) noexcept {
     if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
     if (!f.is_extended()) return errc::wrong_id_format;
-    const model_row& r = detail::j1939_row_of(m);
     const std::uint32_t id = f.raw_id();
+    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
+    // First: most 29-bit frames on a bus are not a keypad's (the CANopen front sends them all).
+    if (!detail::is_keypad_pf(pf)) return errc::wrong_id;
+    const model_row& r = detail::j1939_row_of(m);
     const detail::route at{priority::make((id >> 26) & 7u).value(),
                            static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)};
-    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
-    if (pf != 0xEF && pf != 0xA7 && pf != 0xA6 && pf != 0xEE) return errc::wrong_id;
     if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = f.data_le();
