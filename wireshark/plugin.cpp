@@ -5,7 +5,8 @@
 // Wireshark tries the "can.id" table first, then "Decode As", then the "can" heuristics. The
 // plugin sits in "can.id" for every 11-bit identifier, so it sees each standard frame before
 // the generic CANopen and AUTOSAR NM dissectors and gives back (returns 0) every frame that is
-// not the keypad's; 29-bit frames reach it as a "can" heuristic (the J1939 switch frame).
+// not the keypad's; 29-bit frames reach it as a "can" heuristic (a keypad's J1939 frames, beside
+// Wireshark's own J1939 dissector).
 //
 // The session (pairing, segmented strings, node-id changes) depends on the frames before: it is
 // run on the first pass, which Wireshark makes in capture order, and its result is kept with
@@ -312,7 +313,9 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     } else {
         char b[16];
         std::snprintf(b, sizeof b, "node %02Xh  ", static_cast<unsigned>(v.node));
-        line = b + v.function + "  error: " + v.error;
+        // A J1939 frame has no node: "j1939  error: ...", as the tool writes it.
+        line = (v.function == "j1939" ? std::string() : std::string(b)) + v.function +
+               "  error: " + v.error;
     }
     line += session_notes(*record);
 
@@ -373,7 +376,7 @@ void register_handoff() {
     for (guint32 id = 0; id <= CAN_SFF_MASK; ++id)
         if (can_id != nullptr && dissector_get_uint_handle(can_id, id) == nullptr)
             dissector_add_uint("can.id", id, handle);
-    heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 switch frame",
+    heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 frames",
                        "powerkey_can", proto_powerkey, HEURISTIC_ENABLE);
 }
 
