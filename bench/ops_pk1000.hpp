@@ -247,6 +247,12 @@ inline void pk_decode_all_rows(std::size_t calls) { pk_detail::decode_all(pk_all
 inline void any_pk1000_decode_mixed_log(std::size_t calls) {
     pk_detail::decode_all(pk_mixed_log, calls);
 }
+inline void one_pk1000_decode_mixed_log(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pk_mixed_log, calls, [n](const pc::frame& f) BENCH_INLINE {
+        return powerkey::decode<powerkey::model::pk1000>(f, n);
+    });
+}
 inline void any_pk1000_encode_mixed_log(std::size_t calls) {
     pk_detail::encode_all(pk_mixed_log_messages, calls);
 }
@@ -265,6 +271,7 @@ inline constexpr op pk1000_ops[] = {
     {"pk1000/sdo/encode_response", pk_sdo_response_encode},
     {"pk1000/decode/all_manual_rows", pk_decode_all_rows},
     {"any/pk1000/decode_mixed_log", any_pk1000_decode_mixed_log},
+    {"one/pk1000/decode_mixed_log", one_pk1000_decode_mixed_log},
     {"any/pk1000/encode_mixed_log", any_pk1000_encode_mixed_log, "frame (keypad frames only)"},
 };
 

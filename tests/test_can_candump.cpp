@@ -11,8 +11,7 @@
 namespace {
 using namespace powerkey;
 using can::candump;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
+using namespace powerkey_tests;
 
 struct text_row {
     std::string_view section;

@@ -14,13 +14,7 @@ namespace {
 using namespace powerkey;
 using namespace powerkey::canopen;
 
-using powerkey_tests::bad_row;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
-using powerkey_tests::name_row;
-using powerkey_tests::name_table_is;
-using powerkey_tests::refused_by;
+using namespace powerkey_tests;
 
 struct nmt_row {
     std::string_view section;

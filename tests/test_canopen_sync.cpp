@@ -10,10 +10,7 @@ namespace {
 using namespace powerkey;
 using namespace powerkey::canopen;
 
-using powerkey_tests::bad_row;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::refused_by;
+using namespace powerkey_tests;
 
 constexpr bool sync_both_ways() {
     return encode(sync_message{}) == can::candump("080#") &&

@@ -20,8 +20,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
+using namespace powerkey_tests;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
 // A message shaped like the LED maps, to pin the example of the issue.

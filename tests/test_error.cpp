@@ -9,8 +9,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::name_row;
-using powerkey_tests::name_table_is;
+using namespace powerkey_tests;
 
 constexpr name_row errc_rows[] = {
     {"errors.md", 1, "wrong_id_format"},   {"errors.md", 2, "wrong_id"},

@@ -13,8 +13,7 @@ namespace {
 using namespace powerkey;
 using namespace powerkey::j1939;
 
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
+using namespace powerkey_tests;
 
 struct id_row {
     std::string_view section;

@@ -11,10 +11,7 @@ namespace {
 using namespace powerkey;
 using namespace powerkey::j1939;
 
-using powerkey_tests::bad_row;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::refused_by;
+using namespace powerkey_tests;
 
 // PK1000 49: priority 6, PGN EF00h to the keypad at 21h from the host at 00h.
 static_assert(encode(switch_to_canopen{}) == can::candump("18EF2100#041B8000FFFFFFFF"));

@@ -25,8 +25,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
 // One carrier of a fact: the frame, the model it is decoded for, and what the accessor answers.

@@ -14,18 +14,19 @@
 
 #include <cstddef>
 #include <iterator>
+#include <utility>
 
 #include "codec_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
+#include "si_reference_rows.hpp"
+#include "si_rows.hpp"
 #include "support.hpp"
 
 namespace {
 using namespace powerkey;
 using namespace codec_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 constexpr canopen::node_id keypad = canopen::default_node_id;
 
 static_assert(first_failing(core_rows, round_trips) == std::size(core_rows));
@@ -60,6 +61,25 @@ static_assert(first_failing(core_rows, every_model_round_trips) == std::size(cor
 static_assert(first_failing(pk1000_rows::rows, every_model_round_trips) ==
               std::size(pk1000_rows::rows));
 static_assert(first_failing(pkp_rows::rows, every_model_round_trips) == std::size(pkp_rows::rows));
+
+// decode<M>(f, node), the model known at compile time, answers as decode(f, node, M) for every
+// model and both readings (issue 24: the same rows serve both APIs).
+template <std::size_t... I>
+constexpr bool compile_time_model_agrees(const can::frame& f, canopen::node_id n,
+                                         std::index_sequence<I...>) {
+    return ((decode<static_cast<model>(I)>(f, n) == decode(f, n, static_cast<model>(I)) &&
+             decode<static_cast<model>(I)>(f, n, reading::strict) ==
+                 decode(f, n, static_cast<model>(I), reading::strict)) &&
+            ...);
+}
+template <class Row>
+constexpr bool both_model_apis_agree(const Row& r) {
+    return compile_time_model_agrees(frame_of(r.frame), node_of(r.node),
+                                     std::make_index_sequence<model_count>{});
+}
+static_assert(first_failing(core_rows, both_model_apis_agree<row>) == std::size(core_rows));
+static_assert(first_failing(core_error_rows, both_model_apis_agree<error_row>) ==
+              std::size(core_error_rows));
 
 // A value the optimiser cannot see through, so that the check below runs at run time.
 template <class T>
@@ -107,4 +127,18 @@ TEST_CASE("an abort keeps its direction") {
 // The codec takes the command module as writable without looking: every row of it is.
 TEST_CASE("the codec's compile-time check of the command module, again at run time") {
     CHECK(opaque(&detail::commands_writable)());
+}
+
+TEST_CASE("decode<M> with the model known at compile time answers as decode(f, node, M)") {
+    // Every manual row and every refusal row, through every model, read tolerantly and strictly.
+    check_rows(core_rows, both_model_apis_agree<row>);
+    check_rows(core_error_rows, both_model_apis_agree<error_row>);
+    check_rows(pk1000_rows::rows, both_model_apis_agree<row>);
+    check_rows(pk1000_rows::error_rows, both_model_apis_agree<error_row>);
+    check_rows(pkp_rows::rows, both_model_apis_agree<row>);
+    check_rows(pkp_rows::error_rows, both_model_apis_agree<error_row>);
+    check_rows(si_rows::rows, both_model_apis_agree<row>);
+    check_rows(si_rows::error_rows, both_model_apis_agree<error_row>);
+    check_rows(si_rows::errata_rows, both_model_apis_agree<error_row>);
+    check_rows(si_reference_rows::rows, both_model_apis_agree<row>);
 }

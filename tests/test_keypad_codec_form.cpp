@@ -26,9 +26,7 @@
 namespace {
 using namespace powerkey;
 using namespace codec_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 
 constexpr model_set every = all | si;
 constexpr model_set colour = m1000 | m2600si | m3500mt | m2200si | m2300si | m2400si | m1600si;

@@ -17,9 +17,7 @@
 namespace {
 using namespace powerkey;
 using namespace pk1000_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 constexpr canopen::node_id node = 0x15;
 
 static_assert(first_failing(pk1000_rows::rows, round_trips) == std::size(pk1000_rows::rows));

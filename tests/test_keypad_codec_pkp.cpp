@@ -20,9 +20,7 @@
 namespace {
 using namespace powerkey;
 using namespace pkp_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 constexpr canopen::node_id node = canopen::default_node_id;
 
 static_assert(first_failing(pkp_rows::rows, round_trips) == std::size(pkp_rows::rows));

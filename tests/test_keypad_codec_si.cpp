@@ -21,9 +21,7 @@
 namespace {
 using namespace powerkey;
 using namespace codec_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 using o = object;
 
 // --- every example frame of both manuals ------------------------------------------------------

@@ -16,9 +16,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::first_failing;
-using powerkey_tests::name_row;
-using powerkey_tests::name_table_is;
+using namespace powerkey_tests;
 
 struct command_table_row {
     std::string_view section;

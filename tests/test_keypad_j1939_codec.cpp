@@ -23,9 +23,7 @@
 
 namespace {
 using namespace j1939_rows;
-using powerkey_tests::check_rows;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 namespace can = powerkey::can;
 
 static_assert(powerkey_tests::all_rows_pass<first_failing(pkp1600si_rows, round_trips),

@@ -16,9 +16,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::first_failing;
-using powerkey_tests::name_row;
-using powerkey_tests::name_table_is;
+using namespace powerkey_tests;
 
 // The value kind of the objects whose kind carries more (a plane, a piece of the LED string).
 struct kind_row {

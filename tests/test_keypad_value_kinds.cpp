@@ -25,8 +25,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::first_failing;
-using powerkey_tests::frame_of;
+using namespace powerkey_tests;
 
 // --- filling a message through fields() ----------------------------------------------------------
 

@@ -14,9 +14,7 @@
 
 namespace {
 using namespace powerkey;
-using powerkey_tests::first_failing;
-using powerkey_tests::name_row;
-using powerkey_tests::name_table_is;
+using namespace powerkey_tests;
 
 // --- LED maps ------------------------------------------------------------------------------------
 

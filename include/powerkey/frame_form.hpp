@@ -26,6 +26,12 @@ struct enum_names<frame_form> {
         POWERKEY_FRAME_FORM_LIST(POWERKEY_DETAIL_ENUM_NAME)};
 };
 
+// How decode reads a frame whose length is not the manual's.
+enum class reading : std::uint8_t {
+    tolerant,  // trimmed and padded frames decode, their message's `form` says so (the default)
+    strict,    // only the manual's form: any other length is errc::wrong_length
+};
+
 }  // namespace powerkey
 
 #endif  // POWERKEY_FRAME_FORM_HPP

@@ -209,17 +209,15 @@ public:
     // Scripted keys: press or release key k (1..the model's keys) at t. False for a key the
     // model lacks. A change sends the key state when the keypad is operational and event-driven
     // (PK1000 11, 46: transmission type FEh; PKP 10).
-    constexpr bool press(unsigned k, millis t) noexcept {
+    constexpr bool press(unsigned k, millis t) noexcept { return set_key(k, true, t); }
+    constexpr bool release(unsigned k, millis t) noexcept { return set_key(k, false, t); }
+    constexpr bool set_key(unsigned k, bool pressed, millis t) noexcept {
         if (k < 1 || k > info_->keys) return false;
         key_set s = keys_;
-        s.insert(k);
-        set_keys(s, t);
-        return true;
-    }
-    constexpr bool release(unsigned k, millis t) noexcept {
-        if (k < 1 || k > info_->keys) return false;
-        key_set s = keys_;
-        s.erase(k);
+        if (pressed)
+            s.insert(k);
+        else
+            s.erase(k);
         set_keys(s, t);
         return true;
     }

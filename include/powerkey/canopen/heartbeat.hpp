@@ -37,10 +37,7 @@ namespace powerkey::canopen {
 
 struct heartbeat_message {
     POWERKEY_DETAIL_MESSAGE(heartbeat_message);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("state", self.state);
-    }
+    POWERKEY_DETAIL_FIELDS(f("state", self.state));
     nmt_state state = nmt_state::boot_up;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };

@@ -44,11 +44,7 @@ namespace powerkey::canopen {
 
 struct nmt_message {
     POWERKEY_DETAIL_MESSAGE(nmt_message);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("command", self.command);
-        f("target", self.target);
-    }
+    POWERKEY_DETAIL_FIELDS(f("command", self.command), f("target", self.target));
     nmt_command command = nmt_command::start;
     nmt_target target = all_nodes;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)

@@ -79,13 +79,8 @@ struct expedited_data {
 // Write 1..4 bytes (command 2Fh, 2Bh, 27h, 23h).
 struct sdo_download_request {
     POWERKEY_DETAIL_MESSAGE(sdo_download_request);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-        f("size", self.value.size);
-        f("data", self.value.bytes);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex),
+                           f("size", self.value.size), f("data", self.value.bytes));
     sdo_address address;
     expedited_data value;
 };
@@ -93,21 +88,14 @@ struct sdo_download_request {
 // Read an entry (command 40h).
 struct sdo_upload_request {
     POWERKEY_DETAIL_MESSAGE(sdo_upload_request);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex));
     sdo_address address;
 };
 
 // Ask for the next segment of a segmented upload (60h toggle 0, 70h toggle 1).
 struct sdo_segment_request {
     POWERKEY_DETAIL_MESSAGE(sdo_segment_request);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("toggle", self.toggle);
-    }
+    POWERKEY_DETAIL_FIELDS(f("toggle", self.toggle));
     bool toggle = false;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -117,24 +105,15 @@ struct sdo_segment_request {
 // A write was done (60h).
 struct sdo_download_response {
     POWERKEY_DETAIL_MESSAGE(sdo_download_response);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex));
     sdo_address address;
 };
 
 // The value read, 1..4 bytes (4Fh, 4Bh, 47h, 43h).
 struct sdo_upload_response {
     POWERKEY_DETAIL_MESSAGE(sdo_upload_response);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-        f("size", self.value.size);
-        f("data", self.value.bytes);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex),
+                           f("size", self.value.size), f("data", self.value.bytes));
     sdo_address address;
     expedited_data value;
 };
@@ -143,13 +122,8 @@ struct sdo_upload_response {
 // are then reserved; what they held is kept in `size` so the frame re-encodes unchanged).
 struct sdo_upload_initiate_response {
     POWERKEY_DETAIL_MESSAGE(sdo_upload_initiate_response);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-        f("size_indicated", self.size_indicated);
-        f("size", self.size);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex),
+                           f("size_indicated", self.size_indicated), f("size", self.size));
     sdo_address address;
     bool size_indicated = true;
     std::uint32_t size = 0;
@@ -160,13 +134,8 @@ struct sdo_upload_initiate_response {
 // of which the first 7 - n are data. The unused bytes are kept as received.
 struct sdo_segment_response {
     POWERKEY_DETAIL_MESSAGE(sdo_segment_response);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("toggle", self.toggle);
-        f("unused", self.unused);
-        f("last", self.last);
-        f("data", self.bytes);
-    }
+    POWERKEY_DETAIL_FIELDS(f("toggle", self.toggle), f("unused", self.unused), f("last", self.last),
+                           f("data", self.bytes));
     bool toggle = false;
     segment_unused unused = 0;
     bool last = false;
@@ -234,12 +203,8 @@ namespace powerkey::canopen {
 // Abort transfer (80h), index, sub-index and a 32-bit code.
 struct sdo_abort {
     POWERKEY_DETAIL_MESSAGE(sdo_abort);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("index", self.address.index);
-        f("subindex", self.address.subindex);
-        f("code", self.code);
-    }
+    POWERKEY_DETAIL_FIELDS(f("index", self.address.index), f("subindex", self.address.subindex),
+                           f("code", self.code));
     sdo_address address;
     sdo_abort_code code = sdo_abort_code::general_error;
 };
@@ -249,10 +214,7 @@ struct sdo_abort {
 // Sent by the client (600h + node):
 struct sdo_abort_request {
     POWERKEY_DETAIL_MESSAGE(sdo_abort_request);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        sdo_abort::fields(self.abort, f);
-    }
+    POWERKEY_DETAIL_FIELDS(sdo_abort::fields(self.abort, f));
     sdo_abort abort;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -260,10 +222,7 @@ struct sdo_abort_request {
 // Sent by the keypad (580h + node):
 struct sdo_abort_response {
     POWERKEY_DETAIL_MESSAGE(sdo_abort_response);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        sdo_abort::fields(self.abort, f);
-    }
+    POWERKEY_DETAIL_FIELDS(sdo_abort::fields(self.abort, f));
     sdo_abort abort;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };

@@ -1,9 +1,11 @@
-// powerkey detail: the library's only macros besides its include guards: how much of a decoder
-// the compiler inlines. The decoders are a dispatch (a front, a switch on the function code, one
-// on an SDO value's kind) whose cases are small; inlined into their switch, the common cases need
-// no frame and no registers saved, the rare ones are called out of line (docs/performance.md).
-// Under -Os (firmware) one shared copy of each is smaller, so only POWERKEY_DETAIL_INLINE, the
-// dispatch itself, stays forced there. Compilers other than g++ and clang get no hints.
+// powerkey detail: the speed macros, the only ones that change code rather than write it out:
+// how much of a decoder the compiler inlines. The decoders are a dispatch (a front, a switch on
+// the function code, one on an SDO value's kind) whose cases are small; inlined into their
+// switch, the common cases need no frame and no registers saved, the rare ones are called out of
+// line (docs/performance.md). Under -Os (firmware) one shared copy of each is smaller, so only
+// POWERKEY_DETAIL_INLINE, the dispatch itself, stays forced there, and POWERKEY_DETAIL_SIZE is
+// true: a function written twice for speed is written once. Compilers other than g++ and clang
+// get no hints.
 #ifndef POWERKEY_DETAIL_INLINE_HPP
 #define POWERKEY_DETAIL_INLINE_HPP
 
@@ -15,15 +17,18 @@
 #if defined(__OPTIMIZE_SIZE__)
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
+#define POWERKEY_DETAIL_SIZE true
 #else
 #define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
 #define POWERKEY_DETAIL_COLD [[gnu::noinline]]
+#define POWERKEY_DETAIL_SIZE false
 #endif
 #else
 #define POWERKEY_DETAIL_INLINE
 #define POWERKEY_DETAIL_INLINE_LAMBDA
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
+#define POWERKEY_DETAIL_SIZE false
 #endif
 
 // Tells g++ and clang that `condition` is false here (a row number a key matched is never the

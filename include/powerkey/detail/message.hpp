@@ -1,7 +1,7 @@
 // powerkey detail: what every message struct has and takes from its name: its kind, the struct's
 // name (fields.hpp's kind_of; a J1939 keypad message's with `j1939_` before it, as several share a
 // name with a CANopen message), and member-wise equality. Written once here, so a kind can never
-// differ from its struct's name.
+// differ from its struct's name; and the shape of its fields(self, f), written once.
 #ifndef POWERKEY_DETAIL_MESSAGE_HPP
 #define POWERKEY_DETAIL_MESSAGE_HPP
 
@@ -12,5 +12,14 @@
     friend constexpr bool operator==(const name&, const name&) noexcept = default
 #define POWERKEY_DETAIL_MESSAGE(name) POWERKEY_DETAIL_MESSAGE_KIND(name, name)
 #define POWERKEY_DETAIL_J1939_MESSAGE(name) POWERKEY_DETAIL_MESSAGE_KIND(name, j1939_##name)
+
+// A message's `fields(self, f)` (fields.hpp), from its calls of f in order, comma-separated: each
+// `f("name", self.member)`, or a shared function given self's part and f.
+#define POWERKEY_DETAIL_FIELDS(...)                   \
+    template <class Self, class F>                    \
+    static constexpr void fields(Self& self, F&& f) { \
+        (__VA_ARGS__);                                \
+    }                                                 \
+    static_assert(true, "a use ends with a semicolon")
 
 #endif  // POWERKEY_DETAIL_MESSAGE_HPP

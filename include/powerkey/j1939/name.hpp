@@ -10,6 +10,7 @@
 #define POWERKEY_J1939_NAME_HPP
 
 #include <powerkey/bounded.hpp>
+#include <powerkey/detail/message.hpp>
 #include <powerkey/result.hpp>
 
 #include <cstdint>
@@ -25,18 +26,14 @@ struct vehicle_system_instance_tag;
 struct industry_group_tag;
 
 struct name {
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("identity_number", self.identity_number);
-        f("manufacturer_code", self.manufacturer_code);
-        f("ecu_instance", self.ecu_instance);
-        f("function_instance", self.function_instance);
-        f("function", self.function);
-        f("vehicle_system", self.vehicle_system);
-        f("vehicle_system_instance", self.vehicle_system_instance);
-        f("industry_group", self.industry_group);
-        f("arbitrary_address_capable", self.arbitrary_address_capable);
-    }
+    POWERKEY_DETAIL_FIELDS(f("identity_number", self.identity_number),
+                           f("manufacturer_code", self.manufacturer_code),
+                           f("ecu_instance", self.ecu_instance),
+                           f("function_instance", self.function_instance),
+                           f("function", self.function), f("vehicle_system", self.vehicle_system),
+                           f("vehicle_system_instance", self.vehicle_system_instance),
+                           f("industry_group", self.industry_group),
+                           f("arbitrary_address_capable", self.arbitrary_address_capable));
     bounded<identity_number_tag, std::uint32_t, 0, 0x1F'FFFF> identity_number = 0;
     bounded<manufacturer_code_tag, std::uint16_t, 0, 0x7FF> manufacturer_code = 0;
     bounded<ecu_instance_tag, std::uint8_t, 0, 7> ecu_instance = 0;

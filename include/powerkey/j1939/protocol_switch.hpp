@@ -24,12 +24,8 @@ inline constexpr std::array<std::uint8_t, 8> switch_to_canopen_data = {0x04, 0x1
 
 struct switch_to_canopen {
     POWERKEY_DETAIL_J1939_MESSAGE(switch_to_canopen);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("priority", self.priority);
-        f("destination", self.destination);
-        f("source", self.source);
-    }
+    POWERKEY_DETAIL_FIELDS(f("priority", self.priority), f("destination", self.destination),
+                           f("source", self.source));
     j1939::priority priority = 6;
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;

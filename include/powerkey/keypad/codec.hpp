@@ -51,9 +51,19 @@ constexpr result<message> answer(const T& v) noexcept {
     return result<message>(std::in_place, std::in_place_type<T>, v);
 }
 
-template <class T>
-constexpr result<message> lift(const result<T>& r) noexcept {
-    if (!r) return r.error();
+// A frame whose length is not the one its identifier has in the manuals goes from the length test
+// that finds it straight to `misfit`: read strictly, wrong_length; tolerantly, read again out of
+// line (reread, below). The reading is a template argument, so a frame of the manual's length
+// pays nothing for the tolerance.
+template <reading how>
+constexpr result<message> misfit(const can::frame& f, const model_layout& keypad) noexcept;
+
+// The answer of a decoder of the CiA 301 or J1939 layer (NMT, SYNC, the switch back), its
+// wrong_length read again as every other frame's.
+template <reading how, class T>
+constexpr result<message> lift(const result<T>& r, const can::frame& f,
+                               const model_layout& keypad) noexcept {
+    if (!r) return r.error() == errc::wrong_length ? misfit<how>(f, keypad) : r.error();
     return answer(*r);
 }
 
@@ -330,8 +340,9 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_request(canopen::sdo_word w
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address); unknown_command (an access the row lacks); then value_message's or
 // read_command's.
+template <reading how>
 constexpr result<message> decode_request(const model_layout& keypad, const can::frame& f) noexcept {
-    if (f.size() != 8) return errc::wrong_length;
+    if (f.size() != 8) return misfit<how>(f, keypad);
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_request<result<message>>(
         w,
@@ -373,8 +384,9 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& k
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address, or a segmented upload of an object that is not a string); unknown_command (an
 // access the row lacks); then value_message's.
+template <reading how>
 constexpr result<message> decode_reply(const model_layout& keypad, const can::frame& f) noexcept {
-    if (f.size() != 8) return errc::wrong_length;
+    if (f.size() != 8) return misfit<how>(f, keypad);
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_response<result<message>>(
         w,
@@ -401,19 +413,20 @@ constexpr result<message> decode_reply(const model_layout& keypad, const can::fr
 // node's): only the length and data are checked. Each answer is built in the caller's result.
 // No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
 // (data_le) after its length check, the key state's 5 bytes as a word and a byte.
+template <reading how>
 POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& keypad,
                                                             std::uint32_t code,
                                                             const can::frame& f) noexcept {
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
-            if (f.size() != 5) return errc::wrong_length;
+            if (f.size() != 5) return misfit<how>(f, keypad);
             const auto w = static_cast<std::uint32_t>(load_le<4>(f.bytes(), 0));
             if ((w & keypad.not_keys) != 0) return errc::reserved_not_zero;
             return answer(key_state{key_set::from_mask(w), f[4]});
         }
         case 0x4:    // RPDO1 LEDs on
         case 0x6: {  // RPDO2 LEDs blinking
-            if (f.size() != 8) return errc::wrong_length;
+            if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
             // unpack_leds(keypad, v, keypad.planes) with the used bits read from the row. Blue
             // shifted twice: 2 x 32 for the two-plane PK1000, where the used-bit test left no blue
@@ -429,7 +442,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         case 0x5:    // TPDO2 encoder 1
         case 0x7: {  // TPDO3 encoder 2
             if (!keypad.encoders) return errc::wrong_id;
-            if (f.size() != 8) return errc::wrong_length;
+            if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
             if ((v >> 32) != 0) return errc::reserved_not_zero;
             const auto top = static_cast<std::uint8_t>(v >> 24);
@@ -440,7 +453,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         }
         case 0x9: {  // TPDO4 analog inputs
             if (!keypad.encoders) return errc::wrong_id;
-            if (f.size() != 8) return errc::wrong_length;
+            if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
             // In 32-bit halves: no 64-bit shift by a variable (a library call on a 32-bit core).
             const std::uint32_t half[2] = {static_cast<std::uint32_t>(v),
@@ -455,13 +468,13 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         }
         case 0x8: {  // RPDO3: the encoder rings, or the LED brightness
             if (keypad.encoder_leds_pdo) {
-                if (f.size() != 8) return errc::wrong_length;
+                if (f.size() != 8) return misfit<how>(f, keypad);
                 const std::uint64_t v = f.data_le();
                 if ((v >> 32) != 0) return errc::reserved_not_zero;
                 return answer(encoder_leds{led_set::from_mask(v)});
             }
             if (!keypad.brightness_pdo) return errc::wrong_id;
-            if (f.size() != 8) return errc::wrong_length;
+            if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
             if ((v >> 8) != 0) return errc::reserved_not_zero;
             if (v > level::max) return errc::value_out_of_range;
@@ -469,7 +482,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         }
         case 0xA: {  // RPDO4: backlight level and colour
             if (!keypad.backlight_pdo) return errc::wrong_id;
-            if (f.size() != 8) return errc::wrong_length;
+            if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
             if ((v >> 16) != 0 || (!keypad.backlight_colour && (v >> 8) != 0))
                 return errc::reserved_not_zero;
@@ -489,11 +502,15 @@ constexpr result<message> decode_j1939(model m, const can::frame& f,
     if (!r) return r.error();
     return to_message(*r);
 }
-// The same at any address, from the CANopen front's default case. Out of line, and given only
-// what the front already holds (the layout): no CANopen frame pays for a J1939 argument.
+// The same at any address, from the front's default case, its wrong_length read again as every
+// other frame's. Out of line, and given only what the front already holds (the layout): no
+// CANopen frame pays for a J1939 argument.
+template <reading how>
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
-    return decode_j1939(keypad.id, f, std::nullopt);
+    const auto r = decode_j1939(keypad.id, f, std::nullopt);
+    if (!r && r.error() == errc::wrong_length) return misfit<how>(f, keypad);
+    return r;
 }
 
 // A J1939 alternative of message (encode hands it to the J1939 codec).
@@ -529,7 +546,7 @@ POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
                 if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
                 return j1939::encode(m, manual, address);
             } else {
-                return errc::wrong_id_format;  // not reached: is_j1939_message chose this path
+                return errc::wrong_id_format;  // not reached: encode chose this path by the index
             }
         },
         msg);
@@ -546,10 +563,12 @@ constexpr std::uint8_t bytes_of(std::uint64_t mask) noexcept {
 // How many leading bytes of msg's frame may carry anything on this keypad: every byte after them
 // is 00h in every valid frame of its kind (a byte the manual marks "not used", reserved bits, the
 // high bytes of a value whose range never reaches them, the bytes past an SDO's size). A frame
-// cut after them says all that its manual form says.
-constexpr std::uint8_t used_length(const model_layout& keypad, const message& msg) noexcept {
+// cut after them says all that its manual form says. `printed` is msg's frame in the manual's
+// form: an SDO value's row and a command's parameters are looked up as the decoder found them.
+constexpr std::uint8_t used_length(const model_layout& keypad, const message& msg,
+                                   const can::frame& printed) noexcept {
     return std::visit(
-        [&keypad](const auto& v) -> std::uint8_t {
+        [&keypad, &printed](const auto& v) -> std::uint8_t {
             using T = std::remove_cvref_t<decltype(v)>;
             if constexpr (std::is_same_v<T, canopen::sync_message>) {
                 return 0;
@@ -572,16 +591,18 @@ constexpr std::uint8_t used_length(const model_layout& keypad, const message& ms
                 return 4;  // the specifier and the address
             } else if constexpr (std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply>) {
-                const codec_row& r = codec_rows[find_codec_row(keypad.dictionary, v.object)];
+                const auto key = canopen::sdo_word::of(printed).key();
+                const codec_row& r = codec_rows[find_codec_row(keypad.dictionary, key)];
                 const std::uint8_t size = row_size(keypad, r, v.value.size);
                 const std::uint32_t bits =
                     visit_kind(r.kind, [&](auto k) { return decltype(k)::used_bits(keypad, r); });
                 return static_cast<std::uint8_t>(4 + bytes_of(bits & largest_of_size[size & 7u]));
             } else if constexpr (std::is_same_v<T, command>) {
-                const auto row = find_command(static_cast<std::uint8_t>(v.code));
-                if (!row) return 8;
-                return static_cast<std::uint8_t>(5 + (row->p1 != command_param::none ? 1 : 0) +
-                                                 (row->p2 != command_param::none ? 1 : 0));
+                const std::uint8_t pair = command_shape_index[static_cast<std::uint8_t>(v.code)];
+                if (pair == 0) return 8;
+                const command_shape& shape = command_shapes[pair - 1u];
+                return static_cast<std::uint8_t>(5 + (shape.p1 != command_param::none ? 1 : 0) +
+                                                 (shape.p2 != command_param::none ? 1 : 0));
             } else {
                 return 8;  // analog inputs, segments, aborts, the J1939 switch: every byte
             }
@@ -677,9 +698,99 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
         msg);
 }
 
+// The front. Every length test sends a frame of another length to misfit.
+template <reading how>
+POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, canopen::node_id node,
+                                                        const model_layout& keypad) noexcept {
+    // The same classification as canopen::classify, written into the dispatch (every frame
+    // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
+    // function code: rotated right by 7, the function code alone. Any other frame rotates past
+    // the 16 codes (node bits set, or a 29-bit frame's bit 31), so one bounds test of the jump
+    // table sorts out every frame that is not this node's.
+    const std::uint32_t id = f.id_word();
+    const std::uint32_t code = std::rotr(id - node.value(), 7);
+    // One jump table: each PDO case inlines its own body (decode_pdo of a constant code).
+    switch (code) {
+        case 0x0:  // the node id as a COB-ID
+        case 0x1:  // EMCY
+        case 0x2:  // TIME
+        case 0xD:
+        case 0xF: return errc::wrong_id;
+        case 0x3: return decode_pdo<how>(keypad, 0x3, f);
+        case 0x4:  // LEDs on and blinking: one body (smaller; the kind is one test at its end)
+        case 0x6: return decode_pdo<how>(keypad, code, f);
+        case 0x5: return decode_pdo<how>(keypad, 0x5, f);
+        case 0x7: return decode_pdo<how>(keypad, 0x7, f);
+        case 0x8: return decode_pdo<how>(keypad, 0x8, f);
+        case 0x9: return decode_pdo<how>(keypad, 0x9, f);
+        case 0xA: return decode_pdo<how>(keypad, 0xA, f);
+        case 0xB: return decode_reply<how>(keypad, f);
+        case 0xC: return decode_request<how>(keypad, f);
+        case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
+            if (f.size() != 1) return misfit<how>(f, keypad);
+            if (!canopen::is_heartbeat_state(f[0])) return errc::value_out_of_range;
+            return answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
+        }
+        default:
+            if (f.is_extended()) {
+                // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
+                if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
+                return decode_extended<how>(keypad, f);
+            }
+            // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
+            if (id == canopen::nmt_cob_id.value())
+                return lift<how>(canopen::decode_nmt(f), f, keypad);
+            if (id == canopen::sync_cob_id.value())
+                return lift<how>(canopen::decode_sync(f), f, keypad);
+            return errc::wrong_id;
+    }
+}
+
+// f, whose length is not the one its identifier has in the manuals, at that length (the one at
+// which the strict decoder does not say wrong_length): trimmed when f is shorter and every byte it
+// lacks is one its kind leaves unused (used_length), padded when f is longer and every extra byte
+// is 00h. The message says which. A padded frame whose manual form is refused keeps that refusal
+// (every byte is there); anything else stays wrong_length. Out of line: frames of the manual's
+// length never come here. It reads with the strict decoder, so nothing here recurses. The node is
+// the frame's own: a PDO, SDO or heartbeat comes with this node's COB-ID, and NMT, SYNC and
+// 29-bit frames read the same for every node.
+POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
+                                                      const model_layout& keypad) noexcept {
+    const std::uint32_t own = f.is_extended() ? 0 : f.id_word() & 0x7F;
+    const auto node = *canopen::node_id::make(own == 0 ? 1 : own);
+    const std::uint8_t n = f.size();
+    for (std::uint8_t k = 0; k <= 8; ++k) {
+        if (k == n) continue;
+        const can::frame printed = with_length(f, k);
+        const auto r = decode_at<reading::strict>(printed, node, keypad);
+        if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
+        for (std::uint8_t i = k; i < n; ++i)
+            if (f[i] != 0) return errc::wrong_length;
+        if (!r) return k < n ? r : result<message>(errc::wrong_length);
+        if (k > n) {
+            if (n < used_length(keypad, *r, printed)) return errc::wrong_length;
+            return with_form(*r, frame_form::trimmed);
+        }
+        return with_form(*r, frame_form::padded);
+    }
+    return errc::wrong_length;
+}
+
+template <reading how>
+constexpr result<message> misfit(const can::frame& f, const model_layout& keypad) noexcept {
+    if constexpr (how == reading::strict)
+        return errc::wrong_length;
+    else
+        return reread(f, keypad);
+}
 }  // namespace detail
 
-// The errors of decode, for a frame in the manual's form (decode_printed below):
+// Any frame of keypad `node` of model `m`. A frame shorter than the manual's form whose missing
+// bytes are all unused (the manual's "not used" bytes, reserved bits, value bytes the object's
+// range never sets, bytes past the SDO's size), or longer with extra bytes all 00h, decodes as its
+// manual form with `form` trimmed or padded; `reading::strict` refuses them with wrong_length.
+// A frame of the manual's length pays nothing for the tolerance: the other lengths are read again
+// out of line (detail::reread). Errors:
 //   wrong_id            another node's COB-ID, a function the model does not use
 //   (a 29-bit frame)    j1939::decode's (keypad/j1939_codec.hpp): wrong_id for a PGN the keypads
 //                       do not use, undocumented for a frame no source shows on the model, ...
@@ -695,103 +806,34 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
 //                       size, reserved bits of COB-IDs and of the PDOs
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
-namespace detail {
-// The front: f in the manual's form only (decode's strict reading).
-POWERKEY_DETAIL_INLINE constexpr result<message> decode_printed(const can::frame& f,
-                                                                canopen::node_id node,
-                                                                model m) noexcept {
-    if (!detail::is_model(m)) return errc::value_out_of_range;
-    const detail::model_layout& keypad = detail::layout(m);
-    // The same classification as canopen::classify, written into the dispatch (every frame
-    // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
-    // function code: rotated right by 7, the function code alone. Any other frame rotates past
-    // the 16 codes (node bits set, or a 29-bit frame's bit 31), so one bounds test of the jump
-    // table sorts out every frame that is not this node's.
-    const std::uint32_t id = f.id_word();
-    const std::uint32_t code = std::rotr(id - node.value(), 7);
-    // One jump table: each PDO case inlines its own body (decode_pdo of a constant code).
-    switch (code) {
-        case 0x0:  // the node id as a COB-ID
-        case 0x1:  // EMCY
-        case 0x2:  // TIME
-        case 0xD:
-        case 0xF: return errc::wrong_id;
-        case 0x3: return detail::decode_pdo(keypad, 0x3, f);
-        case 0x4:  // LEDs on and blinking: one body (smaller; the kind is one test at its end)
-        case 0x6: return detail::decode_pdo(keypad, code, f);
-        case 0x5: return detail::decode_pdo(keypad, 0x5, f);
-        case 0x7: return detail::decode_pdo(keypad, 0x7, f);
-        case 0x8: return detail::decode_pdo(keypad, 0x8, f);
-        case 0x9: return detail::decode_pdo(keypad, 0x9, f);
-        case 0xA: return detail::decode_pdo(keypad, 0xA, f);
-        case 0xB: return detail::decode_reply(keypad, f);
-        case 0xC: return detail::decode_request(keypad, f);
-        case 0xE: {  // heartbeat (canopen::decode_heartbeat, the identifier known)
-            if (f.size() != 1) return errc::wrong_length;
-            if (!canopen::is_heartbeat_state(f[0])) return errc::value_out_of_range;
-            return detail::answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
-        }
-        default:
-            if (f.is_extended()) {
-                // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
-                if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
-                return detail::decode_extended(keypad, f);
-            }
-            // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
-            if (id == canopen::nmt_cob_id.value()) return detail::lift(canopen::decode_nmt(f));
-            if (id == canopen::sync_cob_id.value()) return detail::lift(canopen::decode_sync(f));
-            return errc::wrong_id;
-    }
-}
-
-// f, which decode_printed refused with wrong_length, at the one length that its identifier has
-// in the manuals: trimmed when f is shorter and every byte it lacks is one its kind leaves unused
-// (used_length), padded when f is longer and every extra byte is 00h. The message says which.
-// A padded frame whose manual form is refused keeps that refusal (every byte is there); anything
-// else stays wrong_length. Out of line: frames of the manual's length never come here.
-POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f, canopen::node_id node,
-                                                      model m) noexcept {
-    const std::uint8_t n = f.size();
-    for (std::uint8_t k = 0; k <= 8; ++k) {
-        if (k == n) continue;
-        const auto r = decode_printed(with_length(f, k), node, m);
-        if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
-        for (std::uint8_t i = k; i < n; ++i)
-            if (f[i] != 0) return errc::wrong_length;
-        if (!r) return k < n ? r : result<message>(errc::wrong_length);
-        if (k > n) {
-            if (n < used_length(layout(m), *r)) return errc::wrong_length;
-            return with_form(*r, frame_form::trimmed);
-        }
-        return with_form(*r, frame_form::padded);
-    }
-    return errc::wrong_length;
-}
-}  // namespace detail
-
-// How decode reads a frame whose length is not the manual's (docs/decoder.md).
-enum class reading : std::uint8_t {
-    tolerant,  // trimmed and padded frames decode, their message's `form` says so (the default)
-    strict,    // only the manual's form: any other length is errc::wrong_length
-};
-
-// Any frame of keypad `node` of model `m`. A frame shorter than the manual's form whose missing
-// bytes are all unused (the manual's "not used" bytes, reserved bits, value bytes the object's
-// range never sets, bytes past the SDO's size), or longer with extra bytes all 00h, decodes as its
-// manual form with `form` trimmed or padded; `reading::strict` refuses them with wrong_length.
-// Errors: those of the manual's form, below. A frame of the manual's length pays nothing for the
-// tolerance: the other lengths are read again out of line (detail::reread).
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
     const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
-    result<message> r = detail::decode_printed(f, node, m);
-    if (!r && r.error() == errc::wrong_length && how == reading::tolerant) [[unlikely]]
-        r = detail::reread(f, node, m);
-    return r;
+    if (!detail::is_model(m)) return errc::value_out_of_range;
+    const detail::model_layout& keypad = detail::layout(m);
+    if (how == reading::strict || POWERKEY_DETAIL_SIZE) {
+        // Under -Os one decoder, the strict one, serves both readings (the tolerant one would be a
+        // second copy): a frame of the manual's length then pays one test of its result.
+        const auto r = detail::decode_at<reading::strict>(f, node, keypad);
+        if (how == reading::strict || r || r.error() != errc::wrong_length) return r;
+        return detail::reread(f, keypad);
+    }
+    return detail::decode_at<reading::tolerant>(f, node, keypad);
 }
 
-// The same, with the J1939 frames narrowed to the keypad at `address` (j1939::decode's
-// `keypad`: its own frames from it, commands to it; nullopt for any address). A J1939 frame has
-// one length, 8 bytes: the tolerant reading finds no other form for it.
+// decode for a keypad whose model is known when the program is built: decode<model::pk1000>(f,
+// node). The model is a constant, so every test of its row folds away and the cases it never
+// has (another model's PDOs and objects) are not in the program. Same results as decode(f, node,
+// M, how) for every frame.
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
+    const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    return decode(f, node, M, how);
+}
+
+// decode with the J1939 frames narrowed to the keypad at `address` (j1939::decode's `keypad`: its
+// own frames from it, commands to it; nullopt for any address). A J1939 frame has one length,
+// 8 bytes: the tolerant reading finds no other form for it.
 [[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node, model m,
                                                j1939::keypad_address address,
                                                reading how = reading::tolerant) noexcept {
@@ -814,7 +856,7 @@ enum class reading : std::uint8_t {
         return detail::encode_j1939(m, msg, std::nullopt);
     const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
-    const auto back = detail::decode_printed(*f, node, m);
+    const auto back = detail::decode_at<reading::strict>(*f, node, detail::layout(m));
     if (!back) return back.error();
     if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;

@@ -64,13 +64,8 @@ constexpr void route_fields(Self& self, F& f) {
 // (28h), to the destination set by 6Eh (FFh by default).
 struct key_contact {
     POWERKEY_DETAIL_J1939_MESSAGE(key_contact);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("key", self.key);
-        f("pressed", self.pressed);
-        f("identifier", self.identifier);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key),
+                           f("pressed", self.pressed), f("identifier", self.identifier));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -83,13 +78,8 @@ struct key_contact {
 // Bits above the model's keys are 0.
 struct heartbeat {
     POWERKEY_DETAIL_J1939_MESSAGE(heartbeat);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("counter", self.counter);
-        f("keys", self.keys);
-        f("identifier", self.identifier);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("counter", self.counter),
+                           f("keys", self.keys), f("identifier", self.identifier));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -102,11 +92,7 @@ struct heartbeat {
 // Each byte is 20h..7Eh or 00h, and only 00h follows a 00h.
 struct software_revision {
     POWERKEY_DETAIL_J1939_MESSAGE(software_revision);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("bytes", self.bytes);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("bytes", self.bytes));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -124,14 +110,8 @@ struct software_revision {
 // (no 04 1B header; the same identifier as the keypad's other frames).
 struct led_ack {
     POWERKEY_DETAIL_J1939_MESSAGE(led_ack);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("key", self.key);
-        f("mode", self.mode);
-        f("colour", self.colour);
-        f("secondary", self.secondary);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("mode", self.mode),
+                           f("colour", self.colour), f("secondary", self.secondary));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -146,12 +126,7 @@ struct led_ack {
 // The code repeats the LED command's byte 4; its table is in no source.
 struct led_ack_code {
     POWERKEY_DETAIL_J1939_MESSAGE(led_ack_code);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("key", self.key);
-        f("code", self.code);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("code", self.code));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -162,11 +137,7 @@ struct led_ack_code {
 // Address claimed (PGN EE00h, section 20): the NAME in the 8 data bytes, to the global address.
 struct address_claimed {
     POWERKEY_DETAIL_J1939_MESSAGE(address_claimed);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        j1939::name::fields(self.name, f);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), j1939::name::fields(self.name, f));
     j1939::priority priority = 6;
     std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
@@ -180,14 +151,9 @@ struct address_claimed {
 //   04 1B 01 | LED | colour | state | secondary colour (alternate blink) | FFh
 struct set_led {
     POWERKEY_DETAIL_J1939_MESSAGE(set_led);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("key", self.key);
-        f("colour", self.colour);
-        f("mode", self.mode);
-        f("secondary", self.secondary);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key),
+                           f("colour", self.colour), f("mode", self.mode),
+                           f("secondary", self.secondary));
     j1939::priority priority = 6;
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
@@ -201,12 +167,7 @@ struct set_led {
 //   04 1B 01 | LED | code | FF FF FF
 struct set_led_code {
     POWERKEY_DETAIL_J1939_MESSAGE(set_led_code);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::route_fields(self, f);
-        f("key", self.key);
-        f("code", self.code);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("code", self.code));
     j1939::priority priority = 6;
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;

@@ -49,11 +49,7 @@ namespace powerkey {
 // PK1000 section 11, PKP section 10: bytes 0..1 keys, 2..3 00h, 4 the tick.
 struct key_state {
     POWERKEY_DETAIL_MESSAGE(key_state);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("keys", self.keys);
-        f("tick", self.tick);
-    }
+    POWERKEY_DETAIL_FIELDS(f("keys", self.keys), f("tick", self.tick));
     key_set keys;
     std::uint8_t tick = 0;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
@@ -62,10 +58,7 @@ struct key_state {
 // RPDO1 200h + node, host -> keypad: which LEDs are on (PK1000 section 12, PKP section 11).
 struct led_on {
     POWERKEY_DETAIL_MESSAGE(led_on);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::map_fields(self.map, f);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::map_fields(self.map, f));
     leds map;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -73,10 +66,7 @@ struct led_on {
 // RPDO2 300h + node: which LEDs blink; on and blink together blink alternately (PK1000 13, PKP 12).
 struct led_blink {
     POWERKEY_DETAIL_MESSAGE(led_blink);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        detail::map_fields(self.map, f);
-    }
+    POWERKEY_DETAIL_FIELDS(detail::map_fields(self.map, f));
     leds map;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -84,10 +74,7 @@ struct led_blink {
 // RPDO3 400h + node: LED brightness until power off (PK1000 section 14): level | 00h x 7.
 struct led_brightness {
     POWERKEY_DETAIL_MESSAGE(led_brightness);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("level", self.level);
-    }
+    POWERKEY_DETAIL_FIELDS(f("level", self.level));
     powerkey::level level = 0x3F;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -96,11 +83,7 @@ struct led_brightness {
 // level | colour (00h keeps the stored colour) | 00h x 6.
 struct backlight {
     POWERKEY_DETAIL_MESSAGE(backlight);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("level", self.level);
-        f("colour", self.colour);
-    }
+    POWERKEY_DETAIL_FIELDS(f("level", self.level), f("colour", self.colour));
     powerkey::level level = 0;
     backlight_colour colour = backlight_colour::keep;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
@@ -111,14 +94,8 @@ struct backlight {
 //   TOP (00h none, 02h..10h) | 00h x 4
 struct encoder_state {
     POWERKEY_DETAIL_MESSAGE(encoder_state);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("encoder", self.encoder);
-        f("counterclockwise", self.counterclockwise);
-        f("ticks", self.ticks);
-        f("counter", self.counter);
-        f("top", self.top);
-    }
+    POWERKEY_DETAIL_FIELDS(f("encoder", self.encoder), f("counterclockwise", self.counterclockwise),
+                           f("ticks", self.ticks), f("counter", self.counter), f("top", self.top));
     std::uint8_t encoder = 1;  // 1 (TPDO2) or 2 (TPDO3)
     bool counterclockwise = false;
     std::uint8_t ticks = 0;     // 0..127 since the last message
@@ -131,13 +108,8 @@ struct encoder_state {
 // 0000h..01F4h in units of 10 mV. The fields are in millivolts (0..5000, multiples of 10).
 struct analog_inputs {
     POWERKEY_DETAIL_MESSAGE(analog_inputs);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("in0_mv", self.mv[0]);
-        f("in1_mv", self.mv[1]);
-        f("in2_mv", self.mv[2]);
-        f("in3_mv", self.mv[3]);
-    }
+    POWERKEY_DETAIL_FIELDS(f("in0_mv", self.mv[0]), f("in1_mv", self.mv[1]),
+                           f("in2_mv", self.mv[2]), f("in3_mv", self.mv[3]));
     std::array<std::uint16_t, 4> mv{};
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -146,10 +118,7 @@ struct analog_inputs {
 // 17..32 encoder 2, as a 32-bit string in bytes 0..3 | 00h x 4.
 struct encoder_leds {
     POWERKEY_DETAIL_MESSAGE(encoder_leds);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("leds", self.leds);
-    }
+    POWERKEY_DETAIL_FIELDS(f("leds", self.leds));
     led_set leds;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -159,10 +128,7 @@ struct encoder_leds {
 // Host -> keypad, 600h + node: read an object (upload request 40h).
 struct sdo_read {
     POWERKEY_DETAIL_MESSAGE(sdo_read);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("object", self.object);
-    }
+    POWERKEY_DETAIL_FIELDS(f("object", self.object));
     powerkey::object object = powerkey::object::keys;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
@@ -170,11 +136,7 @@ struct sdo_read {
 // Keypad -> host, 580h + node: the value read (expedited upload response 43h/47h/4Bh/4Fh).
 struct sdo_read_reply {
     POWERKEY_DETAIL_MESSAGE(sdo_read_reply);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("object", self.object);
-        value_fields(self.object, self.value, f);
-    }
+    POWERKEY_DETAIL_FIELDS(f("object", self.object), value_fields(self.object, self.value, f));
     powerkey::object object = powerkey::object::keys;
     object_value value;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
@@ -183,11 +145,7 @@ struct sdo_read_reply {
 // Host -> keypad, 600h + node: write an object (expedited download 23h/27h/2Bh/2Fh).
 struct sdo_write {
     POWERKEY_DETAIL_MESSAGE(sdo_write);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("object", self.object);
-        value_fields(self.object, self.value, f);
-    }
+    POWERKEY_DETAIL_FIELDS(f("object", self.object), value_fields(self.object, self.value, f));
     powerkey::object object = powerkey::object::led_brightness;
     object_value value;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
@@ -196,10 +154,7 @@ struct sdo_write {
 // Keypad -> host, 580h + node: a write was done (60h); the manuals' "command accepted".
 struct sdo_write_reply {
     POWERKEY_DETAIL_MESSAGE(sdo_write_reply);
-    template <class Self, class F>
-    static constexpr void fields(Self& self, F&& f) {
-        f("object", self.object);
-    }
+    POWERKEY_DETAIL_FIELDS(f("object", self.object));
     powerkey::object object = powerkey::object::led_brightness;
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
