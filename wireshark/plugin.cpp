@@ -378,6 +378,13 @@ void register_handoff() {
             dissector_add_uint("can.id", id, handle);
     heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 frames",
                        "powerkey_can", proto_powerkey, HEURISTIC_ENABLE);
+    // With "Decode As" J1939 (can.subdissector), Wireshark's own J1939 dissector takes every
+    // 29-bit frame before the heuristics, and hands each PGN's data on through its "j1939.pgn"
+    // table (with the CAN frame's info): the plugin sits there for the keypads' PGNs (EF00h,
+    // A700h, A600h, EE00h), so the J1939 tree and the keypad's show together.
+    if (find_dissector_table("j1939.pgn") != nullptr)
+        for (const guint32 pgn : {0xEF00u, 0xA700u, 0xA600u, 0xEE00u})
+            dissector_add_uint("j1939.pgn", pgn, handle);
 }
 
 }  // namespace

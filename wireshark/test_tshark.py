@@ -283,6 +283,31 @@ def compare_log(run, log, model):
             fail(at, f"Info column {info!r}, the tool writes {tool_text(text)!r}")
 
 
+def check_beside_j1939(run):
+    """With Decode As J1939, Wireshark's J1939 dissector and the plugin both dissect the keypads'
+    J1939 frames: the J1939 PGN and the keypad's kind on every frame of the switch log that the
+    tool reads as a J1939 message."""
+    log = os.path.join(run.args.source, "examples", "logs", "switch-pkp2600si.log")
+    pcap = run.pcap(log, "beside-j1939")
+    rows = run.tshark("-r", pcap, "-o", "powerkey.model:pkp2600si", "-d", "can.subdissector,j1939",
+                      "-T", "fields", "-e", "j1939.pgn", "-e", "powerkey.kind").splitlines()
+    tool = [json.loads(l) for l in run.tool("decode", "--model", "pkp2600si", "--json", log)]
+    if len(rows) != len(tool):
+        fail("beside J1939", f"{len(rows)} frames in tshark, {len(tool)} in the tool")
+        return
+    j1939 = 0
+    for n, (row, j) in enumerate(zip(rows, tool), 1):
+        if not j["ext"]:
+            continue
+        j1939 += 1
+        pgn, kind = (row.split("\t") + [""])[:2]
+        if pgn != str(j["pgn"]) or kind != j.get("kind"):
+            fail(f"beside J1939 frame {n}", f"j1939.pgn {pgn!r}, powerkey.kind {kind!r}; the "
+                                            f"tool says PGN {j['pgn']}, {j.get('kind')}")
+    if j1939 == 0:
+        fail("beside J1939", "no J1939 frame in the switch log")
+
+
 def check_other_frames(run):
     """Frames the keypad does not own stay with the generic dissectors."""
     log = os.path.join(run.args.work, "other.log")
@@ -434,6 +459,7 @@ def main():
     for log in logs:
         compare_log(run, log, model_of_log(log, models))
     check_other_frames(run)
+    check_beside_j1939(run)
     check_node_preference(run)
     check_escaping(run)
     check_filters(run)
