@@ -7,6 +7,11 @@
 // frames for another node id (after a node-id change); where the next row is for another node
 // than the keypad has at that point, the log moves the keypad there with the model's own node-id
 // change, marked "not in the manual", so that the log reads as one session.
+// Two more kinds of log, from the J1939 rows (tests/j1939_rows.hpp):
+//   sample_logs j1939-pkp1600si    every example frame of the model's J1939 manual, in order
+//   sample_logs switch-pkp2600si   a PKP-2600-SI crossing the switch both ways: CANopen, the write
+//                                  of 20FFh, J1939 traffic with an address change, 80h, CANopen
+#include "../tests/j1939_rows.hpp"
 #include "../tests/pk1000_rows.hpp"
 #include "../tests/pkp_rows.hpp"
 #include "../tests/si_reference_rows.hpp"
@@ -14,9 +19,11 @@
 
 #include <powerkey/can/candump.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/names.hpp>
 #include <powerkey/session.hpp>
 
 #include <cstdio>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -68,12 +75,67 @@ struct writer {
     }
 };
 
+// A J1939 session of a model with a complete J1939 manual: its rows in the manual's order.
+int j1939_log(model m) {
+    const auto rows = m == model::pkp1600si
+                          ? std::span<const j1939_rows::row>(j1939_rows::pkp1600si_rows)
+                          : std::span<const j1939_rows::row>(j1939_rows::pkp2600si_rows);
+    writer w{m, session<256>(m, canopen::default_node_id), 0, {}};
+    std::printf(
+        "# powerkey sample log: %s in J1939, every example frame of its J1939 manual in order\n"
+        "# from %s (tests/j1939_rows.hpp)\n",
+        std::string(to_string(m)).c_str(),
+        m == model::pkp1600si ? "PKP1600SI_J1939_UM_rev1.0" : "PKP2600SI_J1939_UM_rev1.5");
+    for (const auto& r : rows) {
+        if (r.section != w.last_section) {
+            std::printf("# %.*s\n", static_cast<int>(r.section.size()), r.section.data());
+            w.last_section = r.section;
+        }
+        w.text(r.frame);
+    }
+    return 0;
+}
+
+// A PKP-2600-SI that crosses the switch both ways. Every frame is a manual's (the PKP2600SI
+// CANopen and J1939 manuals, sections named) but the two after the address change, which the
+// manuals print for the default address only.
+int switch_log() {
+    const model m = model::pkp2600si;
+    writer w{m, session<256>(m, canopen::default_node_id), 0, {}};
+    const auto say = [](const char* t) { std::printf("# %s\n", t); };
+    std::printf(
+        "# powerkey sample log: pkp2600si crossing the protocol switch both ways, node 15h\n"
+        "# and J1939 address 21h (PKP2600SI CANopen and J1939 manuals)\n");
+    say("CANopen: boot-up (8), start (4), key 4 pressed and released (11)");
+    for (const auto* t : {"715#00", "000#0115", "195#080000002A", "195#000000002A"}) w.text(t);
+    say("CANopen 47 (E-SI-7 corrected): the switch to J1939");
+    w.text("615#2BFF200101000000");
+    say("J1939 20: the address claim; 6: key 1 pressed and released; 7a: LED 1 red");
+    for (const auto* t : {"18EEFF21#3F426F1A00823CC0", "18EFFF21#041B01010121FFFF",
+                          "18EFFF21#041B01010021FFFF", "18EF2100#041B0101010100FF"})
+        w.text(t);
+    say("J1939 21: a heartbeat (key 8 down); 16: source address 02h, identifier 01h");
+    for (const auto* t : {"18EFFF21#041BF9038000FF21", "18EF2100#041B700201FFFFFF"}) w.text(t);
+    say("(not in the manual) key 3 pressed at the new address, and 80h (27) sent there");
+    for (const auto* t : {"18EFFF02#041B01030101FFFF", "18EF0200#041B8000FFFFFFFF"}) w.text(t);
+    say("CANopen again: boot-up (8), key 8 pressed (11)");
+    for (const auto* t : {"715#00", "000#0115", "195#800000002A"}) w.text(t);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc == 2 && std::string_view(argv[1]).starts_with("j1939-")) {
+        const auto m = parse_model(std::string_view(argv[1]).substr(6));
+        if (m && (*m == model::pkp1600si || *m == model::pkp2600si)) return j1939_log(*m);
+    }
+    if (argc == 2 && std::string_view(argv[1]) == "switch-pkp2600si") return switch_log();
     if (argc != 2 || !parse_model(argv[1])) {
-        std::fputs("usage: sample_logs MODEL (pk1000, pkp2600, pkp2600si, pkp3500mt, ...)\n",
-                   stderr);
+        std::fputs(
+            "usage: sample_logs MODEL (pk1000, pkp2600, pkp2600si, pkp3500mt, ...)\n"
+            "       sample_logs j1939-pkp1600si | j1939-pkp2600si | switch-pkp2600si\n",
+            stderr);
         return 2;
     }
     const model m = *parse_model(argv[1]);

@@ -341,7 +341,7 @@ inline void fill_value(input& in, j1939::multiple_leds& m) {
     fill_value(in, m.destination);
     fill_value(in, m.source);
     fill_value(in, m.frame);
-    m.nibbles = in.integer<std::uint64_t>();
+    m.nibbles = j1939::multiple_leds::halves(in.integer<std::uint64_t>());
 }
 
 template <class T>
@@ -472,7 +472,7 @@ inline void put_value(std::vector<std::uint8_t>& out, const j1939::multiple_leds
     put_value(out, m.destination);
     put_value(out, m.source);
     put_value(out, m.frame);
-    put_integer(out, m.nibbles);
+    put_integer(out, m.word());
 }
 
 template <class M>

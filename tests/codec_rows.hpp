@@ -247,13 +247,16 @@ inline constexpr error_row core_error_rows[] = {
     {"E-CORE-4 upload request 41h", all, 0x15, "615#4108100000000000", errc::reserved_not_zero},
     {"segmented download 20h", all, 0x15, "615#2008100000000000", errc::unknown_command},
     {"SDO reply specifier E0h", all, 0x15, "595#E008100000000000", errc::unknown_command},
-    {"PK1000 49 switch, byte 7 not FFh", m1000, 0x15, "18EF2100#041B8000FFFFFF00",
-     errc::unknown_command},
-    {"PK1000 49 switch on PGN EE00h", m1000, 0x15, "18EE2100#041B8000FFFFFFFF", errc::wrong_id},
-    {"PK1000 49 switch to a PKP (no J1939)", pkp, 0x15, "18EF2100#041B8000FFFFFFFF",
-     errc::wrong_id_format},
-    {"29-bit frame to a PKP (no J1939)", pkp, 0x15, "18EE2100#041B8000FFFFFFFF",
-     errc::wrong_id_format},
+    // A 29-bit frame is read by the J1939 codec (keypad/j1939_codec.hpp) on every model.
+    {"PK1000 49 switch, byte 7 not FFh (a J1939 'not used' byte)", m1000, 0x15,
+     "18EF2100#041B8000FFFFFF00", errc::reserved_not_ff},
+    {"PK1000 49 switch's bytes on PGN EE00h: a NAME with its reserved bit set", m1000, 0x15,
+     "18EE2100#041B8000FFFFFFFF", errc::reserved_not_zero},
+    {"PK1000 49 switch on PGN EA00h (no keypad frame)", all, 0x15, "18EA2100#041B8000FFFFFFFF",
+     errc::wrong_id},
+    // No PKP (LI) source shows 80h.
+    {"PK1000 49 switch to a PKP (no source shows it)", pkp, 0x15, "18EF2100#041B8000FFFFFFFF",
+     errc::undocumented},
 };
 
 }  // namespace codec_rows

@@ -166,7 +166,7 @@ constexpr message led_code(std::uint8_t key, std::uint8_t code) {
 }
 // A multiple-LED frame: one hex digit per LED from LED 1 ("00F5": LED 3 Fh, LED 4 5h).
 constexpr message leds(std::uint8_t frame, std::string_view codes) {
-    multiple_leds m{6, 0x21, 0x00, colour_frame::make(frame).value(), 0};
+    multiple_leds m{6, 0x21, 0x00, colour_frame::make(frame).value(), {}};
     for (std::size_t i = 0; i < codes.size(); ++i) {
         const char c = codes[i];
         const int v = c >= 'A' ? c - 'A' + 10 : c - '0';

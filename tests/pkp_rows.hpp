@@ -615,7 +615,8 @@ inline constexpr error_row error_rows[] = {
     {"another node's heartbeat", pkp, 0x15, "716#05", errc::wrong_id},
     {"RPDO3, not used by the PKP", pkp, 0x15, "415#0000000000000000", errc::wrong_id},
     {"EMCY 080h + node", pkp, 0x15, "095#0000000000000000", errc::wrong_id},
-    {"a 29-bit identifier", pkp, 0x15, "00000615#4000100000000000", errc::wrong_id_format},
+    {"a 29-bit identifier (a PGN no keypad uses)", pkp, 0x15, "00000615#4000100000000000",
+     errc::wrong_id},
     {"key state of 4 bytes", pkp, 0x15, "195#00000000", errc::wrong_length},
     {"LED on of 3 bytes", pkp, 0x15, "215#000000", errc::wrong_length},
     {"LED blink of 1 byte", pkp, 0x15, "315#00", errc::wrong_length},
@@ -727,8 +728,8 @@ inline constexpr encode_error_row encode_error_rows[] = {
      errc::wrong_id},
     {"backlight PDO (PK1000 only)", pkp, 0x15, "515#2003000000000000",
      backlight{0x20, backlight_colour::blue}, errc::wrong_id},
-    {"J1939 switch (PK1000 only)", pkp, 0x15, "18EF2100#041B8000FFFFFFFF",
-     j1939::switch_to_canopen{}, errc::wrong_id_format},
+    {"J1939 switch (no PKP source shows it)", pkp, 0x15, "18EF2100#041B8000FFFFFFFF",
+     j1939::switch_to_canopen{}, errc::undocumented},
 };
 
 }  // namespace pkp_rows

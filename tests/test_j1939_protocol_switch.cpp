@@ -30,10 +30,13 @@ static_assert(decodes_pk1000_49());
 
 constexpr bad_row bad_rows[] = {
     {"an 11-bit id", "615#041B8000FFFFFFFF", errc::wrong_id_format},
-    {"another PGN", "18EE2100#041B8000FFFFFFFF", errc::wrong_id},
+    {"another PGN", "18EA2100#041B8000FFFFFFFF", errc::wrong_id},
     {"PDU2", "18FEF100#041B8000FFFFFFFF", errc::wrong_id},
     {"7 bytes", "18EF2100#041B8000FFFFFF", errc::wrong_length},
     {"other proprietary data", "18EF2100#041B8000FFFFFFFE", errc::unknown_command},
+    // No source shows a keypad acting on a command to the global address (docs/j1939.md): the
+    // keypad codec refuses it, and so does this decoder.
+    {"to the global address", "18EFFF00#041B8000FFFFFFFF", errc::undocumented},
 };
 constexpr auto switch_refuses =
     refused_by([](const can::frame& f) { return decode_switch_to_canopen(f); });

@@ -281,7 +281,7 @@ TEST_CASE("j1939: encode refuses or round-trips, over raw field values") {
             }
         }
         for (std::uint64_t n = 0; n < 0x1'0000'0000; n += 0x1234'5679) {
-            multiple_leds l{6, 0x21, 0x00, 1, n * 0x1'0001};
+            multiple_leds l{6, 0x21, 0x00, 1, multiple_leds::halves(n * 0x1'0001)};
             CHECK(encodes_back(m, l));
             l.frame = 2;
             CHECK(encodes_back(m, l, std::uint8_t{0x21}));

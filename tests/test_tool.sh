@@ -168,12 +168,13 @@ LC_ALL=C grep -q $'\x1b' "$tmp/err" && fail "an escape character of the input re
 grep -qF "(line 1: unexpected text after the frame: '195#01 \x1B[31mxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...')" "$tmp/err" ||
   fail "echoed input not escaped and shortened: $(cat "$tmp/err")"
 
-# The J1939 frame: decoded and applied under the PK1000 and the SI family, neither under a PKP-LI.
+# The J1939 frame: decoded and applied under the PK1000 and the SI family; under a PKP-LI the J1939
+# codec refuses it (no PKP source shows 80h) and it is not applied.
 echo '18EF2100#041B8000FFFFFFFF' > "$tmp/j1939.log"
 [ "$("$pk" decode "$tmp/j1939.log" 2> /dev/null)" = "18EF2100#041B8000FFFFFFFF  node 15h  J1939 switch to CANopen  priority: 6  destination: 21h  source: 00h  [protocol now canopen]" ] ||
   fail "J1939 switch under pk1000: $("$pk" decode "$tmp/j1939.log" 2>&1)"
 for m in pkp2200 pkp2400 pkp2600; do
-  [ "$("$pk" decode --model $m "$tmp/j1939.log" 2> /dev/null)" = "18EF2100#041B8000FFFFFFFF  j1939  not a frame of a $m (it has no J1939)" ] ||
+  [ "$("$pk" decode --model $m "$tmp/j1939.log" 2> /dev/null)" = "18EF2100#041B8000FFFFFFFF  j1939  error: undocumented" ] ||
     fail "J1939 frame under $m: $("$pk" decode --model $m "$tmp/j1939.log" 2>&1)"
   "$pk" decode --json --model $m "$tmp/j1939.log" 2> /dev/null | grep -q '"protocol"' && fail "J1939 under $m switches protocol in JSON"
 done

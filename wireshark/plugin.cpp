@@ -5,7 +5,8 @@
 // Wireshark tries the "can.id" table first, then "Decode As", then the "can" heuristics. The
 // plugin sits in "can.id" for every 11-bit identifier, so it sees each standard frame before
 // the generic CANopen and AUTOSAR NM dissectors and gives back (returns 0) every frame that is
-// not the keypad's; 29-bit frames reach it as a "can" heuristic (the J1939 switch frame).
+// not the keypad's; 29-bit frames reach it as a "can" heuristic (a keypad's J1939 frames, beside
+// Wireshark's own J1939 dissector).
 //
 // The session (pairing, segmented strings, node-id changes) depends on the frames before: it is
 // run on the first pass, which Wireshark makes in capture order, and its result is kept with
@@ -312,7 +313,9 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     } else {
         char b[16];
         std::snprintf(b, sizeof b, "node %02Xh  ", static_cast<unsigned>(v.node));
-        line = b + v.function + "  error: " + v.error;
+        // A J1939 frame has no node: "j1939  error: ...", as the tool writes it.
+        line = (v.function == "j1939" ? std::string() : std::string(b)) + v.function +
+               "  error: " + v.error;
     }
     line += session_notes(*record);
 
@@ -373,8 +376,15 @@ void register_handoff() {
     for (guint32 id = 0; id <= CAN_SFF_MASK; ++id)
         if (can_id != nullptr && dissector_get_uint_handle(can_id, id) == nullptr)
             dissector_add_uint("can.id", id, handle);
-    heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 switch frame",
+    heur_dissector_add("can", dissect_powerkey_heuristic, "PowerKey keypad J1939 frames",
                        "powerkey_can", proto_powerkey, HEURISTIC_ENABLE);
+    // With "Decode As" J1939 (can.subdissector), Wireshark's own J1939 dissector takes every
+    // 29-bit frame before the heuristics, and hands each PGN's data on through its "j1939.pgn"
+    // table (with the CAN frame's info): the plugin sits there for the keypads' PGNs (EF00h,
+    // A700h, A600h, EE00h), so the J1939 tree and the keypad's show together.
+    if (find_dissector_table("j1939.pgn") != nullptr)
+        for (const guint32 pgn : {0xEF00u, 0xA700u, 0xA600u, 0xEE00u})
+            dissector_add_uint("j1939.pgn", pgn, handle);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 //
 // The library calls made here, for whoever ports the adapter to a new API:
 //   models      powerkey::model, enum_values<model>(), to_string(model), parse_model("pk1000"),
-//               info(model).j1939, canopen::node_id::make, canopen::default_node_id
+//               canopen::node_id::make, canopen::default_node_id
 //   catalog     for_each_alternative<powerkey::message> and each alternative's S::fields(s, f)
 //               (the kind/fields convention), called again for every value of each named-enum
 //               field (the object of an SDO value, the code of a command: the fields that follow
@@ -17,7 +17,7 @@
 //               (index, subindex), upload_done + session::text(), upload_error (errc{},
 //               to_string), new_node, new_protocol (to_string(bus_protocol));
 //               canopen::classify, canopen::concerns, canopen::function::j1939/nmt,
-//               canopen::decode_nmt (target), j1939::parse_id (pgn), j1939::proprietary_a_pgn
+//               canopen::decode_nmt (target), j1939::parse_id (pgn), j1939::is_keypad_pgn
 //   one frame   can::make_frame(id, bytes, id_format), decode(frame, node, model) ->
 //               result<message>, to_string(errc), kind_of, for_each_field, describe(msg, node,
 //               buf), to_string(canopen::function), canopen::decode_sdo_request /
@@ -274,10 +274,15 @@ inline bool is_keypads(const powerkey::can::frame& f, const powerkey::session_ev
     using namespace powerkey;
     switch (e.cls.fn) {
         case canopen::function::j1939: {
-            // The switch back to CANopen (PK1000 section 49), on a keypad that speaks J1939.
+            // A keypad's J1939 frame (keypad/j1939_codec.hpp), at any address: one that decodes,
+            // or one on a keypad PGN that the model refuses for its content. Other PGNs, and
+            // proprietary-A data without the keypads' 04 1B header (another vendor's), stay
+            // with Wireshark's own J1939 dissector.
+            (void)m;
             const auto id = j1939::parse_id(f);
-            const auto row = info(m);
-            return row && row->j1939 && id && id->pgn == j1939::proprietary_a_pgn;
+            if (!id || !j1939::is_keypad_pgn(id->pgn)) return false;
+            return e.decoded || (e.decoded.error() != errc::wrong_id &&
+                                 e.decoded.error() != errc::unknown_command);
         }
         case canopen::function::nmt: {
             // NMT to all nodes or to the keypad; a command for another node stays generic.

@@ -36,6 +36,9 @@ FUNCTION_CODES = {"nmt": 0x0, "sync": 0x1, "tpdo1": 0x3, "rpdo1": 0x4, "tpdo2": 
                   "rpdo2": 0x6, "tpdo3": 0x7, "rpdo3": 0x8, "tpdo4": 0x9, "rpdo4": 0xA,
                   "sdo_tx": 0xB, "sdo_rx": 0xC, "heartbeat": 0xE}
 PER_NODE = set(FUNCTION_CODES) - {"nmt", "sync"}
+# The generic fields' names (wireshark/plugin.cpp, generic_name), and Wireshark's longest label.
+GENERIC_NAMES = {"kind", "error", "function", "node", "model", "sdo", "session", "j1939"}
+ITEM_LABEL_LENGTH = 240
 
 failures = []
 # The exit status without a working tool (ctest SKIP_RETURN_CODE).
@@ -150,8 +153,10 @@ def field_matches(name, want, show, showname):
 
 
 def tool_text(line):
-    """The tool's text output without the frame: "node 15h  ..."."""
-    return line[line.index("node "):]
+    """The tool's text output without the frame: "node 15h  ...", or "j1939  error: ..." for a
+    J1939 frame refused (it has no node)."""
+    at = line.find("node ")
+    return line[at:] if at >= 0 else line[line.index("j1939  "):]
 
 
 def model_of_log(path, models):
@@ -206,7 +211,11 @@ def compare_log(run, log, model):
             if f2["title"] is not None:
                 fail(at, "dissected by powerkey in the second pass only")
             continue
-        if f["title"] != "Blink Marine PowerKey keypad, " + info:
+        want = "Blink Marine PowerKey keypad, " + info
+        # Wireshark cuts a tree item's label at ITEM_LABEL_LENGTH (a J1939 address claim's line
+        # is longer): the label is then the beginning of the line.
+        cut = len(f["title"]) == ITEM_LABEL_LENGTH - 1 and want.startswith(f["title"])
+        if f["title"] != want and not cut:
             fail(at, f"tree item {f['title']!r}, Info column {info!r}")
         if (f2["title"], f2["fields"]) != (f["title"], f["fields"]):
             fail(at, f"the second pass shows {f2['title']!r}, the first {f['title']!r}")
@@ -263,12 +272,40 @@ def compare_log(run, log, model):
         if extra:
             fail(at, f"fields the message does not have: {sorted(extra)}")
         for field, want in j.get("fields", {}).items():
-            values = f["fields"].get(f"powerkey.{field}", [])
+            # A message field named as a generic one is under powerkey.field. (the J1939 NAME's
+            # "function"; plugin.cpp, generic_name).
+            key = f"powerkey.field.{field}" if field in GENERIC_NAMES else f"powerkey.{field}"
+            values = f["fields"].get(key, [])
             if len(values) != 1 or not field_matches(field, want, *values[0]):
                 fail(at, f"powerkey.{field} is {values!r}, decode --json says {want!r}")
         # The tree and the Info column read like the tool's text output.
         if info != tool_text(text):
             fail(at, f"Info column {info!r}, the tool writes {tool_text(text)!r}")
+
+
+def check_beside_j1939(run):
+    """With Decode As J1939, Wireshark's J1939 dissector and the plugin both dissect the keypads'
+    J1939 frames: the J1939 PGN and the keypad's kind on every frame of the switch log that the
+    tool reads as a J1939 message."""
+    log = os.path.join(run.args.source, "examples", "logs", "switch-pkp2600si.log")
+    pcap = run.pcap(log, "beside-j1939")
+    rows = run.tshark("-r", pcap, "-o", "powerkey.model:pkp2600si", "-d", "can.subdissector,j1939",
+                      "-T", "fields", "-e", "j1939.pgn", "-e", "powerkey.kind").splitlines()
+    tool = [json.loads(l) for l in run.tool("decode", "--model", "pkp2600si", "--json", log)]
+    if len(rows) != len(tool):
+        fail("beside J1939", f"{len(rows)} frames in tshark, {len(tool)} in the tool")
+        return
+    j1939 = 0
+    for n, (row, j) in enumerate(zip(rows, tool), 1):
+        if not j["ext"]:
+            continue
+        j1939 += 1
+        pgn, kind = (row.split("\t") + [""])[:2]
+        if pgn != str(j["pgn"]) or kind != j.get("kind"):
+            fail(f"beside J1939 frame {n}", f"j1939.pgn {pgn!r}, powerkey.kind {kind!r}; the "
+                                            f"tool says PGN {j['pgn']}, {j.get('kind')}")
+    if j1939 == 0:
+        fail("beside J1939", "no J1939 frame in the switch log")
 
 
 def check_other_frames(run):
@@ -422,6 +459,7 @@ def main():
     for log in logs:
         compare_log(run, log, model_of_log(log, models))
     check_other_frames(run)
+    check_beside_j1939(run)
     check_node_preference(run)
     check_escaping(run)
     check_filters(run)

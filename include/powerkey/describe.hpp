@@ -26,6 +26,11 @@
 
 namespace powerkey {
 
+// The characters that hold the description of every message of every model (the longest is a
+// J1939 address claim with every NAME field at its widest: 286 at node 7Fh;
+// tests/test_describe.cpp).
+inline constexpr std::size_t description_capacity = 320;
+
 // Appends text to a caller's buffer; remembers when something did not fit.
 class text_writer {
 public:
@@ -170,7 +175,7 @@ constexpr void describe_value(text_writer& w, std::string_view name, const T& v)
 
 // Writes the description of m, sent to or by keypad `node`, into `out`. Returns the text (a view
 // of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
-// 160 characters hold every message of every model.
+// description_capacity characters hold every message of every model.
 template <class M>
 [[nodiscard]] constexpr result<std::string_view> describe(const M& msg, canopen::node_id node,
                                                           std::span<char> out) noexcept {

@@ -98,6 +98,13 @@ public:
                       reading how = reading::tolerant) noexcept
         : model_(m), info_(&detail::row_or_none(m)), node_(node), upload_(node), how_(how) {}
 
+    // The J1939 frames of the keypad at `address` only (decode's J1939 narrowing: nullopt, the
+    // default, for any address).
+    constexpr void narrow_j1939(j1939::keypad_address address) noexcept { address_ = address; }
+    [[nodiscard]] constexpr j1939::keypad_address j1939_address() const noexcept {
+        return address_;
+    }
+
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
     [[nodiscard]] constexpr bus_protocol protocol() const noexcept { return protocol_; }
@@ -114,7 +121,7 @@ public:
         // During a node change the keypad may still answer (an abort) from the old id.
         e.node = node_;
         if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
-        e.decoded = decode(f, e.node, model_, how_);
+        e.decoded = decode(f, e.node, model_, address_, how_);
         const bool ours = e.cls.node == e.node.value();
         if (e.cls.fn == canopen::function::sdo_rx && ours) {
             e.sdo_frame = sdo_frame_of(f, e);
@@ -323,6 +330,7 @@ private:
     std::optional<canopen::node_id> change_;         // the id after the reply (old-id models)
     canopen::segmented_upload<TextCapacity> upload_;
     reading how_ = reading::tolerant;
+    j1939::keypad_address address_;
 };
 
 }  // namespace powerkey

@@ -30,9 +30,10 @@ from ._powerkey import Message, Model, kinds, model_info, names, parse_model  # 
 __all__ = [
     "ArgumentError", "BacklightUpdate", "Controller", "ControllerEvent", "DecodeError",
     "EncodeError", "Error", "Frame", "LedMapUpdate", "Message", "Model", "Session",
-    "SessionEvent", "VirtualKeypad", "backlight_change", "led_brightness_level", "decode", "encode",
-    "encode_frame", "kinds", "led_blink_map", "led_on_map", "message", "model_info", "names",
-    "reported_nmt_state", "node_id_change", "parse_model", "pressed_keys", "skipped_kind",
+    "SessionEvent", "VirtualKeypad", "address_change", "backlight_change", "key_change",
+    "led_brightness_level", "decode", "encode", "encode_frame", "kinds", "led_blink_map",
+    "led_on_map", "message", "model_info", "names", "reported_nmt_state", "node_id_change",
+    "parse_model", "pressed_keys", "skipped_kind",
 ]
 if _can is not None:
     __all__.append("Listener")
@@ -40,15 +41,18 @@ if _can is not None:
 DEFAULT_NODE = 0x15  # as delivered (canopen::default_node_id)
 
 
-def decode(msg_or_id, data=None, *, model, node=DEFAULT_NODE, extended=None):
+def decode(msg_or_id, data=None, *, model, node=DEFAULT_NODE, extended=None, address=None):
     """The message a frame carries, for keypad `model` at `node` (decode(frame, node, model)).
 
     msg_or_id is a can.Message (or anything with arbitration_id, data, is_extended_id), or an
     identifier with `data` the bytes; `extended` defaults to id > 7FFh. `node` is a number or
-    the tool's text ("15h", "0x15"). Raises DecodeError whose `code` is the library's errc
-    ("wrong_id", "reserved_not_zero", ...); a remote, CAN FD or error frame is "unexpected_frame".
+    the tool's text ("15h", "0x15"). An extended frame is a J1939 one (kinds "j1939_..."), of
+    any keypad address, or of the keypad at `address` (0..0xFD) only. Raises DecodeError whose
+    `code` is the library's errc ("wrong_id", "reserved_not_zero", ...); a remote, CAN FD or
+    error frame is "unexpected_frame".
     """
-    return _powerkey.decode(msg_or_id, data, model=model, node=node, extended=extended)
+    return _powerkey.decode(msg_or_id, data, model=model, node=node, extended=extended,
+                            address=address)
 
 
 def message(kind, *, model=None, node=None, **fields):
@@ -58,7 +62,7 @@ def message(kind, *, model=None, node=None, **fields):
     return _powerkey.message(kind, model=model, node=node, fields=fields)
 
 
-def encode(kind, *, model=None, node=None, **fields):
+def encode(kind, *, model=None, node=None, address=None, **fields):
     """The frame of a message, as a can.Message (encode(node, model, message)).
 
     `kind` is a kind name with its fields as keywords (encode("led_on", model="pkp2400",
@@ -70,24 +74,37 @@ def encode(kind, *, model=None, node=None, **fields):
     if isinstance(kind, Message):
         if fields:
             raise ArgumentError("encode(Message): give the fields in the message", None)
-        return _powerkey.encode_frame(kind, model=model, node=node)
+        return _powerkey.encode_frame(kind, model=model, node=node, address=address)
     if model is None:
         raise ArgumentError("encode: give model=", None)
     n = DEFAULT_NODE if node is None else node
-    return _powerkey.encode_frame(message(kind, node=n, **fields), model=model, node=n)
+    return _powerkey.encode_frame(message(kind, node=n, **fields), model=model, node=n,
+                                  address=address)
 
 
-def encode_frame(kind, *, model=None, node=None, **fields):
+def encode_frame(kind, *, model=None, node=None, address=None, **fields):
     """encode(), as a plain (id, data, extended) tuple."""
-    f = encode(kind, model=model, node=node, **fields)
+    f = encode(kind, model=model, node=node, address=address, **fields)
     return f.arbitration_id, bytes(f.data), f.is_extended_id
 
 
 # --- the accessors (accessors.hpp), as functions too -------------------------------------------
 
 def pressed_keys(m):
-    """The pressed keys a key-state PDO or a read of the keys object states, else None."""
+    """The pressed keys a key-state PDO, a read of the keys object or a J1939 heartbeat states
+    (a J1939 key contact state: its one key when pressed, [] when released), else None."""
     return m.pressed_keys()
+
+
+def key_change(m, model=None):
+    """{'pressed': [...], 'covered': [...]}: the keys a message states and which are pressed
+    (a J1939 key contact state covers its one key), else None."""
+    return m.key_change(model)
+
+
+def address_change(m):
+    """The J1939 source address a message (command 70h) moves the keypad to, else None."""
+    return m.address_change()
 
 
 def led_on_map(m, model=None):

@@ -176,6 +176,13 @@ model model_from_py(py::handle o) {
                          py_repr(o));
 }
 
+// A J1939 keypad address (00h..FDh; FEh is the null and FFh the global address), or None for
+// any: the J1939 frames narrowed to that keypad.
+j1939::keypad_address address_from_py(py::handle o) {
+    if (o.is_none()) return std::nullopt;
+    return static_cast<std::uint8_t>(int_arg(o, "address", 0, 0xFD));
+}
+
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {
     long long n = 0;
     if (py::isinstance<py::str>(o)) {  // as the tool's --node: "15h", "0x15", "21"
@@ -558,7 +565,9 @@ model message_model(const py_message& m, py::handle given) {
 
 struct py_session {
     session<> s;
-    py_session(model m, canopen::node_id n) : s(m, n) {}
+    py_session(model m, canopen::node_id n, j1939::keypad_address a) : s(m, n) {
+        s.narrow_j1939(a);
+    }
 };
 
 py::str latin1(std::string_view s) {
@@ -801,7 +810,7 @@ PYBIND11_MODULE(_powerkey, mod) {
                 const auto n = node.is_none()
                                    ? canopen::node_id::make(m.node.value_or(0x15)).value()
                                    : node_from_py(node);
-                std::array<char, 256> buf{};
+                std::array<char, description_capacity> buf{};
                 const auto t = describe(m.m, n, buf);
                 if (!t) raise_code(types().error, "describe", t.error());
                 return std::string(*t);
@@ -811,6 +820,23 @@ PYBIND11_MODULE(_powerkey, mod) {
              [](const py_message& m) -> py::object {
                  const auto k = pressed_keys(m.m);
                  return k ? py::object(index_list(*k)) : py::object(py::none());
+             })
+        .def(
+            "key_change",
+            [](const py_message& m, py::handle md) -> py::object {
+                const auto u = key_change(m.m, message_model(m, md));
+                if (!u) return py::none();
+                py::dict d;
+                d["pressed"] = index_list(u->pressed);
+                d["covered"] = index_list(u->covered);
+                return d;
+            },
+            py::arg("model") = py::none(),
+            "The keys the message states ('covered') and which of them are pressed")
+        .def("address_change",
+             [](const py_message& m) -> py::object {
+                 const auto a = address_change(m.m);
+                 return a ? py::object(py::int_(*a)) : py::object(py::none());
              })
         .def(
             "led_on_map",
@@ -850,11 +876,11 @@ PYBIND11_MODULE(_powerkey, mod) {
     mod.def(
         "decode",
         [](py::handle msg_or_id, py::handle data, py::handle md, py::handle node,
-           py::handle extended) {
+           py::handle extended, py::handle address) {
             const auto f = frame_from_args(msg_or_id, data, extended);
             const auto m = model_from_py(md);
             const auto n = node_from_py(node);
-            const auto r = decode(f, n, m);
+            const auto r = decode(f, n, m, address_from_py(address));
             if (!r) {
                 std::string what = "decode ";
                 what += f.is_extended() ? "extended " : "";
@@ -866,7 +892,7 @@ PYBIND11_MODULE(_powerkey, mod) {
             return py_message{*r, m, n.value()};
         },
         py::arg("msg_or_id"), py::arg("data") = py::none(), py::kw_only(), py::arg("model"),
-        py::arg("node") = 0x15, py::arg("extended") = py::none());
+        py::arg("node") = 0x15, py::arg("extended") = py::none(), py::arg("address") = py::none());
 
     mod.def(
         "message",
@@ -883,23 +909,25 @@ PYBIND11_MODULE(_powerkey, mod) {
 
     mod.def(
         "encode_frame",
-        [](const py_message& m, py::handle md, py::handle node) {
+        [](const py_message& m, py::handle md, py::handle node, py::handle address) {
             const auto mm = message_model(m, md);
             const auto n = node.is_none() ? canopen::node_id::make(m.node.value_or(0x15)).value()
                                           : node_from_py(node);
-            const auto f = encode(n, mm, m.m);
+            const auto f = encode(n, mm, m.m, address_from_py(address));
             if (!f) refused(m.m, mm, n, f.error());
             return frame_to_py(*f);
         },
         py::arg("message"), py::kw_only(), py::arg("model") = py::none(),
-        py::arg("node") = py::none());
+        py::arg("node") = py::none(), py::arg("address") = py::none());
 
     // --- the session follower ------------------------------------------------------------------
     py::class_<py_session>(mod, "Session")
-        .def(py::init([](py::handle md, py::handle node) {
-                 return new py_session(model_from_py(md), node_from_py(node));
+        .def(py::init([](py::handle md, py::handle node, py::handle address) {
+                 return new py_session(model_from_py(md), node_from_py(node),
+                                       address_from_py(address));
              }),
-             py::kw_only(), py::arg("model"), py::arg("node") = 0x15)
+             py::kw_only(), py::arg("model"), py::arg("node") = 0x15,
+             py::arg("address") = py::none())
         .def(
             "step",
             [](py_session& ps, py::handle msg_or_id, py::handle data, py::handle extended) {

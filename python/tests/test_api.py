@@ -189,7 +189,7 @@ def test_extended_id_hint():
     assert msg.is_extended_id
     with pytest.raises(powerkey.DecodeError) as e:
         powerkey.decode(msg, model="pkp2400")
-    assert e.value.code == "wrong_id_format"
+    assert e.value.code == "wrong_id"  # a J1939 frame on PGN 0000h: not a keypad frame
     assert "is_extended_id=False" in str(e.value) and "195h is key_state" in str(e.value)
     # No hint for a frame that would not decode as standard either.
     with pytest.raises(powerkey.DecodeError) as e:
@@ -238,3 +238,70 @@ def test_listener_callback():
     listener.on_message_received(can.Message(arbitration_id=KEY3[0], data=KEY3[1],
                                              is_extended_id=False))
     assert got[0].message.kind == "key_state"
+
+
+# --- J1939: can.Message with is_extended_id=True (docs/j1939.md, PKP1600SI J1939 manual) ---------
+
+def test_j1939_key_contact_from_a_can_message():
+    msg = can.Message(arbitration_id=0x18EFFF21, data=bytes.fromhex("041B01030121FFFF"),
+                      is_extended_id=True)
+    m = powerkey.decode(msg, model="pkp1600si")
+    assert m.kind == "j1939_key_contact"
+    assert m.to_dict() == {"priority": 6, "destination": 0xFF, "source": 0x21, "key": 3,
+                           "pressed": True, "identifier": 0x21}
+    assert m.pressed_keys() == [3] and powerkey.pressed_keys(m) == [3]
+    assert powerkey.key_change(m) == {"pressed": [3], "covered": [3]}
+    assert m.describe() == ("node 15h  J1939 key contact  priority: 6  destination: FFh  "
+                            "source: 21h  key: 3  pressed: yes  identifier: 21h")
+    # The frame back, extended, byte for byte.
+    f = powerkey.encode(m)
+    assert f.is_extended_id and f.arbitration_id == 0x18EFFF21
+    assert bytes(f.data) == bytes.fromhex("041B01030121FFFF")
+
+
+def test_j1939_heartbeat_and_commands_answer_the_accessors():
+    beat = powerkey.decode(0x18EFFF21, bytes.fromhex("041BF9030800FF21"), model="pkp1600si")
+    assert beat.kind == "j1939_heartbeat" and beat.pressed_keys() == [4]
+    assert powerkey.key_change(beat)["covered"] == [1, 2, 3, 4, 5, 6]
+    brightness = powerkey.decode(0x18EF2100, bytes.fromhex("041B021FFFFFFFFF"), model="pkp1600si")
+    assert brightness.led_brightness_level() == 0x1F
+    moved = powerkey.decode(0x18EF2100, bytes.fromhex("041B70FDFDFFFFFF"), model="pkp1600si")
+    assert powerkey.address_change(moved) == 0xFD and moved.node_id_change() is None
+
+
+def test_j1939_address_narrows_and_other_pgns_are_not_keypad_frames():
+    key = (0x18EFFF21, bytes.fromhex("041B01030121FFFF"))
+    assert powerkey.decode(*key, model="pkp1600si", address=0x21).kind == "j1939_key_contact"
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(*key, model="pkp1600si", address=0x22)
+    assert e.value.code == "wrong_id"
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(0x18FEF100, bytes(8 * [0xFF]), model="pkp1600si")
+    assert e.value.code == "wrong_id"
+    with pytest.raises(powerkey.ArgumentError):
+        powerkey.decode(*key, model="pkp1600si", address=0xFE)
+
+
+def test_j1939_encode_by_kind_and_address():
+    f = powerkey.encode("j1939_set_led", model="pkp1600si", key=2, colour="red", mode="on")
+    assert (f.arbitration_id, bytes(f.data), f.is_extended_id) == (
+        0x18EF2100, bytes.fromhex("041B0102010100FF"), True)
+    # An addressed key contact state whose bytes 4..6 read as an LED command too (identifier
+    # 01h: LED 2 off, state 01h) needs narrowing to its sender.
+    with pytest.raises(powerkey.EncodeError):
+        powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
+                        destination=0)
+    f = powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
+                        destination=0, address=0x21)
+    assert (f.arbitration_id, bytes(f.data)) == (0x18EF0021, bytes.fromhex("041B01020001FFFF"))
+
+
+def test_session_follows_the_switch_both_ways():
+    s = powerkey.Session(model="pkp2600si")
+    assert s.step(0x615, bytes.fromhex("2BFF200101000000")).new_protocol == "j1939"
+    e = s.step(0x18EFFF21, bytes.fromhex("041B01010121FFFF"), extended=True)
+    assert e.function == "j1939" and e.message.kind == "j1939_key_contact"
+    e = s.step(can.Message(arbitration_id=0x18EF2100, data=bytes.fromhex("041B8000FFFFFFFF")))
+    assert e.message.kind == "j1939_switch_to_canopen" and e.new_protocol == "canopen"
+    narrowed = powerkey.Session(model="pkp2600si", address=0x22)
+    assert narrowed.step(0x18EFFF21, bytes.fromhex("041B01010121FFFF")).error == "wrong_id"

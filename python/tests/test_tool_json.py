@@ -15,8 +15,9 @@ LOGS = sorted((REPO / "examples/logs").glob("*.log"))
 
 
 def model_of(path):
-    name = path.stem.removeprefix("session-")
-    return name if name in powerkey.names("model") else "pk1000"  # check-*.log: a PK1000
+    """The model a log's name names (pkp2400.log, session-pk1000.log, j1939-pkp1600si.log)."""
+    named = [w for w in path.stem.split("-") if w in powerkey.names("model")]
+    return named[0] if named else "pk1000"  # check-*.log: a PK1000
 
 
 @pytest.mark.parametrize("log", LOGS, ids=lambda p: p.name)

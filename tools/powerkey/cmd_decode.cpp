@@ -120,16 +120,20 @@ public:
           session_(m, c.node, o.strict ? reading::strict : reading::tolerant),
           picture_(m),
           tty_(isatty(1) != 0),
-          out_(out) {}
+          out_(out) {
+        session_.narrow_j1939(c.address);
+    }
 
     void frame(const logs::record& r) override {
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
-        const bool pkp_j1939 = !e.decoded && e.cls.fn == canopen::function::j1939 &&
-                               !info(session_.model()).value().j1939;
-        const bool foreign = pkp_j1939 || (!e.decoded && e.decoded.error() == errc::wrong_id &&
-                                           !concerns(e.cls, e.node));
+        // A 29-bit frame the J1939 codec calls wrong_id: another PGN (not a keypad frame), or,
+        // narrowed by --address, another keypad's.
+        const bool j1939_foreign = !e.decoded && e.cls.fn == canopen::function::j1939 &&
+                                   e.decoded.error() == errc::wrong_id;
+        const bool foreign = j1939_foreign || (!e.decoded && e.decoded.error() == errc::wrong_id &&
+                                               !concerns(e.cls, e.node));
         if (e.cls.node != 0 && e.cls.node < 128) ++counts_.per_node[e.cls.node];
         if (e.decoded)
             ++counts_.decoded;
@@ -143,12 +147,12 @@ public:
         if (o_.show && tty_ && shown_)
             out += "\x1b[1A\r\x1b[2K"sv;  // the picture stays at the bottom
         if (o_.json && o_.nlohmann_writer) {
-            nlohmann_line(out, r, e, pkp_j1939);
+            nlohmann_line(out, r, e, j1939_foreign);
             out += '\n';
         } else if (o_.json) {
-            json_line(out, r, e, pkp_j1939);  // with its line end
+            json_line(out, r, e, j1939_foreign);  // with its line end
         } else {
-            text_line(out, r, e, foreign, pkp_j1939);  // with its line end
+            text_line(out, r, e, foreign, j1939_foreign);  // with its line end
         }
         if (o_.show && (picture || (tty_ && shown_))) {
             out += picture_.draw();
@@ -163,7 +167,7 @@ public:
 
 private:
     void text_line(std::string& out, const logs::record& r, const session_event& e, bool foreign,
-                   bool pkp_j1939) {
+                   bool j1939_foreign) {
         const auto n = node_of(e);
         const bool fast =
             r.time.size() <= 32 && r.interface.size() <= 16 && plain(r.time) && plain(r.interface);
@@ -221,17 +225,25 @@ private:
             });
         };
         if (e.decoded) {
-            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part; 160
-            // characters hold every message
-            line.put_with(256, [&](char* p) -> std::size_t {
+            // describe()'s text, "node 15h  LED on  red: 17 ...", is the message part;
+            // description_capacity characters hold every message
+            constexpr std::size_t cap = description_capacity;
+            line.put_with(cap, [&](char* p) -> std::size_t {
                 const auto text = describe(*e.decoded, canopen::node_id::make(n).value_or(e.node),
-                                           std::span<char>(p, 256));
-                return text ? text->size() : 256;
+                                           std::span<char>(p, cap));
+                return text ? text->size() : cap;
             });
-        } else if (pkp_j1939) {
-            line.put("j1939  not a frame of a "sv);
-            line.put(to_string(session_.model()));
-            line.put(" (it has no J1939)"sv);
+        } else if (j1939_foreign) {
+            const auto id = j1939::parse_id(r.frame).value();
+            if (j1939::is_keypad_pgn(id.pgn)) {
+                line.put("j1939  another keypad's frame (keypad is "sv);
+                hex_h(session_.j1939_address().value_or(0), 2);
+                line.put(')');
+            } else {
+                line.put("j1939  not a keypad frame (PGN "sv);
+                hex_h(id.pgn.value(), id.pgn.value() > 0xFFFF ? 5 : 4);
+                line.put(')');
+            }
         } else if (foreign && e.cls.fn == canopen::function::other) {
             line.put("unknown frame: no keypad uses COB-ID "sv);
             hex_h(r.frame.raw_id(), 3);
@@ -243,6 +255,9 @@ private:
             line.put("  another node's frame (keypad is "sv);
             hex_h(e.node.value(), 2);
             line.put(')');
+        } else if (e.cls.fn == canopen::function::j1939) {  // no node: "j1939  error: ..."
+            line.put("j1939  error: "sv);
+            line.put(to_string(e.decoded.error()));
         } else {
             line.put("node "sv);
             hex_h(n, 2);
@@ -287,7 +302,7 @@ private:
     }
 
     void json_line(std::string& out, const logs::record& r, const session_event& e,
-                   bool pkp_j1939) {
+                   bool j1939_foreign) {
         json::line_out line(out);  // the line in a stack buffer: one append to `out`
         json::basic_object_writer w(line);
         if (!r.time.empty()) w.field("time", r.time);
@@ -336,7 +351,7 @@ private:
         if (e.upload_done) w.field("text", session_.text());
         if (e.upload_error != errc{}) w.field("upload_error", to_string(e.upload_error));
         if (e.new_node) w.field("new_node", e.new_node->value());
-        if (e.new_protocol && !pkp_j1939 && e.decoded)
+        if (e.new_protocol && !j1939_foreign && e.decoded)
             w.field("protocol", to_string(*e.new_protocol));
         if (!e.decoded) w.field("error", to_string(e.decoded.error()));
         w.close();
@@ -369,7 +384,7 @@ private:
     }
 
     void nlohmann_line(std::string& out, const logs::record& r, const session_event& e,
-                       bool pkp_j1939) {
+                       bool j1939_foreign) {
         nlohmann::ordered_json j;
         if (!r.time.empty()) j["time"] = std::string(r.time);
         if (!r.interface.empty()) j["interface"] = std::string(r.interface);
@@ -395,7 +410,7 @@ private:
         if (e.sdo != sdo_pairing::none) j["sdo"] = std::string(to_string(e.sdo));
         if (e.upload_done) j["text"] = std::string(session_.text());
         if (e.new_node) j["new_node"] = e.new_node->value();
-        if (e.new_protocol && !pkp_j1939 && e.decoded)
+        if (e.new_protocol && !j1939_foreign && e.decoded)
             j["protocol"] = std::string(to_string(*e.new_protocol));
         if (!e.decoded) j["error"] = std::string(to_string(e.decoded.error()));
         out += j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
@@ -435,11 +450,12 @@ model choose_model(const options& o, const std::vector<kept_frame>& log) {
     for (const auto m : enum_values<model>()) {
         score sc{m, 0, {}};
         session<256> s(m, o.node);
+        s.narrow_j1939(o.address);
         for (const auto& r : log) {
             const auto e = s.step(r.frame);
-            if (!e.decoded && e.decoded.error() != errc::wrong_id &&
-                e.cls.fn != canopen::function::j1939)
-                ++sc.refused;
+            // A J1939 frame counts as a CANopen one: the J1939 row of a model refuses a key or
+            // LED it lacks, a frame its manual does not have or no source shows.
+            if (!e.decoded && e.decoded.error() != errc::wrong_id) ++sc.refused;
             if (e.upload_done && sc.named.empty()) {
                 std::string_view t = s.text();
                 if (const auto reported = model_from_report(t); reported && *reported == m)
@@ -631,7 +647,8 @@ int run_decode(const options& c, const decode_options& o) {
 void add_decode(registry& r) {
     static decode_options o;
     auto& sub = r.add(
-        {"decode", "[--model M|auto] [--node N] [--json | --show] [--strict] [FILE...]",
+        {"decode",
+         "[--model M|auto] [--node N] [--address A] [--json | --show] [--strict] [FILE...]",
          "every frame of a bus log, in text or JSON lines",
          "  --json       JSON lines, one per frame (docs/cli.md has the schema)\n"
          "  --show       draw the keypad after each frame that changes it (not with --json)\n"

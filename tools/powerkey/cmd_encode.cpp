@@ -149,7 +149,7 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
         return "kind: no message '" + escape(kind_text, 40) + "' for " + std::string(to_string(m)) +
                " (powerkey list --model " + std::string(to_string(m)) + " shows them)";
     if (!error.empty()) return "fields: " + error;
-    const auto f = encode(line_node, m, msg);
+    const auto f = encode(line_node, m, msg, o.address);
     if (!f) return "cannot encode " + kind_text + ": " + std::string(to_string(f.error()));
     if (logged && *logged != *f)
         return "rebuilt " + cansend(*f) + " differs from the logged " + cansend(*logged);
@@ -160,7 +160,7 @@ std::string frame_of_json(const options& o, const nlohmann::json& v, can::frame&
     message moved;
     if (!build_any(kind_text, o.node, false, get_for(true), moved, error) || !error.empty())
         return "fields: " + error;
-    const auto g = encode(o.node, m, moved);
+    const auto g = encode(o.node, m, moved, o.address);
     if (!g)
         return "cannot encode " + kind_text + " for node " + std::to_string(o.node.value()) + ": " +
                std::string(to_string(g.error()));
@@ -208,7 +208,7 @@ int run_encode(const options& o, const encode_options& eo) {
         report("encode", error);
         return status_input;
     }
-    const auto f = encode(o.node, o.keypad, msg);
+    const auto f = encode(o.node, o.keypad, msg, o.address);
     if (f) {
         std::printf("%s\n", cansend(*f).c_str());
         return status_ok;

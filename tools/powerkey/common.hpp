@@ -31,6 +31,8 @@ struct options {
     bool model_given = false;  // --model named a model
     powerkey::canopen::node_id node = powerkey::canopen::default_node_id;
     bool node_given = false;
+    // --address: the J1939 keypad address the J1939 frames are narrowed to (nullopt: any).
+    powerkey::j1939::keypad_address address;
 };
 
 // The exit status, the same for every subcommand (docs/cli.md).
@@ -102,11 +104,11 @@ private:
 // field in the form encode takes back.
 inline void append_message_text(std::string& out, const powerkey::message& m,
                                 powerkey::canopen::node_id node) {
-    std::array<char, 256> buf;  // describe() writes what it returns; 160 hold every message
+    std::array<char, powerkey::description_capacity> buf;  // holds every message
     const auto text = powerkey::describe(m, node, buf);
     if (text)
         out += *text;
-    else  // cannot happen (160 characters hold every message): the beginning, marked
+    else  // cannot happen (description_capacity holds every message): the beginning, marked
         out.append(buf.data(), buf.size()).append("...");
 }
 

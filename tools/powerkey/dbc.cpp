@@ -861,7 +861,7 @@ struct field_text {
 std::vector<field_text> fields_of(const j1939::message& m) {
     std::vector<field_text> out;
     for_each_field(m, [&out](std::string_view name, const auto& v) {
-        std::array<char, 160> buf{};
+        std::array<char, description_capacity> buf{};
         text_writer w(buf);
         describe_value(w, name, v);
         field_text f{std::string(name), std::string(w.view()), {}};

@@ -79,7 +79,7 @@ constexpr std::uint64_t max_of() {
 // decode's text agree.
 template <class T>
 void write_text_value(std::string& out, std::string_view name, const T& v) {
-    std::array<char, 160> buf{};
+    std::array<char, powerkey::description_capacity> buf{};
     powerkey::text_writer w(buf);
     powerkey::describe_value(w, name, v);
     out += w.view();

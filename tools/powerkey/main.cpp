@@ -44,6 +44,7 @@ std::string common_options_text(model_use use) {
     if (use == model_use::or_auto) s += "; or auto";
     if (use == model_use::required) s += "; required";
     s += "\n  --node N     the keypad's node id 1..127: 0x15 (default), 15h or 21\n";
+    s += "  --address A  J1939 frames of the keypad at address A only (00h..FDh; default any)\n";
     return s;
 }
 
@@ -121,11 +122,12 @@ int main(int argc, char** argv) {
     CLI::App app{"powerkey"};
     app.set_help_flag();
     bool help = false, version = false;
-    std::string model_text, node_text;
+    std::string model_text, node_text, address_text;
     app.add_flag("-h,--help", help);
     app.add_flag("--version", version);
     app.add_option("--model", model_text);
     app.add_option("--node", node_text);
+    app.add_option("--address", address_text);
     tool::registry r(app, common);
     for (const auto add : tool::commands) add(r);
     auto* help_command = app.add_subcommand("help");
@@ -178,8 +180,10 @@ int main(int argc, char** argv) {
     // Given, even empty (--node ''): an empty value is an error, never the default.
     const bool model_given = app.get_option("--model")->count() > 0;
     const bool node_given = app.get_option("--node")->count() > 0;
-    if (use == model_use::none && (model_given || node_given))
-        return tool::usage_error(name + " takes no --model or --node (it reads logs of any bus)");
+    const bool address_given = app.get_option("--address")->count() > 0;
+    if (use == model_use::none && (model_given || node_given || address_given))
+        return tool::usage_error(
+            name + " takes no --model or --node or --address (it reads logs of any bus)");
     if (model_given) {
         if (use == model_use::or_auto && (model_text == "auto" || model_text == "AUTO")) {
             common.model_auto = true;
@@ -203,6 +207,15 @@ int main(int argc, char** argv) {
                                      tool::escape(node_text, 32) + "'");
         common.node = *id;
         common.node_given = true;
+    }
+    if (address_given) {
+        std::uint64_t a = 0;
+        // FEh is J1939's null address and FFh the global one: no keypad holds either.
+        if (!tool::parse_number(address_text, a) || a > 0xFD)
+            return tool::usage_error(
+                "--address: expected a J1939 keypad address 00h..FDh (0x21, 21h or 33), got '" +
+                tool::escape(address_text, 32) + "'");
+        common.address = static_cast<std::uint8_t>(a);
     }
     return chosen->run();
 }

@@ -26,12 +26,15 @@ public:
           info_(powerkey::info(m).value_or(powerkey::model_info{})),
           ansi_(isatty(1) != 0) {}
 
-    // Takes in a decoded message; true when the picture changed. Keys from pressed_keys, LED maps
-    // from led_on_map / led_blink_map (only the LEDs a frame covers change), a PKP command
-    // 6500h/01h by its key and state, the PKP-3500-MT's rings from encoder_leds.
+    // Takes in a decoded message; true when the picture changed. Keys from key_change (only the
+    // keys a frame covers change: a J1939 key contact state its one key), LED maps from
+    // led_on_map / led_blink_map (only the LEDs a frame covers change), a PKP command 6500h/01h
+    // and a J1939 single-LED command (SI form) by key and state, the PKP-3500-MT's rings from
+    // encoder_leds. The J1939 multiple-LED frames are not drawn: one frame alone is half a state.
     bool update(const powerkey::message& msg) {
         const auto before = state_;
-        if (const auto k = powerkey::pressed_keys(msg)) state_.keys = k->mask();
+        if (const auto k = powerkey::key_change(msg, model_))
+            state_.keys = (state_.keys & ~k->covered.mask()) | k->pressed.mask();
         auto apply = [](std::uint64_t* planes, const powerkey::led_map_update& u) {
             for (int p = 0; p < 3; ++p) {
                 const auto pl = static_cast<powerkey::plane>(p);
@@ -44,6 +47,9 @@ public:
         if (const auto* c = std::get_if<powerkey::command>(&msg);
             c && c->code == powerkey::command_code::set_led_state && c->key >= 1 && c->key <= 64)
             set_key(c->key - 1u, powerkey::to_string(c->state));
+        if (const auto* l = std::get_if<powerkey::j1939::set_led>(&msg);
+            l && l->key >= 1 && l->key <= 64)
+            set_j1939_led(l->key - 1u, *l);
         if (const auto* r = std::get_if<powerkey::encoder_leds>(&msg))
             state_.rings = r->leds.mask();
         return !(before == state_);
@@ -134,6 +140,30 @@ private:
         if (rest == "_red_blink") state_.blink[0] |= bit_i;
     }
 
+    // A J1939 colour as planes (bit 0 red, 1 green, 2 blue): the mixed colours as their parts,
+    // amber and yellow-green as yellow (the picture has eight colours).
+    static unsigned planes_of(powerkey::j1939::led_colour c) {
+        static constexpr unsigned planes[10] = {0, 1, 2, 4, 3, 6, 5, 7, 3, 3};
+        const auto i = static_cast<unsigned>(c);
+        return i < 10 ? planes[i] : 0;
+    }
+    // J1939 01h (SI form): on shows the colour, blink blinks it, alternate blink shows the colour
+    // with the secondary blinking (as the PKP's two-colour blinks).
+    void set_j1939_led(unsigned i, const powerkey::j1939::set_led& l) {
+        const std::uint64_t bit_i = std::uint64_t{1} << i;
+        for (auto* plane : {state_.on, state_.blink})
+            for (int p = 0; p < 3; ++p) plane[p] &= ~bit_i;
+        using powerkey::led_mode;
+        const unsigned c = planes_of(l.colour), s = planes_of(l.secondary);
+        for (int p = 0; p < 3; ++p) {
+            const unsigned b = 1u << p;
+            if ((l.mode == led_mode::on || l.mode == led_mode::alternate_blink) && (c & b))
+                state_.on[p] |= bit_i;
+            if ((l.mode == led_mode::blink && (c & b)) ||
+                (l.mode == led_mode::alternate_blink && (s & b)))
+                state_.blink[p] |= bit_i;
+        }
+    }
     static unsigned bit(std::uint64_t m, unsigned i) {
         return static_cast<unsigned>((m >> i) & 1u);
     }

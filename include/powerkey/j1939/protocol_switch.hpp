@@ -39,7 +39,9 @@ struct switch_to_canopen {
 }
 
 // Errors: wrong_id_format (an 11-bit frame), wrong_id (a PGN other than EF00h), wrong_length (not
-// 8 bytes), unknown_command (other data: another proprietary message on the same PGN).
+// 8 bytes), unknown_command (other data: another proprietary message on the same PGN),
+// undocumented (sent to the global address FFh: no source shows a keypad acting on a command
+// there; the keypad codec, keypad/j1939_codec.hpp, refuses it the same way).
 [[nodiscard]] constexpr result<switch_to_canopen> decode_switch_to_canopen(
     const can::frame& f) noexcept {
     const auto id = parse_id(f);
@@ -48,6 +50,7 @@ struct switch_to_canopen {
     if (f.size() != 8) return errc::wrong_length;
     for (std::size_t i = 0; i < 8; ++i)
         if (f[i] != switch_to_canopen_data[i]) return errc::unknown_command;
+    if (id->destination == global_address) return errc::undocumented;
     return switch_to_canopen{id->priority, id->destination, id->source};
 }
 

@@ -5,18 +5,23 @@
 //   if (const auto msg = decode(f, node, model::pkp2400))
 //       if (const auto keys = pressed_keys(*msg); keys && keys->contains(3)) ...
 //
-//   pressed_keys          key-state PDO, or a read reply of `keys` (2000h sub 1, 6000h)
+//   pressed_keys          key-state PDO, a read reply of `keys` (2000h sub 1, 6000h), a J1939
+//                         heartbeat (every key) or key contact state (one key)
+//   key_change            the same, with the keys the frame states (a key contact state: one)
 //   led_on_map            LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h,
 //   led_blink_map         PK1000 and SI 2001h per colour or in pieces): the map, and the LEDs it
 //                         covers; these two take the model, which says which LEDs a frame covers
 //   led_brightness_level  LED brightness PDO, a write or read reply of `led_brightness`, command
-//                         02h
+//                         02h, J1939 command 02h
 //   backlight_change      backlight PDO, writes and read replies of the backlight objects,
-//                         commands 03h and 04h: the level and/or the colour the frame sets
+//                         commands 03h and 04h, J1939 command 03h: the level and/or the colour
+//                         the frame sets
 //   node_id_change        a write of `node_id` (2013h) or command 70h
+//   address_change        J1939 command 70h: the keypad's new source address
 //   reported_nmt_state    a heartbeat or boot-up message
 // The "default_..." objects and commands set what the keypad shows after the next power on, not
-// now, so they answer none of these.
+// now, so they answer none of these; nor do the J1939 LED commands, which set colours, not the
+// planes of an LED map.
 #ifndef POWERKEY_KEYPAD_ACCESSORS_HPP
 #define POWERKEY_KEYPAD_ACCESSORS_HPP
 
@@ -31,11 +36,41 @@
 
 namespace powerkey {
 
+// The keys a frame says are pressed. A J1939 key contact state names one key: its set is that
+// key when pressed and empty when released, whatever the other keys do (key_change says which
+// keys a frame covers).
 [[nodiscard]] constexpr std::optional<key_set> pressed_keys(const message& msg) noexcept {
     if (const auto* k = std::get_if<key_state>(&msg)) return k->keys;
     if (const auto* r = std::get_if<sdo_read_reply>(&msg); r && r->object == object::keys)
         return key_set::from_mask(r->value.raw);
+    if (const auto* h = std::get_if<j1939::heartbeat>(&msg)) return h->keys;
+    if (const auto* c = std::get_if<j1939::key_contact>(&msg)) {
+        key_set s;
+        if (c->pressed) s.insert(c->key);
+        return s;
+    }
     return std::nullopt;
+}
+
+// The keys a frame states (`covered`) and which of them are pressed: every key of the model for
+// a key-state PDO, a read of `keys` and a J1939 heartbeat; the one key of a J1939 key contact
+// state (the others keep theirs).
+struct key_update {
+    key_set pressed;
+    key_set covered;
+    friend constexpr bool operator==(const key_update&, const key_update&) noexcept = default;
+};
+
+[[nodiscard]] constexpr std::optional<key_update> key_change(const message& msg, model m) noexcept {
+    const auto keys = pressed_keys(msg);
+    if (!keys) return std::nullopt;
+    key_set covered;
+    if (const auto* c = std::get_if<j1939::key_contact>(&msg)) {
+        covered.insert(c->key);
+    } else if (const auto keypad = info(m)) {
+        for (unsigned k = 1; k <= keypad->keys; ++k) covered.insert(k);
+    }
+    return key_update{*keys, covered};
 }
 
 // An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states (the
@@ -119,6 +154,9 @@ constexpr std::optional<led_map_update> led_map_of(const message& msg, model m,
     if (const auto* c = std::get_if<command>(&msg);
         c && c->code == command_code::set_led_brightness)
         return c->level;
+    if (const auto* c = std::get_if<j1939::command>(&msg);
+        c && c->code == j1939::command_code::set_led_brightness)
+        return c->level;
     return std::nullopt;
 }
 
@@ -152,6 +190,9 @@ struct backlight_update {
         if (c->code == command_code::set_backlight_colour)
             return backlight_update{std::nullopt, c->colour};
     }
+    if (const auto* c = std::get_if<j1939::command>(&msg);
+        c && c->code == j1939::command_code::set_backlight_level)
+        return backlight_update{c->level, std::nullopt};
     return std::nullopt;
 }
 
@@ -162,6 +203,15 @@ struct backlight_update {
         return canopen::node_id::make(w->value.raw).value_or(canopen::default_node_id);
     if (const auto* c = std::get_if<command>(&msg); c && c->code == command_code::set_node_id)
         return c->node_id;
+    return std::nullopt;
+}
+
+// The J1939 source address a message moves the keypad to (command 70h; FFh there keeps it), if
+// it does.
+[[nodiscard]] constexpr std::optional<std::uint8_t> address_change(const message& msg) noexcept {
+    if (const auto* c = std::get_if<j1939::command>(&msg);
+        c && c->code == j1939::command_code::set_source_address && c->address != 0xFF)
+        return c->address;
     return std::nullopt;
 }
 

@@ -4,6 +4,8 @@
 //   encode(node, model, message)   -> result<can::frame>   the inverse: encode(decode(f)) == f
 //
 // `node` is the keypad's current node id: it picks the COB-IDs of the PDOs, SDOs and heartbeat.
+// A 29-bit frame is a J1939 one: the J1939 codec (keypad/j1939_codec.hpp) reads it, at whatever
+// address (an overload narrows to one keypad address, as `node` does in CANopen).
 // A frame that belongs to no keypad (another node, another function) is refused with
 // errc::wrong_id, never mis-decoded. encode refuses every message decode could never return
 // (a key or LED the model lacks, a value outside its object's range, a write to a read-only
@@ -24,6 +26,7 @@
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
@@ -33,7 +36,9 @@
 
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <variant>
 
 namespace powerkey {
@@ -498,12 +503,62 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
     }
 }
 
-// A 29-bit frame: the J1939 switch back to CANopen, for a keypad that has it.
+// A 29-bit frame: a J1939 frame of the keypad at `address` (nullopt: any), in the one
+// vocabulary (every model has a J1939 row, keypad/j1939_models.hpp).
+constexpr result<message> decode_j1939(model m, const can::frame& f,
+                                       j1939::keypad_address address) noexcept {
+    const auto r = j1939::decode(f, m, address);
+    if (!r) return r.error();
+    return to_message(*r);
+}
+// The same at any address, from the front's default case, its wrong_length read again as every
+// other frame's. Out of line, and given only what the front already holds (the layout): no
+// CANopen frame pays for a J1939 argument.
 template <reading how>
-constexpr result<message> decode_extended(const model_layout& keypad,
-                                          const can::frame& f) noexcept {
-    if (!keypad.j1939) return errc::wrong_id_format;
-    return lift<how>(j1939::decode_switch_to_canopen(f), f, keypad);
+POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
+                                                               const can::frame& f) noexcept {
+    const auto r = decode_j1939(keypad.id, f, std::nullopt);
+    if (!r && r.error() == errc::wrong_length) return misfit<how>(f, keypad);
+    return r;
+}
+
+// A J1939 alternative of message (encode hands it to the J1939 codec).
+template <class T>
+inline constexpr bool is_j1939_alternative = j1939::message_alternative<T>;
+
+// The J1939 alternatives are the switch back and every alternative from key_contact on. The
+// switch is built as before, with the CANopen messages; the others are told apart by one compare
+// of the index, not a visit.
+inline constexpr std::size_t switch_index =
+    message(std::in_place_type<j1939::switch_to_canopen>).index();
+inline constexpr std::size_t first_j1939_index =
+    message(std::in_place_type<j1939::key_contact>).index();
+constexpr bool j1939_alternatives_in_place() noexcept {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+        return ((is_j1939_alternative<std::variant_alternative_t<I, message>> ==
+                 (I == switch_index || I >= first_j1939_index)) &&
+                ...);
+    }
+    (std::make_index_sequence<std::variant_size_v<message>>{});
+}
+static_assert(j1939_alternatives_in_place());
+
+// A J1939 message's frame: j1939::encode's (it checks the frame by decoding it back, narrowed to
+// `address` when given). Out of line: no CANopen message comes here.
+POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
+    model m, const message& msg, j1939::keypad_address address) noexcept {
+    return std::visit(
+        [m, address](const auto& v) -> result<can::frame> {
+            using T = std::remove_cvref_t<decltype(v)>;
+            if constexpr (is_j1939_alternative<T>) {
+                T manual = v;  // whatever `form` says, the manual's form is built
+                if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
+                return j1939::encode(m, manual, address);
+            } else {
+                return errc::wrong_id_format;  // not reached: encode chose this path by the index
+            }
+        },
+        msg);
 }
 
 // --- frames not in the manual's form -----------------------------------------------------------
@@ -593,6 +648,8 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
                           std::is_same_v<T, canopen::sync_message> ||
                           std::is_same_v<T, j1939::switch_to_canopen>) {
                 return encode(v);  // canopen::encode or j1939::encode, found by ADL
+            } else if constexpr (is_j1939_alternative<T>) {
+                return errc::wrong_id_format;  // encode gives these to encode_j1939
             } else if constexpr (std::is_same_v<T, key_state>) {
                 return pdo_frame(function::tpdo1, node, 5,
                                  (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
@@ -684,7 +741,11 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
             return answer(canopen::heartbeat_message{canopen::nmt_state{f[0]}});
         }
         default:
-            if (f.is_extended()) return decode_extended<how>(keypad, f);
+            if (f.is_extended()) {
+                // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
+                if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
+                return decode_extended<how>(keypad, f);
+            }
             // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
             if (id == canopen::nmt_cob_id.value())
                 return lift<how>(canopen::decode_nmt(f), f, keypad);
@@ -731,9 +792,9 @@ POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
 // manual form with `form` trimmed or padded; `reading::strict` refuses them with wrong_length.
 // A frame of the manual's length pays nothing for the tolerance: the other lengths are read again
 // out of line (detail::reread). Errors:
-//   wrong_id_format     a 29-bit frame for a keypad without J1939
-//   wrong_id            another node's COB-ID, a function the model does not use, a 29-bit frame
-//                       on a PGN other than EF00h
+//   wrong_id            another node's COB-ID, a function the model does not use
+//   (a 29-bit frame)    j1939::decode's (keypad/j1939_codec.hpp): wrong_id for a PGN the keypads
+//                       do not use, undocumented for a frame no source shows on the model, ...
 //   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes) that is not
 //                       trimmed or padded either (or any other dlc, read strictly)
 //   unknown_command     an NMT command or SDO specifier the keypads do not use; an access the
@@ -771,21 +832,47 @@ template <model M>
     return decode(f, node, M, how);
 }
 
+// decode with the J1939 frames narrowed to the keypad at `address` (j1939::decode's `keypad`: its
+// own frames from it, commands to it; nullopt for any address). A J1939 frame has one length,
+// 8 bytes: the tolerant reading finds no other form for it.
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node, model m,
+                                               j1939::keypad_address address,
+                                               reading how = reading::tolerant) noexcept {
+    if (f.is_extended() && detail::is_model(m)) return detail::decode_j1939(m, f, address);
+    return decode(f, node, m, how);
+}
+
 // The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg: the
 // manual's form, whatever msg's `form` says.
 // A message decode could never return is refused with the error decode gives its frame
 // (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
 // carry, members the message's kind does not use set), or unknown_object for an object the
 // model's dictionary does not have.
+// A J1939 message's frame is the J1939 codec's, checked as j1939::encode checks it (`node` is not
+// used).
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
+    if (msg.index() >= detail::first_j1939_index) [[unlikely]]
+        return detail::encode_j1939(m, msg, std::nullopt);
     const auto f = detail::build(detail::layout(m), node, msg);
     if (!f) return f.error();
     const auto back = detail::decode_at<reading::strict>(*f, node, detail::layout(m));
     if (!back) return back.error();
     if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;
+}
+
+// The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,
+// model, address) reads it (a key contact state to an address needs it: otherwise its bytes
+// read as an LED command).
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
+                                                  const message& msg,
+                                                  j1939::keypad_address address) noexcept {
+    if (detail::is_model(m) &&
+        (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index))
+        return detail::encode_j1939(m, msg, address);
+    return encode(node, m, msg);
 }
 
 }  // namespace powerkey

@@ -37,6 +37,12 @@ namespace powerkey::j1939 {
 inline constexpr pgn multiple_leds_1_pgn = 0xA700;  // "AUXILIARY I/O #2", "color 1"
 inline constexpr pgn multiple_leds_2_pgn = 0xA600;  // "AUXILIARY I/O #3", "color 2"
 inline constexpr pgn address_claim_pgn = 0xEE00;
+
+// A PGN the keypads use: any other is not a keypad frame (decode's errc::wrong_id).
+[[nodiscard]] constexpr bool is_keypad_pgn(pgn p) noexcept {
+    return p == proprietary_a_pgn || p == multiple_leds_1_pgn || p == multiple_leds_2_pgn ||
+           p == address_claim_pgn;
+}
 // Bytes 0..1 of every proprietary-A keypad frame but the LED acknowledgement (section 4).
 inline constexpr std::uint8_t header_0 = 0x04;
 inline constexpr std::uint8_t header_1 = 0x1B;
@@ -114,6 +120,12 @@ constexpr bool ff_from(std::uint64_t w, unsigned from) noexcept {
 
 constexpr std::uint8_t byte_of(std::uint64_t w, unsigned i) noexcept {
     return static_cast<std::uint8_t>(w >> (8 * i));
+}
+
+// Bits 25..16 of a 29-bit identifier (EDP, DP, PDU format: a PDU1 PGN's high bits) of a keypad
+// PGN: EF00h, A700h, A600h, EE00h.
+constexpr bool is_keypad_pf(std::uint32_t pf) noexcept {
+    return pf == 0xEF || pf == 0xA7 || pf == 0xA6 || pf == 0xEE;
 }
 
 // The identifier of a frame the keypad sends: from the narrowed keypad, if any.
@@ -390,7 +402,8 @@ constexpr result<message> multiple_leds_of(const model_row& r, const route& at, 
         const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
         if (c >= 0xA && c <= 0xE) return errc::value_out_of_range;
     }
-    return answer(multiple_leds{at.priority, at.destination, at.source, frame, w & used});
+    return answer(multiple_leds{at.priority, at.destination, at.source, frame,
+                                multiple_leds::halves(w & used)});
 }
 
 constexpr result<message> address_claimed_of(const model_row& r, const route& at, std::uint64_t w,
@@ -460,7 +473,7 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
     } else if constexpr (std::is_same_v<T, multiple_leds>) {
         const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
         return frame_of(v.frame.value() == 1 ? multiple_leds_1_pgn : multiple_leds_2_pgn,
-                        v.priority, v.destination, v.source, (v.nibbles & used) | ~used);
+                        v.priority, v.destination, v.source, (v.word() & used) | ~used);
     } else if constexpr (std::is_same_v<T, command>) {
         const command_row* row = find_command(raw(v.code));
         if (row == nullptr) return ef(header(raw(v.code)) | ff_past(3));
@@ -495,12 +508,13 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
                                                keypad_address keypad = std::nullopt) noexcept {
     if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
     if (!f.is_extended()) return errc::wrong_id_format;
-    const model_row& r = detail::j1939_row_of(m);
     const std::uint32_t id = f.raw_id();
+    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
+    // First: most 29-bit frames on a bus are not a keypad's (the CANopen front sends them all).
+    if (!detail::is_keypad_pf(pf)) return errc::wrong_id;
+    const model_row& r = detail::j1939_row_of(m);
     const detail::route at{priority::make((id >> 26) & 7u).value(),
                            static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)};
-    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
-    if (pf != 0xEF && pf != 0xA7 && pf != 0xA6 && pf != 0xEE) return errc::wrong_id;
     if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = f.data_le();

@@ -202,7 +202,18 @@ struct multiple_leds {
     std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
     colour_frame frame = 1;
-    std::uint64_t nibbles = 0;  // LED k's code in bits 4(k-1)..4k-1; 0 past the model's LEDs
+    // LED k's code in bits 4(k-1)..4k-1 of the data word, 0 past the model's LEDs: LEDs 1..8 in
+    // nibbles[0], 9..16 in nibbles[1]. Two 32-bit halves, not one 64-bit word: an 8-byte member
+    // would align powerkey::message to 8 bytes and make it 8 bytes larger.
+    std::array<std::uint32_t, 2> nibbles{};
+
+    // The data word of the nibbles (LED 1 in bits 0..3), and the nibbles of a data word.
+    [[nodiscard]] constexpr std::uint64_t word() const noexcept {
+        return nibbles[0] | (std::uint64_t{nibbles[1]} << 32);
+    }
+    [[nodiscard]] static constexpr std::array<std::uint32_t, 2> halves(std::uint64_t w) noexcept {
+        return {static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(w >> 32)};
+    }
 
     static constexpr std::string_view code_names[] = {"red",          "green",  "blue",  "yellow",
                                                       "cyan",         "violet", "white", "amber",
@@ -210,13 +221,15 @@ struct multiple_leds {
 
     // LED k's code (0h..Fh), 0 outside 1..16.
     [[nodiscard]] constexpr std::uint8_t code_of(unsigned k) const noexcept {
-        return k >= 1 && k <= 16 ? static_cast<std::uint8_t>((nibbles >> (4 * (k - 1))) & 0xF) : 0;
+        if (k < 1 || k > 16) return 0;
+        return static_cast<std::uint8_t>((nibbles[(k - 1) / 8] >> (4 * ((k - 1) % 8))) & 0xF);
     }
     // LED k gets code c (0h none).
     constexpr multiple_leds& set(unsigned k, std::uint8_t c) noexcept {
         if (k >= 1 && k <= 16) {
-            const unsigned at = 4 * (k - 1);
-            nibbles = (nibbles & ~(std::uint64_t{0xF} << at)) | (std::uint64_t{c & 0xFu} << at);
+            std::uint32_t& half = nibbles[(k - 1) / 8];
+            const unsigned at = 4 * ((k - 1) % 8);
+            half = (half & ~(std::uint32_t{0xF} << at)) | (std::uint32_t{c & 0xFu} << at);
         }
         return *this;
     }

@@ -5,7 +5,15 @@
 //                     sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
 //                     sdo_upload_initiate_response, sdo_segment_request, sdo_segment_response,
 //                     sdo_abort_request, sdo_abort_response,
-//                     encoder_state, analog_inputs, encoder_leds>      (the PKP-3500-MT's)
+//                     encoder_state, analog_inputs, encoder_leds,      (the PKP-3500-MT's)
+//                     j1939::key_contact, j1939::heartbeat, j1939::software_revision,
+//                     j1939::led_ack, j1939::led_ack_code, j1939::address_claimed,
+//                     j1939::set_led, j1939::set_led_code, j1939::multiple_leds,
+//                     j1939::command>                  (J1939, keypad/j1939_messages.hpp)
+//
+// One type for both protocols: a keypad switches between them on the same bus (20FFh, 80h), so a
+// log, a session and a tool meet both; the J1939 kinds start with "j1939_" (docs/j1939.md, "One
+// vocabulary").
 //
 // Each struct follows the kind/fields convention (fields.hpp): a stable `kind` and `fields(self,
 // f)`, which names every field the frame carries. The names are the same for every model: the
@@ -23,6 +31,7 @@
 #include <powerkey/frame_form.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/commands.hpp>
+#include <powerkey/keypad/j1939_messages.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/value_kinds.hpp>
 #include <powerkey/keypad/values.hpp>
@@ -150,25 +159,47 @@ struct sdo_write_reply {
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
-// Every frame any keypad speaks or hears.
+// Every frame any keypad speaks or hears, in CANopen and in J1939 (the switch back, 80h, is one
+// alternative of both).
 using message =
     std::variant<canopen::nmt_message, canopen::sync_message, canopen::heartbeat_message,
                  j1939::switch_to_canopen, key_state, led_on, led_blink, led_brightness, backlight,
                  sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
                  canopen::sdo_upload_initiate_response, canopen::sdo_segment_request,
                  canopen::sdo_segment_response, canopen::sdo_abort_request,
-                 canopen::sdo_abort_response, encoder_state, analog_inputs, encoder_leds>;
+                 canopen::sdo_abort_response, encoder_state, analog_inputs, encoder_leds,
+                 j1939::key_contact, j1939::heartbeat, j1939::software_revision, j1939::led_ack,
+                 j1939::led_ack_code, j1939::address_claimed, j1939::set_led, j1939::set_led_code,
+                 j1939::multiple_leds, j1939::command>;
 
-// How msg's frame was written: the manual's form, or trimmed or padded (frame_form.hpp); every
-// alternative has `form`, which decode sets and encode ignores (it builds the manual's form).
+// A J1939 frame of the keypads: its message in the one vocabulary (every J1939 alternative is
+// one of message's).
+[[nodiscard]] constexpr message to_message(const j1939::message& msg) noexcept {
+    return std::visit([](const auto& v) { return message{v}; }, msg);
+}
+
+// How msg's frame was written: the manual's form, or trimmed or padded (frame_form.hpp); decode
+// sets it and encode ignores it (it builds the manual's form). A J1939 frame always has its 8
+// bytes (the J1939 messages but the switch have no `form`: always the manual's).
 [[nodiscard]] constexpr frame_form form_of(const message& msg) noexcept {
-    return std::visit([](const auto& s) { return s.form; }, msg);
+    return std::visit(
+        [](const auto& s) {
+            if constexpr (requires { s.form; })
+                return s.form;
+            else
+                return frame_form::manual;
+        },
+        msg);
 }
 
 namespace detail {
-// msg with its form set to `form`.
+// msg with its form set to `form` (a J1939 message without `form` unchanged).
 constexpr message with_form(message msg, frame_form form) noexcept {
-    std::visit([form](auto& s) { s.form = form; }, msg);
+    std::visit(
+        [form](auto& s) {
+            if constexpr (requires { s.form; }) s.form = form;
+        },
+        msg);
     return msg;
 }
 }  // namespace detail

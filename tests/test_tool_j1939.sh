@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# The powerkey tool on J1939 frames (registered by tools/powerkey/CMakeLists.txt):
+#   test_tool_j1939.sh POWERKEY_BINARY SOURCE_DIR [SAMPLE_LOGS_BINARY]
+# The J1939 sample logs (a session of each model with a complete J1939 manual, a log crossing the
+# switch both ways) decode without an error and come back byte for byte through
+# `decode --json | encode --json`; frames to other PGNs are not keypad frames; --address narrows
+# to one keypad; encode, list, --show and --model auto know the J1939 messages.
+set -uo pipefail
+pk=$1
+src=$2
+gen=${3:-}
+logs=$src/examples/logs
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+frames_of() { grep -v '^#' "$1" | awk 'NF { print $NF }'; }
+
+# The sample logs: current, every frame decoded, the round trip exact.
+for name in j1939-pkp1600si j1939-pkp2600si switch-pkp2600si; do
+  log=$logs/$name.log
+  m=${name#*-}
+  [ -s "$log" ] || { fail "$name: no sample log $log"; continue; }
+  if [ -n "$gen" ]; then
+    "$gen" $name > "$tmp/gen.log" && cmp -s "$tmp/gen.log" "$log" ||
+      fail "$name: $log is stale; regenerate it with powerkey_sample_logs $name"
+  fi
+  "$pk" decode --model $m "$log" > "$tmp/text" 2> "$tmp/err" || fail "$name: decode exit status $?"
+  grep -q "error:" "$tmp/text" && fail "$name: decode errors: $(grep -m3 'error:' "$tmp/text")"
+  grep -q " decoded, 0 of other nodes or no keypad, 0 refused$" "$tmp/err" ||
+    fail "$name: summary: $(cat "$tmp/err")"
+  [ "$(wc -l < "$tmp/text")" -eq "$(frames_of "$log" | wc -l)" ] || fail "$name: not one line per frame"
+  "$pk" decode --model $m --json "$log" > "$tmp/json" 2>/dev/null || fail "$name: decode --json exit status"
+  grep -q '"error"' "$tmp/json" && fail "$name: JSON errors: $(grep -m3 '"error"' "$tmp/json")"
+  "$pk" encode --json < "$tmp/json" > "$tmp/frames" || fail "$name: encode --json exit status"
+  frames_of "$log" | diff - "$tmp/frames" > /dev/null || fail "$name: round trip differs"
+  sed -E 's/"id":"[0-9A-F]*","ext":(true|false),"data":"[0-9A-F]*",//' "$tmp/json" |
+    "$pk" encode --json --model $m > "$tmp/frames2" || fail "$name: encode --json without id/data"
+  frames_of "$log" | diff - "$tmp/frames2" > /dev/null || fail "$name: round trip from fields differs"
+done
+
+# The lines of a J1939 frame: the kind, the identifier's fields, the fields with CANopen's names.
+echo '18EFFF21#041B01030121FFFF' | "$pk" decode --model pkp1600si > "$tmp/out" 2>/dev/null
+grep -q "J1939 key contact  priority: 6  destination: FFh  source: 21h  key: 3  pressed: yes  identifier: 21h" "$tmp/out" ||
+  fail "key contact text: $(cat "$tmp/out")"
+echo '18EFFF21#041BF9030800FF21' | "$pk" decode --model pkp1600si --json > "$tmp/out" 2>/dev/null
+grep -q '"kind":"j1939_heartbeat","fields":{"priority":6,"destination":255,"source":33,"counter":3,"keys":\[4\],"identifier":33}' "$tmp/out" ||
+  fail "heartbeat JSON: $(cat "$tmp/out")"
+
+# The switch, both ways: the session says so on the two frames that cross it.
+"$pk" decode --model pkp2600si "$logs/switch-pkp2600si.log" > "$tmp/out" 2>/dev/null
+grep -q "615#2BFF200101000000 .*\[protocol now j1939\]" "$tmp/out" || fail "switch to J1939: $(cat "$tmp/out")"
+grep -q "18EF0200#041B8000FFFFFFFF .*\[protocol now canopen\]" "$tmp/out" || fail "switch back: $(cat "$tmp/out")"
+
+# Another PGN is not a keypad frame, counted with the other nodes' frames; a keypad frame the
+# model refuses is an error.
+printf '%s\n' '18FEF100#FFFFFFFFFFFFFFFF' '18EFFF21#041B01030121FFFF' '18A72100#1101FFFFFFFFFFFF' \
+  > "$tmp/mixed.log"
+"$pk" decode --model pkp2400si "$tmp/mixed.log" > "$tmp/out" 2> "$tmp/err"
+grep -q "18FEF100#FFFFFFFFFFFFFFFF .*j1939  not a keypad frame (PGN FEF1h)" "$tmp/out" ||
+  fail "other PGN: $(cat "$tmp/out")"
+grep -q "18A72100#1101FFFFFFFFFFFF .*error: undocumented" "$tmp/out" ||
+  fail "multiple LEDs on a PKP-2400-SI (no source): $(cat "$tmp/out")"
+grep -q "summary: 3 frames: 1 decoded, 1 of other nodes or no keypad, 1 refused (undocumented 1)" "$tmp/err" ||
+  fail "mixed summary: $(cat "$tmp/err")"
+
+# --address narrows to one keypad: keypad 22h's frames are another keypad's, commands to 21h too.
+printf '%s\n' '18EFFF21#041B01030121FFFF' '18EFFF22#041B01030122FFFF' '18EF2100#041B021FFFFFFFFF' \
+  > "$tmp/two.log"
+"$pk" decode --model pkp1600si --address 22h "$tmp/two.log" > "$tmp/out" 2> "$tmp/err"
+[ "$(grep -c "another keypad's frame (keypad is 22h)" "$tmp/out")" -eq 2 ] ||
+  fail "--address 22h: $(cat "$tmp/out")"
+grep -q "18EFFF22#041B01030122FFFF .*key: 3  pressed: yes  identifier: 22h" "$tmp/out" ||
+  fail "--address 22h, its own frame: $(cat "$tmp/out")"
+"$pk" decode --model pkp1600si "$tmp/two.log" 2> "$tmp/err" | grep -c "J1939" | grep -qx 3 ||
+  fail "without --address every keypad decodes"
+for bad in FEh 0x100 x; do
+  "$pk" decode --address "$bad" "$tmp/two.log" > /dev/null 2> "$tmp/err"; rc=$?
+  [ $rc -eq 2 ] && grep -q "^powerkey: --address: expected a J1939 keypad address 00h..FDh" "$tmp/err" ||
+    fail "--address $bad: status $rc $(cat "$tmp/err")"
+done
+
+# encode: a J1939 message by its kind and fields; an addressed key contact state reads as an LED
+# command unless narrowed to the keypad that sends it.
+"$pk" encode --model pkp1600si j1939_set_led key=2 colour=red mode=on > "$tmp/out" ||
+  fail "encode j1939_set_led: status $?"
+grep -qx '18EF2100#041B0102010100FF' "$tmp/out" || fail "encode j1939_set_led: $(cat "$tmp/out")"
+"$pk" encode --model pkp1600si j1939_command command=set_led_brightness level=1Fh > "$tmp/out" ||
+  fail "encode 02h: status $?"
+grep -qx '18EF2100#041B021FFFFFFFFF' "$tmp/out" || fail "encode 02h: $(cat "$tmp/out")"
+# (identifier 01h: bytes 4..6 00 01 FF are also LED 2 off, state 01h; docs/j1939.md)
+"$pk" encode --model pkp1600si j1939_key_contact key=2 pressed=no identifier=1 destination=00h \
+  > /dev/null 2>&1 && fail "an addressed key contact state that reads as an LED command was encoded"
+"$pk" encode --model pkp1600si --address 21h j1939_key_contact key=2 pressed=no identifier=1 \
+  destination=00h > "$tmp/out" || fail "narrowed key contact: status $?"
+grep -qx '18EF0021#041B01020001FFFF' "$tmp/out" || fail "narrowed key contact: $(cat "$tmp/out")"
+
+# list: the J1939 messages a model has (the multiple-LED command only where a manual gives it).
+"$pk" list --model pkp1600si > "$tmp/out"
+for k in j1939_key_contact j1939_heartbeat j1939_set_led j1939_multiple_leds j1939_command j1939_address_claimed; do
+  grep -q "^$k " "$tmp/out" || fail "list pkp1600si: no $k"
+done
+"$pk" list --model pkp2400si | grep -q "^j1939_multiple_leds " && fail "list pkp2400si: multiple LEDs"
+
+# --show: key contact states press and release one key, the heartbeat sets them all, an LED command
+# colours one LED.
+printf '%s\n' '18EFFF21#041B01020121FFFF' '18EFFF21#041B01030121FFFF' '18EFFF21#041B01020021FFFF' \
+  '18EF2100#041B0105070200FF' > "$tmp/show.log"
+"$pk" decode --model pkp1600si --show "$tmp/show.log" > "$tmp/out" 2>/dev/null || fail "--show exit status"
+grep -qF '[ 1 .][ 2*.][ 3 .]' "$tmp/out" || fail "--show: key 2 down: $(cat "$tmp/out")"
+grep -qF '[ 1 .][ 2 .][ 3*.]' "$tmp/out" || fail "--show: key 3 still down after key 2's release: $(cat "$tmp/out")"
+grep -qF '[ 5 w]' "$tmp/out" || fail "--show: LED 5 blinking white: $(cat "$tmp/out")"
+
+# --model auto: the models with the multiple-LED command and 6 keys or more read the PKP-1600-SI
+# session; the narrowest is taken.
+"$pk" decode --model auto "$logs/j1939-pkp1600si.log" > /dev/null 2> "$tmp/err"
+head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp1600si: " ||
+  fail "--model auto on j1939-pkp1600si.log: $(head -1 "$tmp/err")"
+"$pk" decode --model auto "$logs/j1939-pkp2600si.log" > /dev/null 2> "$tmp/err"
+head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2600si: " ||
+  fail "--model auto on j1939-pkp2600si.log: $(head -1 "$tmp/err")"
+
+exit $failed
