@@ -107,8 +107,10 @@ TEST_CASE("message kinds are unique in the one message type, and kind_of names e
 // default. Where a manual gives a default, the default is the manual's: the LED brightness 3Fh
 // and the backlight level 00h (PK1000 section 3, "Default settings"; PK1000 14, 15), the colour
 // 00h of the backlight PDO that keeps the stored colour (PK1000 15 note 2), the J1939 switch's
-// priority 6 to the keypad's address 21h (PK1000 49), encoder 1 (TPDO2, MT 12). A kind added to
-// `message` fails the count until its row is here.
+// priority 6 to the keypad's address 21h (PK1000 49), encoder 1 (TPDO2, MT 12); the J1939
+// messages at priority 6, the keypad at its default address 21h, what it sends to the global
+// address FFh and what a controller (00h) sends to it (PKP1600SI and PKP2600SI J1939 manuals).
+// A kind added to `message` fails the count until its row is here.
 namespace {
 constexpr std::string_view default_messages[] = {
     "node 15h  NMT message  command: start  target: 00h",
@@ -134,13 +136,34 @@ constexpr std::string_view default_messages[] = {
     "node 15h  encoder state  encoder: 1  counterclockwise: no  ticks: 0  counter: 0  top: 0",
     "node 15h  analog inputs  in0_mv: 0  in1_mv: 0  in2_mv: 0  in3_mv: 0",
     "node 15h  encoder leds  leds: -",
+    "node 15h  J1939 key contact  priority: 6  destination: FFh  source: 21h  key: 1  pressed: no  "
+    "identifier: 21h",
+    "node 15h  J1939 heartbeat  priority: 6  destination: FFh  source: 21h  counter: 0  keys: -  "
+    "identifier: 21h",
+    "node 15h  J1939 software revision  priority: 6  destination: FFh  source: 21h  bytes: 00 00 "
+    "00 00 00",
+    "node 15h  J1939 LED ack  priority: 6  destination: FFh  source: 21h  key: 1  mode: off  "
+    "colour: off  secondary: off",
+    "node 15h  J1939 LED ack code  priority: 6  destination: FFh  source: 21h  key: 1  code: 00h",
+    "node 15h  J1939 address claimed  priority: 6  destination: FFh  source: 21h  identity_number: "
+    "00h  manufacturer_code: 00h  ecu_instance: 00h  function_instance: 00h  function: 00h  "
+    "vehicle_system: 00h  vehicle_system_instance: 00h  industry_group: 00h  "
+    "arbitrary_address_capable: no",
+    "node 15h  J1939 set LED  priority: 6  destination: 21h  source: 00h  key: 1  colour: off  "
+    "mode: off  secondary: off",
+    "node 15h  J1939 set LED code  priority: 6  destination: 21h  source: 00h  key: 1  code: 00h",
+    "node 15h  J1939 multiple leds  priority: 6  destination: 21h  source: 00h  frame: 01h  red: - "
+    " green: -  blue: -  yellow: -  cyan: -  violet: -  white: -  amber: -  yellow_green: -  "
+    "blink: -",
+    "node 15h  J1939 command  priority: 6  destination: 21h  source: 00h  command: "
+    "set_led_brightness  level: 00h",
 };
 template <std::size_t... I>
 void check_defaults(std::index_sequence<I...>) {
     (
         [] {
             const message m{std::variant_alternative_t<I, message>{}};
-            std::array<char, 256> buf{};
+            std::array<char, description_capacity> buf{};
             const auto d = describe(m, canopen::default_node_id, buf);
             CAPTURE(I);
             REQUIRE(d.has_value());
