@@ -171,7 +171,8 @@ TEST_CASE("j1939 accessors and descriptions") {
     CHECK(pk::pressed_keys(decoded(key3_down)) == key_set{3});
     CHECK(pk::pressed_keys(decoded(beat_key4)) == key_set{4});
     CHECK(pk::address_change(decoded("18EF2100#041B70FDFDFFFFFF")) == std::uint8_t{0xFD});
-    CHECK(widest_claim_description() == 288);
+    // widest_claim_description() is proved by its static_assert only: called at run time it
+    // crashes clang 14's code generation (ConstantEmitter::tryEmitPrivate).
     check_rows(pkp1600si_rows, describes_within_capacity);
     check_rows(pkp2600si_rows, describes_within_capacity);
     check_rows(other_rows, describes_within_capacity);
