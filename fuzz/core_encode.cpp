@@ -74,6 +74,10 @@ void check_alternative(input& in, node_id node) {
     } else if constexpr (I <= last_response) {
         check_decodes_to(f, decode_sdo_response(f, node),
                          sdo_response{std::in_place_index<I - first_response>, m});
+    } else if (m.destination == j1939::global_address) {
+        // Built as asked, but no source shows a keypad acting on the switch sent to every address:
+        // the decoder refuses it (docs/j1939.md).
+        POWERKEY_FUZZ_CHECK_FRAME(j1939::decode_switch_to_canopen(f) == errc::undocumented, f);
     } else {
         check_decodes_to(f, j1939::decode_switch_to_canopen(f), m);
     }
