@@ -698,6 +698,7 @@ TEST_CASE("SDO aborts with the CiA 301 codes") {
     CHECK(ask(p, "615#4000650100000000") == "595#8000650101000106");        // write only
     CHECK(ask(p, "615#2300650101090100", {20}) == "595#8000650130000906");  // key 9 of 8
     CHECK(ask(p, "615#2BFF200101000000", {30}) == "595#80FF200100000206");  // no J1939
+    CHECK(ask(p, "615#2B00180532000000", {40}) == "595#8000180502000106");  // E-PKP-10
 }
 
 TEST_CASE("one SDO at a time: a request while the keypad is answering is dropped (option)") {

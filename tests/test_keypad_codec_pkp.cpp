@@ -71,6 +71,9 @@ constexpr error_row errata[] = {
     {"E-PKP-8 keys 9-12", m2600, 0x15, "195#000F000000", errc{}},
     {"E-PKP-8 6001h byte 7", m2600, 0x15, "615#23016000000000FF", errc::reserved_not_zero},
     {"E-PKP-9 (E-CORE-3) 40h", pkp, 0x15, "595#4000610208000000", errc{}},
+    {"E-PKP-10 1800h/5 read back", pkp, 0x15, "595#4B00180500000000", errc{}},
+    {"E-PKP-10 1800h/5 written", pkp, 0x15, "615#2B00180532000000", errc::unknown_command},
+    {"E-PKP-10 period by command 12h", pkp, 0x15, "615#2300650112013200", errc{}},
 };
 constexpr bool erratum_holds(const error_row& r) {
     return for_models(r.models, [&](model m) {

@@ -190,12 +190,14 @@ constexpr error_row more_errata[] = {
     {"E-SI-23", si, 0x15, "615#2B17100009000000", errc::value_out_of_range},
     {"E-SI-23", si, 0x15, "615#2B1710000A000000", errc{}},
     {"E-SI-23", si, 0x15, "615#2B17100000000000", errc{}},
+    {"E-SI-24", m3500mt, 0x15, "595#43011A0108020020", errc{}},
+    {"E-SI-24", m3500mt, 0x15, "595#43021A0308070020", errc{}},
 };
 static_assert(first_failing(more_errata, erratum_holds) == std::size(more_errata));
 
-// Every erratum E-SI-1..23 has a row above.
+// Every erratum E-SI-1..24 has a row above.
 constexpr bool every_erratum_pinned() {
-    for (int n = 1; n <= 23; ++n) {
+    for (int n = 1; n <= 24; ++n) {
         char id[8] = {'E', '-', 'S', 'I', '-', 0, 0, 0};
         if (n < 10) {
             id[5] = static_cast<char>('0' + n);
