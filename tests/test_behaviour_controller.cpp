@@ -992,33 +992,33 @@ TEST_CASE("controller: a list longer than max_configuration is cut, and says so"
 
 TEST_CASE("key modes: momentary, toggle, cycle") {
     key_modes<> k;
-    CHECK(k.set(1, key_mode::momentary));
-    CHECK(k.set(2, key_mode::toggle));
-    CHECK(k.set(3, key_mode::cycle, 3));
-    CHECK(!k.set(4, key_mode::cycle, 1));
-    CHECK(!k.set(17, key_mode::toggle));
-    // Each bound at its end and one step outside: keys 1..16, a cycle of 2 states or more.
-    {
-        key_modes<> b;
-        CHECK(!b.set(0, key_mode::toggle));
-        CHECK(b.set(16, key_mode::toggle));
-        CHECK(!b.set(4, key_mode::cycle, 0));
-        CHECK(b.set(4, key_mode::cycle, 2));
-        CHECK(b.state(16) == 0);
-        CHECK(b.state(17) == 0);
-        CHECK(b.mode(17) == key_mode::momentary);
-        // A cycle of 2 wraps after state 1; one of 255 counts to 254.
-        const controller_event p4{event_kind::key_pressed, 4};
-        CHECK(b.on_event(p4) == key_mode_change{4, 1});
-        CHECK(b.on_event(p4) == key_mode_change{4, 0});
-        CHECK(b.set(5, key_mode::cycle, 255));
-        const controller_event p5{event_kind::key_pressed, 5};
-        for (unsigned s = 1; s < 255; ++s)
-            CHECK(b.on_event(p5) == key_mode_change{5, static_cast<std::uint8_t>(s)});
-        CHECK(b.on_event(p5) == key_mode_change{5, 0});
-        // A key past Keys changes nothing.
-        CHECK(b.on_event(controller_event{event_kind::key_pressed, 17}) == std::nullopt);
+    // Each setting in turn; each bound at its end and one step outside: keys 1..16, a cycle of
+    // 2 states or more (the default states, 2, are ignored but by cycle).
+    struct set_row {
+        unsigned key;
+        key_mode mode;
+        std::uint8_t states;
+        bool taken;
+    };
+    const set_row settings[] = {
+        {1, key_mode::momentary, 2, true}, {2, key_mode::toggle, 2, true},
+        {3, key_mode::cycle, 3, true},     {4, key_mode::cycle, 1, false},
+        {17, key_mode::toggle, 2, false},  {0, key_mode::toggle, 2, false},
+        {16, key_mode::toggle, 2, true},   {4, key_mode::cycle, 0, false},
+        {4, key_mode::cycle, 2, true},     {6, key_mode::cycle, 255, true},
+    };
+    for (const auto& r : settings) {
+        CAPTURE(r.key);
+        CHECK(k.set(r.key, r.mode, r.states) == r.taken);
     }
+    CHECK(k.state(16) == 0);
+    CHECK(k.state(17) == 0);
+    CHECK(k.mode(17) == key_mode::momentary);
+    // A cycle of 255 counts to 254, then wraps.
+    const controller_event p6{event_kind::key_pressed, 6};
+    for (unsigned s = 1; s < 255; ++s)
+        CHECK(k.on_event(p6) == key_mode_change{6, static_cast<std::uint8_t>(s)});
+    CHECK(k.on_event(p6) == key_mode_change{6, 0});
     const auto press = [](unsigned n) {
         return controller_event{event_kind::key_pressed, static_cast<std::uint8_t>(n)};
     };
@@ -1041,6 +1041,9 @@ TEST_CASE("key modes: momentary, toggle, cycle") {
         {press(3), key_mode_change{3, 0}},
         {controller_event{event_kind::key_long_press, 2}, std::nullopt},
         {press(5), key_mode_change{5, 1}},  // unset keys are momentary
+        {press(4), key_mode_change{4, 1}},  // a cycle of 2 wraps after state 1
+        {press(4), key_mode_change{4, 0}},
+        {press(17), std::nullopt},  // a key past Keys changes nothing
     };
     for (const auto& r : rows) CHECK(k.on_event(r.e) == r.change);
     k.reset();
@@ -1114,18 +1117,19 @@ TEST_CASE("controller, scripted: every timer the millisecond before and at its d
         };
         const std::vector<controller_event> none;
         const std::vector<controller_event> repeat{{event_kind::key_repeat, 1}};
-        CHECK(at(1499) == none);
-        CHECK(at(1500) == repeat);
-        CHECK(at(1699) == none);
-        CHECK(at(1700) == repeat);
-        CHECK(at(1799) == none);
-        CHECK(at(1800) == std::vector<controller_event>{{event_kind::key_long_press, 1}});
-        CHECK(at(1899) == none);
-        CHECK(at(1900) == repeat);
-        // Woken late (at 2400, due 2100): one repeat, then the period from then.
-        CHECK(at(2400) == repeat);
-        CHECK(at(2599) == none);
-        CHECK(at(2600) == repeat);
+        const std::vector<controller_event> long_press{{event_kind::key_long_press, 1}};
+        // Each tick in turn and what it brings. Woken late (at 2400, due 2100): one repeat, then
+        // the period from then.
+        const struct {
+            std::uint32_t t;
+            const std::vector<controller_event>& events;
+        } ticks[] = {{1499, none},   {1500, repeat},     {1699, none},  {1700, repeat},
+                     {1799, none},   {1800, long_press}, {1899, none},  {1900, repeat},
+                     {2400, repeat}, {2599, none},       {2600, repeat}};
+        for (const auto& tick : ticks) {
+            CAPTURE(tick.t);
+            CHECK(at(tick.t) == tick.events);
+        }
         // repeat_period 0: the repeats come every repeat_delay; long_press 0: none.
         cfg.repeat_period = duration_ms{0};
         cfg.long_press = duration_ms{0};  // off

@@ -184,6 +184,20 @@ TEST_CASE("frame form: trimmed and padded frames read as the manual's form, stri
 
 // --- every frame of every manual table, at every other length ----------------------------------
 
+// The tables of every manual: their frames, and the frames they refuse.
+struct manual_tables {
+    std::string_view name;
+    std::span<const row> rows;
+    std::span<const error_row> error_rows;
+};
+const manual_tables every_manual[] = {
+    {"core", core_rows, core_error_rows},
+    {"PK1000", pk1000_rows::rows, pk1000_rows::error_rows},
+    {"PKP", pkp_rows::rows, pkp_rows::error_rows},
+    {"SI", si_rows::rows, si_rows::error_rows},
+    {"SI reference", si_reference_rows::rows, si_reference_rows::error_rows},
+};
+
 // f with `length` bytes (its first ones, then 00h).
 can::frame resized(const can::frame& f, std::size_t length) {
     std::array<std::uint8_t, 8> b{};
@@ -198,8 +212,7 @@ can::frame resized(const can::frame& f, std::size_t length) {
 // always the same meaning, form padded; cut (k < n) the same meaning, form trimmed, or
 // wrong_length: wrong_length whenever a byte it lacks is not 00h, and once a cut decodes, every
 // longer cut decodes too (the used bytes are a prefix).
-template <class Row, std::size_t N>
-void every_length(const Row (&table)[N]) {
+void every_length(std::span<const row> table) {
     for (const auto& r : table) {
         const auto f = can::parse_candump(r.frame);
         REQUIRE(f);
@@ -242,17 +255,15 @@ void every_length(const Row (&table)[N]) {
 }
 
 TEST_CASE("frame form: every manual frame, cut and padded at every length") {
-    every_length(core_rows);
-    every_length(pk1000_rows::rows);
-    every_length(pkp_rows::rows);
-    every_length(si_rows::rows);
-    every_length(si_reference_rows::rows);
+    for (const auto& t : every_manual) {
+        INFO(std::string(t.name));
+        every_length(t.rows);
+    }
 }
 
 // Tolerance changes no other refusal: every error row of the tables, read tolerantly, is refused
 // the same way unless its strict refusal is wrong_length.
-template <std::size_t N>
-void same_refusals(const error_row (&table)[N]) {
+void same_refusals(std::span<const error_row> table) {
     for (const auto& r : table) {
         const auto f = can::parse_candump(r.frame);
         REQUIRE(f);
@@ -266,11 +277,10 @@ void same_refusals(const error_row (&table)[N]) {
 }
 
 TEST_CASE("frame form: the tables' other refusals are the same read tolerantly") {
-    same_refusals(core_error_rows);
-    same_refusals(pk1000_rows::error_rows);
-    same_refusals(pkp_rows::error_rows);
-    same_refusals(si_rows::error_rows);
-    same_refusals(si_reference_rows::error_rows);
+    for (const auto& t : every_manual) {
+        INFO(std::string(t.name));
+        same_refusals(t.error_rows);
+    }
 }
 
 }  // namespace
