@@ -5,12 +5,7 @@
 # every time and whatever the order of the options; option errors are usage errors; and the files
 # of every model are read by canmatrix and compared with the library (tests/test_dbc.py).
 set -uo pipefail
-pk=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
+. "$(dirname "$0")/tool_support.sh"
 
 # The checked-in files are current.
 count=0
@@ -66,5 +61,4 @@ else
   "$py" "$src/tests/test_dbc.py" "$pk" "$src" || fail "canmatrix: tests/test_dbc.py"
 fi
 
-[ $failed -eq 0 ] && echo "dbc: all checks passed"
-exit $failed
+finish "dbc"

@@ -5,39 +5,11 @@
 # for byte through `decode --json | encode --json`; bad input gets a one-line error naming the
 # file and line and the rest is still decoded; the exit status says whether anything failed.
 set -uo pipefail
-pk=$1
-src=$2
-gen=${3:-}
-logs=$src/examples/logs
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
-frames_of() { grep -v '^#' "$1" | awk 'NF { print $NF }'; }
+. "$(dirname "$0")/tool_support.sh"
 
 # Every model of the table (docs/models.md, docs/si-family.md) has its sample log.
 models="pk1000 pkp2200 pkp2400 pkp2600 pkp2600si pkp3500mt pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si"
-for m in $models; do
-  log=$logs/$m.log
-  [ -s "$log" ] || { fail "$m: no sample log $log"; continue; }
-  # The committed log is what the generator writes from the manual rows.
-  if [ -n "$gen" ]; then
-    "$gen" $m > "$tmp/gen.log" && cmp -s "$tmp/gen.log" "$log" ||
-      fail "$m: $log is stale; regenerate it with powerkey_sample_logs $m"
-  fi
-  "$pk" decode --model $m "$log" > "$tmp/text" || fail "$m: decode exit status $?"
-  grep -q "error:" "$tmp/text" && fail "$m: decode errors: $(grep -m3 'error:' "$tmp/text")"
-  [ "$(wc -l < "$tmp/text")" -eq "$(frames_of "$log" | wc -l)" ] || fail "$m: not one line per frame"
-  "$pk" decode --model $m --json "$log" > "$tmp/json" || fail "$m: decode --json exit status"
-  grep -q '"error"' "$tmp/json" && fail "$m: JSON errors: $(grep -m3 '"error"' "$tmp/json")"
-  # Every frame is rebuilt from its kind and fields, and checked against id/data.
-  "$pk" encode --json < "$tmp/json" > "$tmp/frames" || fail "$m: encode --json exit status"
-  frames_of "$log" | diff - "$tmp/frames" > /dev/null || fail "$m: round trip differs"
-  # Without id/data (nothing to compare with or copy from) the frames come from the fields alone.
-  sed -E 's/"id":"[0-9A-F]*","ext":(true|false),"data":"[0-9A-F]*",//' "$tmp/json" |
-    "$pk" encode --json > "$tmp/frames2" || fail "$m: encode --json without id/data"
-  frames_of "$log" | diff - "$tmp/frames2" > /dev/null || fail "$m: round trip from fields differs"
-done
+for m in $models; do check_sample_log $m $m; done
 
 # The three line forms read alike.
 printf '%s\n' '(1700000000.000000) can0 215#0000010000000008' > "$tmp/a"
@@ -575,5 +547,4 @@ timeout 60 "$pk" simulate --model pk1000 --press 4294967.000:1 "$tmp/late.log" >
   fail "simulate past the clock: status $rc, $(cat "$tmp/err")"
 tail -1 "$tmp/out" | grep -q "^(4294968\.000000) can0 195#01" || fail "simulate to the clock's end: $(tail -1 "$tmp/out")"
 
-[ $failed -eq 0 ] && echo "cli: all checks passed"
-exit $failed
+finish cli

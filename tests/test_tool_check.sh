@@ -7,15 +7,9 @@
 # virtual keypad's answers to it (powerkey simulate) passes too. The controller fault logs, the
 # warnings and the JUnit report: tests/test_tool_check_faults.py.
 set -uo pipefail
-pk=$1
-src=$2
+. "$(dirname "$0")/tool_support.sh"
 check() { "$pk" check "$@"; }
 sim() { "$pk" simulate "$@"; }
-logs=$src/examples/logs
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
 
 # The clean session: no output, status 0.
 check --model pk1000 "$logs/check-clean.log" >"$tmp/out" 2>"$tmp/err"
@@ -85,5 +79,4 @@ sim --model pk1000 "$logs/session-pk1000.log" >"$tmp/keypad" || fail "simulate f
 grep -v '^#' "$logs/session-pk1000.log" | cat - "$tmp/keypad" | sort -s -k1,1 >"$tmp/merged"
 check --model pk1000 "$tmp/merged" >"$tmp/out" || fail "controller + simulated keypad: $(cat "$tmp/out")"
 
-[ $failed -eq 0 ] && echo "check: all tests passed"
-exit $failed
+finish check

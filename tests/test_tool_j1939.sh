@@ -6,37 +6,13 @@
 # `decode --json | encode --json`; frames to other PGNs are not keypad frames; --address narrows
 # to one keypad; encode, list, --show and --model auto know the J1939 messages.
 set -uo pipefail
-pk=$1
-src=$2
-gen=${3:-}
-logs=$src/examples/logs
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
-frames_of() { grep -v '^#' "$1" | awk 'NF { print $NF }'; }
+. "$(dirname "$0")/tool_support.sh"
 
 # The sample logs: current, every frame decoded, the round trip exact.
 for name in j1939-pkp1600si j1939-pkp2600si switch-pkp2600si; do
-  log=$logs/$name.log
-  m=${name#*-}
-  [ -s "$log" ] || { fail "$name: no sample log $log"; continue; }
-  if [ -n "$gen" ]; then
-    "$gen" $name > "$tmp/gen.log" && cmp -s "$tmp/gen.log" "$log" ||
-      fail "$name: $log is stale; regenerate it with powerkey_sample_logs $name"
-  fi
-  "$pk" decode --model $m "$log" > "$tmp/text" 2> "$tmp/err" || fail "$name: decode exit status $?"
-  grep -q "error:" "$tmp/text" && fail "$name: decode errors: $(grep -m3 'error:' "$tmp/text")"
+  check_sample_log $name ${name#*-}
   grep -q " decoded, 0 of other nodes or no keypad, 0 refused$" "$tmp/err" ||
     fail "$name: summary: $(cat "$tmp/err")"
-  [ "$(wc -l < "$tmp/text")" -eq "$(frames_of "$log" | wc -l)" ] || fail "$name: not one line per frame"
-  "$pk" decode --model $m --json "$log" > "$tmp/json" 2>/dev/null || fail "$name: decode --json exit status"
-  grep -q '"error"' "$tmp/json" && fail "$name: JSON errors: $(grep -m3 '"error"' "$tmp/json")"
-  "$pk" encode --json < "$tmp/json" > "$tmp/frames" || fail "$name: encode --json exit status"
-  frames_of "$log" | diff - "$tmp/frames" > /dev/null || fail "$name: round trip differs"
-  sed -E 's/"id":"[0-9A-F]*","ext":(true|false),"data":"[0-9A-F]*",//' "$tmp/json" |
-    "$pk" encode --json --model $m > "$tmp/frames2" || fail "$name: encode --json without id/data"
-  frames_of "$log" | diff - "$tmp/frames2" > /dev/null || fail "$name: round trip from fields differs"
 done
 
 # The lines of a J1939 frame: the kind, the identifier's fields, the fields with CANopen's names.
@@ -120,4 +96,4 @@ head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp1600si: " ||
 head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2600si: " ||
   fail "--model auto on j1939-pkp2600si.log: $(head -1 "$tmp/err")"
 
-exit $failed
+finish

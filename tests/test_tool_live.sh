@@ -3,11 +3,7 @@
 # seconds apart are each written as soon as they are decoded, in text, JSON and --show, not when
 # the input ends.  test_tool_live.sh POWERKEY_BINARY
 set -uo pipefail
-pk=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
+. "$(dirname "$0")/tool_support.sh"
 
 # Writes two frames 3 s apart into `powerkey decode ARGS`; stamps each output line with the
 # milliseconds since the start.
@@ -30,5 +26,4 @@ for mode in text --json --show; do
   [ "$first" -lt 2500 ] || fail "$mode: the first line came after ${first} ms, not before the second frame"
   [ "$last" -ge 2900 ] || fail "$mode: the last line came after ${last} ms"
 done
-[ $failed -eq 0 ] && echo "live: all checks passed"
-exit $failed
+finish live

@@ -9,12 +9,7 @@
 # the forms no installed program writes: candump's screen output with -x and -a, cansend's dotted
 # form, TRC 1.1 and a UTF-8 byte-order mark.
 set -uo pipefail
-pk=$1
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
+. "$(dirname "$0")/tool_support.sh"
 py=/usr/bin/python3
 
 # id, data and kind of every decoded frame: what must agree between two forms of one log.
@@ -228,5 +223,4 @@ if [ -s "$tmp/pk1000.blf" ]; then
   [ $rc -eq 1 ] && grep -q "cut.blf:.*(damaged file?)\|cut.blf:.*(truncated?)" "$tmp/err" || fail "truncated BLF: $rc $(cat "$tmp/err")"
 fi
 
-[ $failed -eq 0 ] && echo "log formats: all checks passed"
-exit $failed
+finish "log formats"

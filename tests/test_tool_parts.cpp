@@ -540,6 +540,11 @@ TEST_CASE("escaping: control characters, DEL, quotes and bytes above 7Fh; long t
     CHECK(tool::escape("\x1B]0;x\x07") == "\\x1B]0;x\\x07");
     CHECK(tool::escape("a\"b\\c\x7F\xC3") == "a\\x22b\\x5Cc\\x7F\\xC3");
     CHECK(tool::escape(std::string(100, 'a'), 10) == "aaaaaaaaaa...");
+    // The one \xHH escape, which the JUnit XML of `check` shares.
+    std::string hex;
+    for (const int u : {0x00, 0x1F, 0x7F, 0xFF})
+        tool::append_hex_escape(hex, static_cast<unsigned char>(u));
+    CHECK(hex == "\\x00\\x1F\\x7F\\xFF");
 }
 
 TEST_CASE("field values from text and JSON, with their range checks named") {

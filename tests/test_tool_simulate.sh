@@ -4,13 +4,8 @@
 # The shipped session log (examples/logs/session-pk1000.log) gives exactly the keypad's frames
 # below; bare frames on stdin, --node, bad lines and usage errors behave as documented.
 set -uo pipefail
-pk=$1
+. "$(dirname "$0")/tool_support.sh"
 sim() { "$pk" simulate "$@"; }
-src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
 
 # The session: boot-up first, one reply per request 1 ms after it, heartbeats every 100 ms from
 # the 1017h write, the scripted key 3 press and release as key-state PDOs (tick = 100 ms units).
@@ -94,4 +89,4 @@ sim > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"
 sim --model pk9999 > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown model: exit status not 2"
 sim --model pk1000 --press 1:11 > /dev/null 2>&1; [ $? -eq 2 ] || fail "key 11: exit status not 2"
 
-exit $failed
+finish

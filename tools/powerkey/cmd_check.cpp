@@ -89,13 +89,10 @@ void append_xml(std::string& out, std::string_view s, std::size_t max = 4096) {
             case '"': out += "&quot;"; break;
             case '\'': out += "&apos;"; break;
             default:
-                if (u < 0x20 || u >= 0x7F) {
-                    out += "\\x";
-                    out += upper_hex[u >> 4];
-                    out += upper_hex[u & 15];
-                } else {
+                if (u < 0x20 || u >= 0x7F)
+                    append_hex_escape(out, u);
+                else
                     out += c;
-                }
         }
     }
     if (cut) out += "...";

@@ -16,6 +16,13 @@ namespace tool {
 
 inline constexpr char upper_hex[] = "0123456789ABCDEF";
 
+// One byte as \xHH, the escape of every writer of untrusted text (this one, the JUnit XML of
+// `check`).
+inline void append_hex_escape(std::string& out, unsigned char u) {
+    const char e[4] = {'\\', 'x', upper_hex[u >> 4], upper_hex[u & 15]};
+    out.append(e, 4);
+}
+
 // At most `max` characters of s (then "..."), escaped.
 inline void append_escaped(std::string& out, std::string_view s, std::size_t max = 64) {
     const bool cut = s.size() > max;
@@ -23,9 +30,7 @@ inline void append_escaped(std::string& out, std::string_view s, std::size_t max
     for (char c : s) {
         const auto u = static_cast<unsigned char>(c);
         if (u < 0x20 || u >= 0x7F || c == '"' || c == '\\') {
-            out += "\\x";
-            out += upper_hex[u >> 4];
-            out += upper_hex[u & 15];
+            append_hex_escape(out, u);
         } else {
             out += c;
         }
