@@ -522,6 +522,7 @@ inline constexpr error_row error_rows[] = {
     {"LED command byte 7 00h", si_leds, "18EF2100#041B010201010000", errc::reserved_not_ff},
     {"LED acknowledgement byte 7 00h", si_leds, "18EFFF21#0003010405FFFF00", errc::reserved_not_ff},
     {"LI acknowledgement byte 1 03h", li, "18EFFF21#00030305FFFFFFFF", errc::reserved_not_ff},
+    {"LI acknowledgement byte 4 00h", li, "18EFFF21#00FF030500FFFFFF", errc::reserved_not_ff},
     {"LI LED command byte 7 00h", li, "18EF2100#041B010305FFFF00", errc::reserved_not_ff},
     {"heartbeat byte 6 00h", every, "18EFFF21#041BF90302000021", errc::reserved_not_ff},
     {"PKP-1600-SI multiple LEDs, byte 3 00h", m1600si, "18A72100#11010000FFFFFFFF",

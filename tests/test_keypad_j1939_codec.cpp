@@ -86,6 +86,29 @@ constexpr bool ycyan() {
            combine(one, two, 5).defined == false && combine(one, two, 6).defined == false;
 }
 static_assert(ycyan());
+// The multiple-LED frame's data word (section 7b): LED k's code in bits 4(k-1)..4k-1, LEDs 1..16,
+// each alone; a code set again replaces the old one; numbers outside 1..16 change nothing; the
+// LEDs of a set get a code and the others that had it lose it.
+constexpr bool nibbles_led_by_led() {
+    for (unsigned k = 1; k <= 16; ++k) {
+        multiple_leds m;
+        m.set(k, 0xA);
+        if (m.word() != std::uint64_t{0xA} << (4 * (k - 1)) || m.code_of(k) != 0xA) return false;
+        m.set(k, 0x5);
+        if (m.word() != std::uint64_t{0x5} << (4 * (k - 1)) ||
+            m.leds_of(0x5) != powerkey::led_set{k})
+            return false;
+    }
+    multiple_leds m;
+    m.set(0, 1).set(17, 1);
+    if (m.word() != 0) return false;
+    m.set_leds(2, powerkey::led_set{1, 16});
+    m.set_leds(3, powerkey::led_set{2});
+    m.set_leds(2, powerkey::led_set{3});
+    return m.word() == 0x0000'0000'0000'0230u && m.leds_of(2) == powerkey::led_set{3} &&
+           m.leds_of(3) == powerkey::led_set{2};
+}
+static_assert(nibbles_led_by_led());
 // E-J1939-4: the CANopen -> J1939 switch of section 27 is printed with five bytes (E-PK-10,
 // E-SI-7): strictly refused; read tolerantly it is the 8-byte write, trimmed (a keypad switches
 // on it: docs/errata.md).
