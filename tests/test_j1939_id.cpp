@@ -43,6 +43,7 @@ static_assert(first_failing(id_rows, id_holds) == std::size(id_rows));
 constexpr bool refused_ids() {
     return make_id({6, 0xEF21, 0x21, 0}) == errc::value_out_of_range &&
            make_id({6, 0xFEF1, 0x21, 0}) == errc::value_out_of_range &&
+           make_id({6, 0xFEF1, 0xFE, 0}) == errc::value_out_of_range &&  // FEh: not FFh either
            !parse_id(can::candump("615#00")).has_value();
 }
 static_assert(refused_ids());
