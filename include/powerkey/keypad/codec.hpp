@@ -562,7 +562,7 @@ POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
             if constexpr (is_j1939_alternative<T>) {
                 T manual = v;  // whatever `form` says, the manual's form is built
                 if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
-                return j1939::detail::encode_as<message>(m, manual, address);
+                return j1939::detail::encode_as<message, false>(m, manual, address);
             } else {
                 return errc::wrong_id_format;  // not reached: encode chose this path by the index
             }
