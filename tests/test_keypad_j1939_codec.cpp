@@ -246,7 +246,8 @@ TEST_CASE("j1939: encode of a command 01h message answers as reading its frame b
             const auto k8 = static_cast<std::uint8_t>(key);
             for (unsigned c = 0; c <= 0x10; ++c) {
                 const auto colour = static_cast<lc>(c == 0x10 ? 0xFF : c);
-                for (const std::uint8_t to : {0x21, 0xFF, 0x00}) {
+                for (const std::uint8_t to :
+                     {std::uint8_t{0x21}, std::uint8_t{0xFF}, std::uint8_t{0x00}}) {
                     for (unsigned mode = 0; mode <= 4; ++mode) {
                         const auto md = static_cast<led_mode>(mode);
                         for (const lc second : {lc::off, lc::red, lc::yellow_green, lc::not_used,
