@@ -228,6 +228,26 @@ inline void pkp_led_on_encode_typed(std::size_t calls) {
         return powerkey::encode(n, m, powerkey::led_on{l});
     });
 }
+// The same messages as their own types: encode of one PDO type checks its own fields (no
+// decoder; issue 24's target is 30 instructions).
+template <class T, std::size_t N>
+constexpr auto alternatives_of(const std::array<powerkey::message, N>& messages) {
+    std::array<T, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = std::get<T>(messages[i]);
+    return out;
+}
+inline constexpr auto pkp_key_states = alternatives_of<powerkey::key_state>(pkp_key_messages);
+inline constexpr auto pkp_led_ons = alternatives_of<powerkey::led_on>(pkp_led_messages);
+template <class T, std::size_t N>
+[[gnu::always_inline]] inline void encode_each(const std::array<T, N>& messages,
+                                               std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(pkp_model);
+    cycle(messages, calls,
+          [n, m](const T& msg) BENCH_INLINE { return powerkey::encode(n, m, msg); });
+}
+inline void pkp_key_state_encode_own(std::size_t calls) { encode_each(pkp_key_states, calls); }
+inline void pkp_led_on_encode_own(std::size_t calls) { encode_each(pkp_led_ons, calls); }
 inline void pkp_sdo_request_decode(std::size_t calls) {
     pkp_detail::decode_all(pkp_sdo_request_frames, calls);
 }
@@ -256,6 +276,8 @@ inline constexpr op pkp_ops[] = {
     {"pkp2400/led_blink/decode", pkp_led_blink_decode},
     {"pkp2400/led_on/encode", pkp_led_on_encode},
     {"pkp2400/led_on/encode_typed", pkp_led_on_encode_typed},
+    {"pkp2400/key_state/encode_own", pkp_key_state_encode_own},
+    {"pkp2400/led_on/encode_own", pkp_led_on_encode_own},
     {"pkp2400/sdo/decode_request", pkp_sdo_request_decode},
     {"pkp2400/sdo/decode_response", pkp_sdo_response_decode},
     {"pkp2400/sdo/encode", pkp_sdo_encode},

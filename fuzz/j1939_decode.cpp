@@ -4,12 +4,13 @@
 // decode a fixed point (properties.hpp); what decodes carries the identifier's priority,
 // destination and source; an 11-bit frame and a value outside the table are refused; narrowed,
 // nothing decodes that is neither from nor to the keypad; the switch back agrees with
-// decode_switch_to_canopen.
+// decode_switch_to_canopen; decode_key_or_led agrees with decode.
 #include "properties.hpp"
 
 #include <powerkey/keypad/j1939_codec.hpp>
 
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -28,6 +29,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         [&](const j1939::message& msg) { return j1939::encode(m, msg, keypad); });
     if (!j1939::row(m)) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
     if (!f.is_extended()) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
+    // The reader of command 01h alone gives decode's answer for the three messages it reads,
+    // and never a message decode does not give.
+    const auto narrow = j1939::decode_key_or_led(f, m, keypad);
+    if (narrow) {
+        POWERKEY_FUZZ_CHECK_FRAME(decoded, f);
+        const auto whole = *j1939::decode(f, m, keypad);
+        POWERKEY_FUZZ_CHECK_FRAME(std::visit(
+                                      [&whole](const auto& v) {
+                                          using T = std::remove_cvref_t<decltype(v)>;
+                                          const T* same = std::get_if<T>(&whole);
+                                          return same != nullptr && *same == v;
+                                      },
+                                      *narrow),
+                                  f);
+    }
     if (!decoded) return 0;
 
     const auto msg = *j1939::decode(f, m, keypad);

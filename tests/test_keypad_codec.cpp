@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <iterator>
 #include <utility>
+#include <vector>
 
 #include "codec_rows.hpp"
 #include "j1939_rows.hpp"
@@ -192,6 +193,32 @@ TEST_CASE("decode_canopen answers as decode on 11-bit frames and refuses 29-bit 
         const auto f = frame_of(r.frame);
         CHECK(decode(f, keypad, model::pkp2600si).has_value());
         CHECK(decode_canopen(f, keypad, model::pkp2600si) == result<message>(errc::wrong_id));
+    }
+}
+
+// encode of key_state, led_on and led_blink as their own types checks the fields itself (no
+// decoder): the same answer as encode of the message, which reads its frame back, for every
+// model over key maps and LED maps with each bit alone and in blocks, and ticks.
+TEST_CASE("encode of one PDO type answers as encode of the message, which reads the frame back") {
+    std::vector<std::uint32_t> masks{0, 0xFFFF'FFFF, 0x0000'FFFF, 0xFFFF'0000, 0x0FFF'FFFF};
+    for (unsigned b = 0; b < 32; ++b) masks.push_back(std::uint32_t{1} << b);
+    for (unsigned b = 1; b <= 32; ++b) masks.push_back(b == 32 ? 0xFFFF'FFFF : (1u << b) - 1);
+    for (const model m : enum_values<model>()) {
+        CAPTURE(std::string(to_string(m)));
+        for (const std::uint32_t k : masks) {
+            CAPTURE(k);
+            const key_state ks{key_set::from_mask(k), static_cast<std::uint8_t>(k * 7)};
+            CHECK(encode(keypad, m, ks) == encode(keypad, m, message(ks)));
+            for (const std::uint32_t k2 : {0u, k, 0x1u, 0x8000'0000u}) {
+                const leds l{led_set::from_mask(k), led_set::from_mask(k2),
+                             led_set::from_mask(k ^ k2)};
+                CHECK(encode(keypad, m, led_on{l}) == encode(keypad, m, message(led_on{l})));
+                CHECK(encode(keypad, m, led_blink{l}) == encode(keypad, m, message(led_blink{l})));
+                const leds only_blue{{}, {}, led_set::from_mask(k)};
+                CHECK(encode(keypad, m, led_on{only_blue}) ==
+                      encode(keypad, m, message(led_on{only_blue})));
+            }
+        }
     }
 }
 

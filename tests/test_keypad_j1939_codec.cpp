@@ -192,7 +192,102 @@ constexpr bool encodes_back(model m, const j1939_rows::message& msg, keypad_addr
     const auto d = decode(*f, m, k);
     return d && *d == msg;
 }
+
+// encode of a command 01h message checks its frame with decode_key_or_led: the same answer as
+// building the frame and reading it back with the whole decoder (the frame, or decode's error,
+// or value_out_of_range when it reads as another message).
+template <class T>
+constexpr powerkey::result<can::frame> encode_by_decode(model m, const T& msg, keypad_address k) {
+    if (!powerkey::j1939::detail::is_j1939_model(m)) return errc::value_out_of_range;
+    const can::frame f =
+        powerkey::j1939::detail::build(powerkey::j1939::detail::j1939_row_of(m), msg);
+    const auto d = decode(f, m, k);
+    if (!d) return d.error();
+    const T* same = std::get_if<T>(&*d);
+    if (same == nullptr || !(*same == msg)) return errc::value_out_of_range;
+    return f;
+}
+template <class T>
+bool encodes_as_by_decode(model m, const T& msg) {
+    for (const keypad_address k : {keypad_address{}, keypad_address{0x21}, keypad_address{0x00}})
+        if (!(encode(m, msg, k) == encode_by_decode(m, msg, k))) return false;
+    return true;
+}
+
+// decode_key_or_led answers as decode for the frames of command 01h; another 29-bit frame is
+// wrong_id (after decode's own refusals of its identifier and length), an 11-bit one
+// wrong_id_format.
+constexpr bool key_or_led_agrees(const can::frame& f, model m, keypad_address k) {
+    const auto narrow = decode_key_or_led(f, m, k);
+    const auto whole = decode(f, m, k);
+    if (!f.is_extended()) return narrow == errc::wrong_id_format;
+    if (((f.raw_id() >> 16) & 0x3FF) != 0xEF) return narrow == errc::wrong_id;
+    if (f.size() != 8 || f[0] != 0x04 || f[1] != 0x1B || f[2] != 0x01) {
+        if (!whole && (whole.error() == errc::wrong_id || whole.error() == errc::wrong_length))
+            return narrow == whole.error();
+        return narrow == errc::wrong_id;
+    }
+    if (!whole) return narrow == whole.error();
+    return std::visit(
+        [&narrow](const auto& v) {
+            using T = std::remove_cvref_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, key_contact> || std::is_same_v<T, set_led> ||
+                          std::is_same_v<T, set_led_code>) {
+                const T* same = narrow ? std::get_if<T>(&*narrow) : nullptr;
+                return same != nullptr && *same == v;
+            } else {
+                return false;
+            }
+        },
+        *whole);
+}
+template <class Row>
+constexpr bool key_or_led_row(const Row& r) {
+    const auto f = powerkey::can::parse_candump(r.frame);
+    if (!f) return false;
+    return for_models(r.models, [&](model m) {
+        return key_or_led_agrees(*f, m, {}) && key_or_led_agrees(*f, m, keypad_address{0x21});
+    });
+}
+static_assert(
+    powerkey_tests::all_rows_pass<first_failing(pkp2600si_rows, key_or_led_row<j1939_rows::row>),
+                                  std::size(pkp2600si_rows)>);
 }  // namespace
+
+TEST_CASE("j1939: decode_key_or_led answers as decode on every row, wrong_id off command 01h") {
+    check_rows(pkp1600si_rows, key_or_led_row<j1939_rows::row>);
+    check_rows(pkp2600si_rows, key_or_led_row<j1939_rows::row>);
+    check_rows(other_rows, key_or_led_row<j1939_rows::row>);
+    check_rows(error_rows, key_or_led_row<j1939_rows::error_row>);
+}
+
+TEST_CASE("j1939: encode of a command 01h message answers as reading its frame back with decode") {
+    for (std::size_t i = 0; i < model_row_count; ++i) {
+        const auto m = static_cast<model>(i);
+        CAPTURE(i);
+        for (unsigned key = 0; key <= 18; ++key) {
+            const auto k8 = static_cast<std::uint8_t>(key);
+            for (unsigned c = 0; c <= 0x10; ++c) {
+                const auto colour = static_cast<lc>(c == 0x10 ? 0xFF : c);
+                for (const std::uint8_t to :
+                     {std::uint8_t{0x21}, std::uint8_t{0xFF}, std::uint8_t{0x00}}) {
+                    for (unsigned mode = 0; mode <= 4; ++mode) {
+                        const auto md = static_cast<led_mode>(mode);
+                        for (const lc second : {lc::off, lc::red, lc::yellow_green, lc::not_used,
+                                                static_cast<lc>(0x0A)})
+                            CHECK(encodes_as_by_decode(
+                                m, set_led{6, to, 0x00, k8, colour, md, second}));
+                        CHECK(encodes_as_by_decode(m,
+                                                   key_contact{6, to, 0x21, k8, mode == 1,
+                                                               static_cast<std::uint8_t>(c * 16)}));
+                    }
+                    CHECK(encodes_as_by_decode(
+                        m, set_led_code{6, to, 0x00, k8, static_cast<std::uint8_t>(c)}));
+                }
+            }
+        }
+    }
+}
 
 TEST_CASE("j1939: every example of the PKP1600SI J1939 manual both ways") {
     check_rows(pkp1600si_rows, round_trips);

@@ -562,7 +562,7 @@ POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
             if constexpr (is_j1939_alternative<T>) {
                 T manual = v;  // whatever `form` says, the manual's form is built
                 if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
-                return j1939::detail::encode_as<message>(m, manual, address);
+                return j1939::detail::encode_as<message, false>(m, manual, address);
             } else {
                 return errc::wrong_id_format;  // not reached: encode chose this path by the index
             }
@@ -647,73 +647,90 @@ POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, cano
     return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
 }
 
+// The frame of one alternative v (not checked: encode reads it back, or checks v first).
+template <class T>
+constexpr result<can::frame> build_of(const model_layout& keypad, canopen::node_id node,
+                                      const T& v) noexcept {
+    using canopen::function;
+    if constexpr (std::is_same_v<T, canopen::nmt_message> ||
+                  std::is_same_v<T, canopen::sync_message> ||
+                  std::is_same_v<T, j1939::switch_to_canopen>) {
+        return encode(v);  // canopen::encode or j1939::encode, found by ADL
+    } else if constexpr (is_j1939_alternative<T>) {
+        return errc::wrong_id_format;  // encode gives these to encode_j1939
+    } else if constexpr (std::is_same_v<T, key_state>) {
+        return pdo_frame(function::tpdo1, node, 5,
+                         (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
+    } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
+        return pdo_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2, node, 8,
+                         pack_leds(keypad, v.map, keypad.planes));
+    } else if constexpr (std::is_same_v<T, led_brightness>) {
+        return pdo_frame(function::rpdo3, node, 8, v.level.value());
+    } else if constexpr (std::is_same_v<T, encoder_leds>) {
+        return pdo_frame(function::rpdo3, node, 8, v.leds.mask());
+    } else if constexpr (std::is_same_v<T, encoder_state>) {
+        return pdo_frame(v.encoder == 2 ? function::tpdo3 : function::tpdo2, node, 8,
+                         (v.counterclockwise ? 0x80u : 0u) | (v.ticks & 0x7Fu) |
+                             (std::uint64_t{v.counter} << 8) | (std::uint64_t{v.top} << 24));
+    } else if constexpr (std::is_same_v<T, analog_inputs>) {
+        std::uint64_t bits = 0;
+        for (std::size_t i = 0; i < 4; ++i)
+            bits |= std::uint64_t{static_cast<std::uint16_t>(v.mv[i] / 10)} << (16 * i);
+        return pdo_frame(function::tpdo4, node, 8, bits);
+    } else if constexpr (std::is_same_v<T, backlight>) {
+        return pdo_frame(
+            function::rpdo4, node, 8,
+            v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(v.colour)} << 8));
+    } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
+                         std::is_same_v<T, sdo_read_reply> || std::is_same_v<T, sdo_write_reply>) {
+        const std::uint8_t i = find_codec_row(keypad.dictionary, v.object);
+        if (i == 0) return errc::unknown_object;
+        const codec_row& row = codec_rows[i];
+        if constexpr (std::is_same_v<T, sdo_read>) {
+            return canopen::encode(node, canopen::sdo_upload_request{row.address()});
+        } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
+            return canopen::encode(node, canopen::sdo_download_response{row.address()});
+        } else if constexpr (std::is_same_v<T, sdo_write>) {
+            if (row.kind == value_kind::commands)
+                return errc::unknown_object;  // a command is a `command`
+            return canopen::encode(node, canopen::sdo_download_request{
+                                             row.address(), write_value(keypad, row, v.value)});
+        } else {
+            return canopen::encode(node, canopen::sdo_upload_response{
+                                             row.address(), write_value(keypad, row, v.value)});
+        }
+    } else if constexpr (std::is_same_v<T, command>) {
+        const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
+        if (i == 0) return errc::unknown_object;
+        return canopen::encode(
+            node, canopen::sdo_download_request{codec_rows[i].address(), write_command(v)});
+    } else {
+        return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
+    }
+}
 constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id node,
                                    const message& msg) noexcept {
-    using canopen::function;
-    return std::visit(
-        [&](const auto& v) -> result<can::frame> {
-            using T = std::remove_cvref_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, canopen::nmt_message> ||
-                          std::is_same_v<T, canopen::sync_message> ||
-                          std::is_same_v<T, j1939::switch_to_canopen>) {
-                return encode(v);  // canopen::encode or j1939::encode, found by ADL
-            } else if constexpr (is_j1939_alternative<T>) {
-                return errc::wrong_id_format;  // encode gives these to encode_j1939
-            } else if constexpr (std::is_same_v<T, key_state>) {
-                return pdo_frame(function::tpdo1, node, 5,
-                                 (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
-            } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
-                return pdo_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2,
-                                 node, 8, pack_leds(keypad, v.map, keypad.planes));
-            } else if constexpr (std::is_same_v<T, led_brightness>) {
-                return pdo_frame(function::rpdo3, node, 8, v.level.value());
-            } else if constexpr (std::is_same_v<T, encoder_leds>) {
-                return pdo_frame(function::rpdo3, node, 8, v.leds.mask());
-            } else if constexpr (std::is_same_v<T, encoder_state>) {
-                return pdo_frame(v.encoder == 2 ? function::tpdo3 : function::tpdo2, node, 8,
-                                 (v.counterclockwise ? 0x80u : 0u) | (v.ticks & 0x7Fu) |
-                                     (std::uint64_t{v.counter} << 8) |
-                                     (std::uint64_t{v.top} << 24));
-            } else if constexpr (std::is_same_v<T, analog_inputs>) {
-                std::uint64_t bits = 0;
-                for (std::size_t i = 0; i < 4; ++i)
-                    bits |= std::uint64_t{static_cast<std::uint16_t>(v.mv[i] / 10)} << (16 * i);
-                return pdo_frame(function::tpdo4, node, 8, bits);
-            } else if constexpr (std::is_same_v<T, backlight>) {
-                return pdo_frame(
-                    function::rpdo4, node, 8,
-                    v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(v.colour)} << 8));
-            } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
-                                 std::is_same_v<T, sdo_read_reply> ||
-                                 std::is_same_v<T, sdo_write_reply>) {
-                const std::uint8_t i = find_codec_row(keypad.dictionary, v.object);
-                if (i == 0) return errc::unknown_object;
-                const codec_row& row = codec_rows[i];
-                if constexpr (std::is_same_v<T, sdo_read>) {
-                    return canopen::encode(node, canopen::sdo_upload_request{row.address()});
-                } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
-                    return canopen::encode(node, canopen::sdo_download_response{row.address()});
-                } else if constexpr (std::is_same_v<T, sdo_write>) {
-                    if (row.kind == value_kind::commands)
-                        return errc::unknown_object;  // a command is a `command`
-                    return canopen::encode(
-                        node, canopen::sdo_download_request{row.address(),
-                                                            write_value(keypad, row, v.value)});
-                } else {
-                    return canopen::encode(
-                        node, canopen::sdo_upload_response{row.address(),
-                                                           write_value(keypad, row, v.value)});
-                }
-            } else if constexpr (std::is_same_v<T, command>) {
-                const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
-                if (i == 0) return errc::unknown_object;
-                return canopen::encode(
-                    node, canopen::sdo_download_request{codec_rows[i].address(), write_command(v)});
-            } else {
-                return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
-            }
-        },
-        msg);
+    return std::visit([&keypad, node](const auto& v) { return build_of(keypad, node, v); }, msg);
+}
+
+// The checks decode makes of the frame build_of makes of a PDO, made on the message itself, so
+// that encode of one PDO type needs no decoder (issue 24): the same error decode gives the frame
+// (reserved_not_zero), or value_out_of_range for what the frame cannot carry (a key above 16, an
+// LED past the model's planes or LEDs: the frame would read back as another message). A test
+// compares them with the frame read back over every model and many values.
+constexpr errc own_check(const model_layout& keypad, const key_state& v) noexcept {
+    const std::uint64_t k = v.keys.mask();
+    if ((k & 0xFFFF & keypad.not_keys) != 0) return errc::reserved_not_zero;
+    return k > 0xFFFF ? errc::value_out_of_range : errc{};
+}
+template <class T>
+requires(std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) constexpr errc
+    own_check(const model_layout& keypad, const T& v) noexcept {
+    const std::uint64_t one = keypad.led_mask;
+    const std::uint64_t outside = (v.map.red.mask() & ~one) |
+                                  (v.map.green.mask() & ~(keypad.planes > 1 ? one : 0)) |
+                                  (v.map.blue.mask() & ~(keypad.planes > 2 ? one : 0));
+    return outside != 0 ? errc::value_out_of_range : errc{};
 }
 
 // The front. Every length test sends a frame of another length to misfit. With `j1939` false a
@@ -911,11 +928,17 @@ template <model M>
 
 // The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
 // is in the program.
+// A PDO that checks itself (key_state, led_on, led_blink: detail::own_check) links no decoder.
 template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    return detail::encode_canopen<false>(node, m, message(msg));
+    if constexpr (requires { detail::own_check(detail::layout(m), msg); }) {
+        if (const errc e = detail::own_check(detail::layout(m), msg); e != errc{}) return e;
+        return detail::build_of(detail::layout(m), node, msg);
+    } else {
+        return detail::encode_canopen<false>(node, m, message(msg));
+    }
 }
 
 // The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,

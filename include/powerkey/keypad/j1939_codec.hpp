@@ -16,6 +16,7 @@
 
 #include <powerkey/can/frame.hpp>
 #include <powerkey/detail/bytes.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/name.hpp>
 #include <powerkey/j1939/protocol_switch.hpp>
@@ -356,6 +357,18 @@ constexpr bool is_led_command(const model_row& r, const route& at, std::uint64_t
     if (byte_of(w, 6) != 0xFF) return true;
     return byte_of(w, 4) <= 1 && byte_of(w, 5) <= 3;
 }
+// Command 01h after its header, either way.
+template <class M>
+POWERKEY_DETAIL_HOT constexpr result<M> command_01_of(const model_row& r, const route& at,
+                                                      std::uint64_t w,
+                                                      keypad_address keypad) noexcept {
+    if (is_led_command(r, at, w, keypad)) {
+        if (const errc e = received(r, feature::led_command, at, keypad); e != errc{}) return e;
+        return set_led_of<M>(r, at, w);
+    }
+    if (const errc e = sent(r, feature::key_contact, at, keypad); e != errc{}) return e;
+    return key_contact_of<M>(at, w);
+}
 
 template <class M>
 constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, std::uint64_t w,
@@ -368,14 +381,7 @@ constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, st
     if (b0 != header_0 || byte_of(w, 1) != header_1) return errc::unknown_command;
     const std::uint8_t code = byte_of(w, 2);
     switch (code) {
-        case 0x01:
-            if (is_led_command(r, at, w, keypad)) {
-                if (const errc e = received(r, feature::led_command, at, keypad); e != errc{})
-                    return e;
-                return set_led_of<M>(r, at, w);
-            }
-            if (const errc e = sent(r, feature::key_contact, at, keypad); e != errc{}) return e;
-            return key_contact_of<M>(at, w);
+        case 0x01: return command_01_of<M>(r, at, w, keypad);
         case 0xF9:
             if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
             return heartbeat_of<M>(r, at, w);
@@ -516,13 +522,17 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
 //                       multiple-LED code Ah..Eh, revision bytes that are not ASCII, ...)
 namespace detail {
 // decode, building the variant M (j1939::message, or powerkey::message for keypad/codec.hpp).
+// The identifier's fields.
+constexpr route route_of(std::uint32_t id) noexcept {
+    return {priority::make((id >> 26) & 7u).value(), static_cast<std::uint8_t>(id >> 8),
+            static_cast<std::uint8_t>(id)};
+}
+
 // A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r.
 template <class M>
 constexpr result<M> decode_keypad_pgn(const can::frame& f, std::uint32_t pf, const model_row& r,
                                       keypad_address keypad) noexcept {
-    const std::uint32_t id = f.raw_id();
-    const route at{priority::make((id >> 26) & 7u).value(), static_cast<std::uint8_t>(id >> 8),
-                   static_cast<std::uint8_t>(id)};
+    const route at = route_of(f.raw_id());
     if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = f.data_le();
@@ -549,6 +559,25 @@ constexpr result<M> decode_as(const can::frame& f, model m, keypad_address keypa
     return detail::decode_as<message>(f, m, keypad);
 }
 
+// The frames of command 01h alone: the keypad's key contact state and the LED command to it (the
+// SI form set_led, the LI form set_led_code), for a program that speaks nothing else (the J1939
+// firmware of docs/performance.md): decode's answer when f is one of them, decode's error when f
+// is a command 01h frame it refuses, wrong_id for any other frame (another PGN, another command
+// byte, no `04 1B` header). Only this part of the J1939 decoder is in the program.
+using key_or_led = std::variant<key_contact, set_led, set_led_code>;
+[[nodiscard]] constexpr result<key_or_led> decode_key_or_led(
+    const can::frame& f, model m, keypad_address keypad = std::nullopt) noexcept {
+    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
+    if (!f.is_extended()) return errc::wrong_id_format;
+    if (((f.raw_id() >> 16) & 0x3FF) != 0xEF) return errc::wrong_id;
+    const detail::route at = detail::route_of(f.raw_id());
+    if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = f.data_le();
+    if ((w & 0xFF'FFFF) != detail::header(0x01)) return errc::wrong_id;
+    return detail::command_01_of<key_or_led>(detail::j1939_row_of(m), at, w, keypad);
+}
+
 // The frame of msg for a keypad of model m, such that decode(frame, m, keypad) == msg. A message
 // decode could never return is refused with the error decode gives its frame, or with
 // value_out_of_range when the frame decodes to another meaning (a member the command does not
@@ -563,11 +592,22 @@ concept message_alternative = []<class... A>(std::type_identity<std::variant<A..
 namespace detail {
 // encode, its frame read back into the variant M (decode_as<M>: keypad/codec.hpp reads it back
 // into powerkey::message, so that a program holds one J1939 decoder).
-template <class M, class T>
+// With `narrow`, the messages of command 01h are read back by decode_key_or_led (the same checks
+// as decode's for their frames): a program that sends LED commands holds no more of the decoder.
+// keypad/codec.hpp, whose programs hold the whole decoder anyway, reads every frame back with it.
+template <class T>
+inline constexpr bool is_command_01 =
+    std::is_same_v<T, key_contact> || std::is_same_v<T, set_led> || std::is_same_v<T, set_led_code>;
+template <class M, bool narrow, class T>
 constexpr result<can::frame> encode_as(model m, const T& msg, keypad_address keypad) noexcept {
     if (!is_j1939_model(m)) return errc::value_out_of_range;
     const can::frame f = build(j1939_row_of(m), msg);
-    const auto back = decode_as<M>(f, m, keypad);
+    const auto back = [&f, m, keypad] {
+        if constexpr (narrow && is_command_01<T>)
+            return decode_key_or_led(f, m, keypad);
+        else
+            return decode_as<M>(f, m, keypad);
+    }();
     if (!back) return back.error();
     const T* same = std::get_if<T>(&*back);
     if (same == nullptr || !(*same == msg)) return errc::value_out_of_range;
@@ -578,7 +618,7 @@ constexpr result<can::frame> encode_as(model m, const T& msg, keypad_address key
 template <message_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(model m, const T& msg,
                                                   keypad_address keypad = std::nullopt) noexcept {
-    return detail::encode_as<message>(m, msg, keypad);
+    return detail::encode_as<message, true>(m, msg, keypad);
 }
 
 [[nodiscard]] constexpr result<can::frame> encode(model m, const message& msg,

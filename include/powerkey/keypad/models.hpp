@@ -382,9 +382,11 @@ private:
 template <class Row>  // model_info, or the codec's detail::model_layout
 [[nodiscard]] constexpr std::uint64_t pack_leds(const Row& keypad, const leds& l,
                                                 unsigned planes) noexcept {
-    std::uint64_t v = 0;
-    for (unsigned c = 0; c < planes; ++c)
-        v |= (l.of(static_cast<plane>(c)).mask() & keypad.led_mask) << (c * keypad.stride);
+    // The planes written out rather than looped (the loop cost an LED encode 10 instructions).
+    const std::uint64_t one = keypad.led_mask;
+    std::uint64_t v = l.red.mask() & one;
+    if (planes > 1) v |= (l.green.mask() & one) << (keypad.stride % 64);
+    if (planes > 2) v |= (l.blue.mask() & one) << (2 * keypad.stride % 64);
     return v;
 }
 
