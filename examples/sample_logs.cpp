@@ -64,6 +64,19 @@ struct writer {
         }
     }
 
+    // Moves the keypad's J1939 address (and identifier) to `target` with command 70h sent to
+    // its address (section 16), as a controller at 00h does.
+    void move_j1939_to(std::uint8_t target) {
+        const std::uint8_t from = s.j1939_address();
+        std::printf("# (not in the manual) J1939 address %02Xh -> %02Xh\n", from, target);
+        j1939::command c;
+        c.code = j1939::command_code::set_source_address;
+        c.destination = from;
+        c.address = target;
+        c.identifier = target;
+        frame(*j1939::encode(keypad, c, from));
+    }
+
     void row(std::string_view section, std::uint8_t node, std::string_view candump) {
         if (section != last_section) {
             std::printf("# %.*s\n", static_cast<int>(section.size()), section.data());
@@ -75,7 +88,9 @@ struct writer {
     }
 };
 
-// A J1939 session of a model with a complete J1939 manual: its rows in the manual's order.
+// A J1939 session of a model with a complete J1939 manual: its rows in the manual's order. The
+// manuals print every frame for the default address 21h: after their example of 70h the log
+// moves the keypad back, marked "not in the manual", so that the log reads as one session.
 int j1939_log(model m) {
     const auto rows = m == model::pkp1600si
                           ? std::span<const j1939_rows::row>(j1939_rows::pkp1600si_rows)
@@ -92,6 +107,8 @@ int j1939_log(model m) {
             w.last_section = r.section;
         }
         w.text(r.frame);
+        if (w.s.j1939_address() != j1939::keypad_default_address)
+            w.move_j1939_to(j1939::keypad_default_address);
     }
     return 0;
 }

@@ -51,6 +51,23 @@ grep -q '"kind":"j1939_heartbeat","fields":{"priority":6,"destination":255,"sour
 "$pk" decode --model pkp2600si "$logs/switch-pkp2600si.log" > "$tmp/out" 2>/dev/null
 grep -q "615#2BFF200101000000 .*\[protocol now j1939\]" "$tmp/out" || fail "switch to J1939: $(cat "$tmp/out")"
 grep -q "18EF0200#041B8000FFFFFFFF .*\[protocol now canopen\]" "$tmp/out" || fail "switch back: $(cat "$tmp/out")"
+# Its address change: 70h moves the keypad to 02h (the session follows it; JSON new_address), and
+# from then on the keypad is at 02h only: 21h's frames are another keypad's, as under --address.
+grep -q "18EF2100#041B700201FFFFFF .*set_source_address  address: 02h  identifier: 01h  \[J1939 address now 02h\]$" "$tmp/out" ||
+  fail "address change: $(cat "$tmp/out")"
+[ "$(grep -c "J1939 address now" "$tmp/out")" -eq 1 ] || fail "one address change: $(cat "$tmp/out")"
+"$pk" decode --model pkp2600si --json "$logs/switch-pkp2600si.log" 2>/dev/null |
+  grep '"new_address"' > "$tmp/out"
+[ "$(wc -l < "$tmp/out")" -eq 1 ] && grep -q '"data":"041B700201FFFFFF".*"new_address":2[,}]' "$tmp/out" ||
+  fail "address change in JSON: $(cat "$tmp/out")"
+printf '%s\n' '18EF2100#041B700201FFFFFF' '18EFFF21#041B01030121FFFF' '18EFFF02#041B01030101FFFF' \
+  '18EF2100#041B0101010100FF' > "$tmp/moved.log"
+for narrow in "" "--address 21h"; do
+  "$pk" decode --model pkp2600si $narrow "$tmp/moved.log" > "$tmp/out" 2> "$tmp/err"
+  [ "$(grep -c "another keypad's frame (keypad is 02h)" "$tmp/out")" -eq 2 ] &&
+    grep -q "18EFFF02#041B01030101FFFF .*key: 3  pressed: yes  identifier: 01h" "$tmp/out" ||
+    fail "after the move ($narrow): $(cat "$tmp/out")"
+done
 
 # Another PGN is not a keypad frame, counted with the other nodes' frames; a keypad frame the
 # model refuses is an error.
