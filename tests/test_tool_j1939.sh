@@ -69,6 +69,28 @@ for narrow in "" "--address 21h"; do
     fail "after the move ($narrow): $(cat "$tmp/out")"
 done
 
+# check on J1939 logs: the sample sessions pass; checked as a model without their frames, most
+# are refused (wrong_model); --address narrows as in decode. (The J1939 faults are in
+# examples/logs/faults/, tests/test_tool_check_faults.py.)
+for name in j1939-pkp1600si j1939-pkp2600si switch-pkp2600si; do
+  "$pk" check --model ${name#*-} "$logs/$name.log" > "$tmp/out" 2>&1 ||
+    fail "check $name: status $? $(cat "$tmp/out")"
+  [ -s "$tmp/out" ] && fail "check $name: $(cat "$tmp/out")"
+done
+"$pk" check --model pkp2400si "$logs/j1939-pkp2600si.log" > "$tmp/out" 2>&1 &&
+  fail "check j1939-pkp2600si.log as pkp2400si: status 0"
+grep -q "^[0-9]*: wrong_model: [0-9]* of [0-9]* keypad frames refused as pkp2400si frames" "$tmp/out" ||
+  fail "check as pkp2400si: $(cat "$tmp/out")"
+grep -q "^[0-9]*: refused_frame: frame 18A72100h of 8 bytes refused (undocumented)" "$tmp/out" ||
+  fail "check as pkp2400si, the multiple-LED command: $(cat "$tmp/out")"
+# Narrowed to 22h, commands to 21h go to an address no keypad holds: no keypad spoke from there.
+printf '%s\n' '18EFFF22#041B01030122FFFF' '18EF2200#041B0101010100FF' '18EF2100#041B0101010100FF' \
+  > "$tmp/narrow.log"
+"$pk" check --model pkp2600si --address 22h "$tmp/narrow.log" > "$tmp/out" 2>&1
+[ "$(cat "$tmp/out")" = "3: j1939_no_keypad: J1939 frame 18EF2100h to address 21h, which no keypad holds (the keypad is at 22h): nobody acts on it" ] ||
+  fail "check --address 22h: $(cat "$tmp/out")"
+"$pk" check --model pkp2600si "$tmp/narrow.log" > "$tmp/out" 2>&1 || fail "check without --address: $(cat "$tmp/out")"
+
 # Another PGN is not a keypad frame, counted with the other nodes' frames; a keypad frame the
 # model refuses is an error.
 printf '%s\n' '18FEF100#FFFFFFFFFFFFFFFF' '18EFFF21#041B01030121FFFF' '18A72100#1101FFFFFFFFFFFF' \
