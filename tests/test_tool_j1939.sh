@@ -159,4 +159,37 @@ head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp1600si: " ||
 head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2600si: " ||
   fail "--model auto on j1939-pkp2600si.log: $(head -1 "$tmp/err")"
 
+# The tutorial's J1939 section (docs/tutorial.md, section 4): every `$ powerkey` command of its
+# console blocks runs from the repository's root, and the lines it shows come out in that order
+# ("..." stands for lines left out; no line shown and none left out: no output).
+python3 - "$src/docs/tutorial.md" > "$tmp/tutorial" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+section = text[text.index("## 4. A J1939 log"):]
+for block in re.findall(r"```console\n(.*?)```", section, re.S):
+    for line in block.splitlines():
+        print(("C " + line[2:]) if line.startswith("$ ") else ("O " + line))
+PY
+[ "$(grep -c '^C powerkey ' "$tmp/tutorial")" -ge 6 ] || fail "tutorial: its commands: $(cat "$tmp/tutorial")"
+run_shown() {  # $1: the command, $2: the file of the lines shown
+  local got="$tmp/tutorial.got" want="$2" elided=0
+  (cd "$src" && eval "\"$pk\"${1#powerkey}") > "$got" 2>&1
+  grep -qx '\.\.\.' "$want" && elided=1
+  if [ $elided -eq 0 ]; then
+    diff "$want" "$got" > /dev/null || fail "tutorial: $1: $(diff "$want" "$got" | head -5)"
+  else
+    awk 'NR == FNR { if ($0 != "...") want[++n] = $0; next } k < n && $0 == want[k + 1] { ++k }
+         END { exit k == n ? 0 : 1 }' "$want" "$got" || fail "tutorial: $1: lines shown missing"
+  fi
+}
+cmd=""
+: > "$tmp/shown"
+while IFS= read -r l; do
+  case $l in
+    "C "*) [ -n "$cmd" ] && run_shown "$cmd" "$tmp/shown"; cmd=${l#C }; : > "$tmp/shown" ;;
+    "O "*) printf '%s\n' "${l#O }" >> "$tmp/shown" ;;
+  esac
+done < "$tmp/tutorial"
+[ -n "$cmd" ] && run_shown "$cmd" "$tmp/shown"
+
 exit $failed
