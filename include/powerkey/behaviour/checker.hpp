@@ -211,8 +211,8 @@ public:
     [[nodiscard]] constexpr std::uint32_t count(problem_kind k) const noexcept {
         return counts_[static_cast<std::size_t>(k) % problem_kind_count];
     }
-    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and the
-    // J1939 switch), and how many of them the decoder refused.
+    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and its J1939
+    // frames), and how many of them the decoder refused.
     [[nodiscard]] constexpr std::uint32_t keypad_frames() const noexcept { return keypad_frames_; }
     [[nodiscard]] constexpr std::uint32_t refused_frames() const noexcept { return refused_; }
 
