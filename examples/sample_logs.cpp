@@ -26,6 +26,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace {
 using namespace powerkey;
@@ -64,6 +65,19 @@ struct writer {
         }
     }
 
+    // Moves the keypad's J1939 address (and identifier) to `target` with command 70h sent to
+    // its address (section 16), as a controller at 00h does.
+    void move_j1939_to(std::uint8_t target) {
+        const std::uint8_t from = s.j1939_address();
+        std::printf("# (not in the manual) J1939 address %02Xh -> %02Xh\n", from, target);
+        j1939::command c;
+        c.code = j1939::command_code::set_source_address;
+        c.destination = from;
+        c.address = target;
+        c.identifier = target;
+        frame(*j1939::encode(keypad, c, from));
+    }
+
     void row(std::string_view section, std::uint8_t node, std::string_view candump) {
         if (section != last_section) {
             std::printf("# %.*s\n", static_cast<int>(section.size()), section.data());
@@ -75,7 +89,11 @@ struct writer {
     }
 };
 
-// A J1939 session of a model with a complete J1939 manual: its rows in the manual's order.
+// A J1939 session of a model with a complete J1939 manual: its rows in the manual's order. The
+// manuals print every frame for the default address 21h: after their example of 70h the log
+// moves the keypad back, marked "not in the manual", so that the log reads as one session; and
+// the multiple-LED command (section 7b) comes before the 37h 02h that lets it in (section 13),
+// so the log sends that first (`powerkey check` passes the log).
 int j1939_log(model m) {
     const auto rows = m == model::pkp1600si
                           ? std::span<const j1939_rows::row>(j1939_rows::pkp1600si_rows)
@@ -86,12 +104,26 @@ int j1939_log(model m) {
         "# from %s (tests/j1939_rows.hpp)\n",
         std::string(to_string(m)).c_str(),
         m == model::pkp1600si ? "PKP1600SI_J1939_UM_rev1.0" : "PKP2600SI_J1939_UM_rev1.5");
+    bool managed = false;  // 37h 02h sent
     for (const auto& r : rows) {
+        const auto f = can::parse_candump(r.frame).value();
+        const auto msg = j1939::decode(f, m);
+        if (!managed && msg && std::holds_alternative<j1939::multiple_leds>(*msg)) {
+            std::printf("# (not in the manual) LED management 37h 02h (section 13) first\n");
+            w.text("18EF2100#041B3702FFFFFFFF");
+            w.last_section = {};
+            managed = true;
+        }
+        if (const auto* c = msg ? std::get_if<j1939::command>(&*msg) : nullptr)
+            managed =
+                managed || (c->code == j1939::command_code::set_led_management && c->multiple_leds);
         if (r.section != w.last_section) {
             std::printf("# %.*s\n", static_cast<int>(r.section.size()), r.section.data());
             w.last_section = r.section;
         }
-        w.text(r.frame);
+        w.frame(f);
+        if (w.s.j1939_address() != j1939::keypad_default_address)
+            w.move_j1939_to(j1939::keypad_default_address);
     }
     return 0;
 }

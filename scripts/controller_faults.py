@@ -106,6 +106,76 @@ FAULTS = [
         ],
         "status": 0,
     },
+    # J1939 (docs/checker.md, "J1939"): a PKP-2600-SI at address 21h, the frames of its J1939
+    # manual (sections named) with the controller's mistakes.
+    {
+        "name": "j1939-bad-header",
+        "model": "pkp2600si",
+        "what": "J1939 commands to the keypad with the header bytes swapped, and with command 1Ch "
+                "(a \"live backlight colour\" no manual has)",
+        "frames": [
+            (0, "18EEFF21#3F426F1A00823CC0"),
+            (10, "18EF2100#041B0101010100FF"),
+            (20, "18EF2100#1B040101010100FF"),
+            (30, "18EF2100#041B1C06FFFFFFFF"),
+            (40, "18EF2100#041B7D06FFFFFFFF"),
+        ],
+        "expected": [
+            "3: j1939_bad_header: J1939 frame 18EF2100h to keypad 21h has header 1B04h, not 041Bh: the keypad does not act on it",
+            "4: j1939_bad_header: J1939 frame 18EF2100h to keypad 21h has command byte 1Ch, which no keypad has: the keypad does not act on it",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "j1939-multiple-leds-off",
+        "model": "pkp2600si",
+        "what": "the multiple-LED command (A700h, A600h) before LED management 37h 02h, whose "
+                "default is single LED only; then 37h 02h and the command again",
+        "frames": [
+            (0, "18EEFF21#3F426F1A00823CC0"),
+            (10, "18A72100#222222222222FFFF"),
+            (11, "18A62100#000000000000FFFF"),
+            (20, "18EF2100#041B3702FFFFFFFF"),
+            (30, "18A72100#222222222222FFFF"),
+            (31, "18A62100#000000000000FFFF"),
+        ],
+        "expected": [
+            "2: j1939_multiple_leds_off: J1939 frame 18A72100h (multiple LEDs) while LED management 37h is single LED only (the default): the keypad ignores it until 37h 02h",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "j1939-old-address",
+        "model": "pkp2600si",
+        "what": "after moving the keypad to address 02h (70h), an LED command still sent to 21h",
+        "frames": [
+            (0, "18EEFF21#3F426F1A00823CC0"),
+            (10, "18EF2100#041B700201FFFFFF"),
+            (20, "18EF2100#041B0101010100FF"),
+            (30, "18EF0200#041B0101010100FF"),
+        ],
+        "expected": [
+            "3: j1939_no_keypad: J1939 frame 18EF2100h to address 21h, which no keypad holds (the keypad is at 02h): nobody acts on it",
+        ],
+        "status": 1,
+    },
+    {
+        "name": "j1939-refused",
+        "model": "pkp2600si",
+        "what": "J1939 frames to the keypad that the decoder refuses: LED 13 of a 12-key keypad, "
+                "LED brightness (02h) cut to 4 bytes; then both as the manual has them",
+        "frames": [
+            (0, "18EF2100#041B010D010100FF"),
+            (10, "18EF2100#041B0220"),
+            (20, "18EF2100#041B010C010100FF"),
+            (30, "18EF2100#041B0220FFFFFFFF"),
+        ],
+        "expected": [
+            "1: refused_frame: frame 18EF2100h of 8 bytes refused (value_out_of_range): the keypad does not act on it",
+            "2: refused_frame: frame 18EF2100h of 4 bytes refused (wrong_length): the keypad does not act on it",
+        ],
+        "status": 1,
+    },
 ]
 
 

@@ -225,6 +225,59 @@ TEST_CASE("checker: one small log per problem kind") {
          model::pk1000,
          {{0, "216#FFFFFFFFFFFFFFFF"}, {1, "416#FF"}, {2, "616#2B"}, {3, "716#00"}},
          {}},
+        // J1939 (docs/checker.md, "J1939"): frames of the PKP2600SI and PKP1600SI J1939 manuals.
+        {"J1939: EF00h to the keypad without 04 1B, and a command byte no keypad has (section 4); "
+         "another device's proprietary A to another address is none of the keypad's",
+         model::pkp2600si,
+         {{0, "18EF2100#0102030405060708"},
+          {10, "18EF2100#041B55FFFFFFFFFF"},
+          {20, "18EF3000#0102030405060708"},
+          {30, "18EF2100#041B021FFFFFFFFF"}},
+         {{1, pk::j1939_bad_header, {0x18EF2100, 0x010203, 0}},
+          {2, pk::j1939_bad_header, {0x18EF2100, 0x041B55, 0}}}},
+        {"J1939: multiple LEDs (7b) before 37h 02h (13), once; after 37h 00h again",
+         model::pkp2600si,
+         {{0, "18A72100#222222222222FFFF"},
+          {10, "18A62100#000000007700FFFF"},
+          {20, "18EF2100#041B3702FFFFFFFF"},
+          {30, "18A72100#222222222222FFFF"},
+          {40, "18EF2100#041B3700FFFFFFFF"},
+          {50, "18A72100#222222222222FFFF"},
+          {60, "18A62100#000000007700FFFF"}},
+         {{1, pk::j1939_multiple_leds_off, {0x18A72100, 0, 0}},
+          {6, pk::j1939_multiple_leds_off, {0x18A72100, 5, 0}}}},
+        {"J1939: after 70h moved the keypad to 02h (16), an LED command (7a) to 21h; to 30h until "
+         "a keypad speaks from there",
+         model::pkp2600si,
+         {{0, "18EF2100#041B700201FFFFFF"},
+          {10, "18EF0200#041B0101010100FF"},
+          {20, "18EF2100#041B0101010100FF"},
+          {30, "18EF3000#041B0101010100FF"},
+          {40, "18EFFF30#041B01010130FFFF"},
+          {50, "18EF3000#041B0101010100FF"}},
+         {{3, pk::j1939_no_keypad, {0x18EF2100, 0x21, 0x02}},
+          {4, pk::j1939_no_keypad, {0x18EF3000, 0x30, 0x02}}}},
+        {"J1939: frames to the keypad that decode refuses; the keypad's own are counted only",
+         model::pkp1600si,
+         {{0, "18EF2100#041B0107010100FF"},
+          {10, "18EF2100#041B02"},
+          {20, "18EFFF21#041B01070121FFFF"},
+          {30, "18EFFF21#041B01020121FFFF"},
+          {40, "18EFFF21#041B01020021FFFF"},
+          {50, "18EFFF21#041B01030121FFFF"},
+          {60, "18EFFF21#041B01030021FFFF"},
+          {70, "18EF2100#041B0102010100FF"},
+          {80, "18EF2100#041B0103010100FF"}},
+         {{1,
+           pk::refused_frame,
+           {static_cast<std::uint32_t>(errc::value_out_of_range), 0x18EF2100, 8}},
+          {2, pk::refused_frame, {static_cast<std::uint32_t>(errc::wrong_length), 0x18EF2100, 3}}}},
+        {"J1939: a command the model's manual does not have (37h on a PKP-2200-SI) is refused",
+         model::pkp2200si,
+         {{0, "18EF2100#041B3702FFFFFFFF"}, {10, "18EF2100#041B021FFFFFFFFF"}},
+         {{1,
+           pk::refused_frame,
+           {static_cast<std::uint32_t>(errc::unknown_command), 0x18EF2100, 8}}}},
     };
     for (const auto& r : rows) {
         INFO(std::string(r.name));
@@ -239,8 +292,8 @@ TEST_CASE("checker: every problem kind has a test row and a name") {
         CHECK(!summary_of(k).empty());
         CHECK(problem_kinds[static_cast<std::size_t>(k)].kind == k);
     }
-    CHECK(enum_values<problem_kind>().size() == 12);
-    CHECK(problem_kind_count == 12);
+    CHECK(enum_values<problem_kind>().size() == 15);
+    CHECK(problem_kind_count == 15);
 }
 
 TEST_CASE("checker: severities: only frames not in the manual's form are warnings") {
@@ -377,6 +430,21 @@ TEST_CASE("checker: explanations") {
         {{2, pk::not_manual_form, {0x000, 8, 2}},
          "frame 000h of 8 bytes is padded, not the manual's form: read as the manual's form, as "
          "the keypads do"},
+        {{1, pk::j1939_bad_header, {0x18EF2100, 0x010203, 0}},
+         "J1939 frame 18EF2100h to keypad 21h has header 0102h, not 041Bh: the keypad does not "
+         "act on it"},
+        {{2, pk::j1939_bad_header, {0x18EF2100, 0x041B55, 0}},
+         "J1939 frame 18EF2100h to keypad 21h has command byte 55h, which no keypad has: the "
+         "keypad does not act on it"},
+        {{1, pk::j1939_multiple_leds_off, {0x18A72100, 0, 0}},
+         "J1939 frame 18A72100h (multiple LEDs) while LED management 37h is single LED only (the "
+         "default): the keypad ignores it until 37h 02h"},
+        {{6, pk::j1939_multiple_leds_off, {0x18A62100, 5, 0}},
+         "J1939 frame 18A62100h (multiple LEDs) while LED management 37h is single LED only (line "
+         "5): the keypad ignores it until 37h 02h"},
+        {{3, pk::j1939_no_keypad, {0x18EF2100, 0x21, 0x02}},
+         "J1939 frame 18EF2100h to address 21h, which no keypad holds (the keypad is at 02h): "
+         "nobody acts on it"},
     };
     for (const auto& r : rows) {
         std::array<char, 160> buf{};

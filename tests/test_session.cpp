@@ -292,3 +292,110 @@ TEST_CASE("the names of the protocols and of the pairing states") {
     CHECK(powerkey_tests::name_table_is<bus_protocol>(bus_protocol_rows, 2));
     CHECK(powerkey_tests::name_table_is<sdo_pairing>(sdo_pairing_rows, 4));
 }
+
+namespace {
+// One frame of a J1939 walk: what it decoded to (or its error), and the keypad address after it.
+struct j1939_step {
+    std::string_view frame;
+    errc error;             // errc{} when it decodes
+    std::uint8_t address;   // s.j1939_address() after the frame
+    std::uint8_t moved;     // new_address announced by this frame, 0 for none
+    bus_protocol protocol;  // s.protocol() after the frame
+};
+
+template <std::size_t N>
+constexpr bool walks(model m, j1939::keypad_address narrowed, const j1939_step (&rows)[N]) {
+    session<> s(m, canopen::default_node_id);
+    s.narrow_j1939(narrowed);
+    for (const auto& r : rows) {
+        const auto e = s.step(can::parse_candump(r.frame).value());
+        if (e.decoded.has_value() != (r.error == errc{})) return false;
+        if (!e.decoded && e.decoded.error() != r.error) return false;
+        if (s.j1939_address() != r.address || s.protocol() != r.protocol) return false;
+        if ((r.moved == 0) != !e.new_address.has_value()) return false;
+        if (r.moved != 0 && *e.new_address != r.moved) return false;
+    }
+    return true;
+}
+
+constexpr auto co = bus_protocol::canopen;
+constexpr auto jp = bus_protocol::j1939;
+
+// A PKP-2600-SI across the switch: into J1939 (CANopen manual 47, E-SI-7's full frame), the
+// address claim and a key at 21h (J1939 manual 20, 6), 70h to 02h with identifier 01h (16), then
+// the keypad is at 02h only: its key from 02h (the manual's frame at the new address, inferred),
+// 21h's frames another keypad's, 80h to 21h nobody's; 80h to 02h (27) and the CANopen boot-up
+// at its unchanged node 15h (CANopen manual 8).
+constexpr j1939_step pkp2600si_across[] = {
+    {"715#00", errc{}, 0x21, 0, co},
+    {"615#2BFF200101000000", errc{}, 0x21, 0, jp},
+    {"18EEFF21#3F426F1A00823CC0", errc{}, 0x21, 0, jp},
+    {"18EFFF21#041B01010121FFFF", errc{}, 0x21, 0, jp},
+    {"18EF2100#041B700201FFFFFF", errc{}, 0x02, 0x02, jp},
+    {"18EFFF02#041B01030101FFFF", errc{}, 0x02, 0, jp},
+    {"18EFFF21#041B01010121FFFF", errc::wrong_id, 0x02, 0, jp},
+    {"18EF2100#041B8000FFFFFFFF", errc::wrong_id, 0x02, 0, jp},
+    {"18EF2100#041B700301FFFFFF", errc::wrong_id, 0x02, 0, jp},  // 70h to the old address
+    {"18EF0200#041B8000FFFFFFFF", errc{}, 0x02, 0, co},
+    {"715#00", errc{}, 0x02, 0, co},
+    {"195#800000002A", errc{}, 0x02, 0, co},
+};
+static_assert(walks(model::pkp2600si, std::nullopt, pkp2600si_across));
+// Narrowed to 21h from the start, the same walk: the narrowing follows the 70h.
+static_assert(walks(model::pkp2600si, std::uint8_t{0x21}, pkp2600si_across));
+
+// PKP1600SI 16: 70h FDh FDh moves the keypad to FDh; 70h FFh 05h changes the identifier only
+// (ref. 7 of docs/j1939.md); FDh back to 21h.
+constexpr j1939_step pkp1600si_moves[] = {
+    {"18EF2100#041B70FDFDFFFFFF", errc{}, 0xFD, 0xFD, co},
+    {"18EFFFFD#041B010201FDFFFF", errc{}, 0xFD, 0, co},
+    {"18EFFD00#041B70FF05FFFFFF", errc{}, 0xFD, 0, co},
+    {"18EFFFFD#041B01020105FFFF", errc{}, 0xFD, 0, co},
+    {"18EFFD00#041B702121FFFFFF", errc{}, 0x21, 0x21, co},
+    {"18EFFFFD#041B01020105FFFF", errc::wrong_id, 0x21, 0, co},
+    {"18EFFF21#041B01020121FFFF", errc{}, 0x21, 0, co},
+};
+static_assert(walks(model::pkp1600si, std::nullopt, pkp1600si_moves));
+
+// Not narrowed, an address claim (section 20's NAME) from 30h says the keypad is there; a 70h to
+// 21h is then another keypad's and moves nothing, a 70h to 30h moves it; once a 70h moved it,
+// a claim from elsewhere is another keypad's. Narrowed to 22h, 21h's
+// claim and 70h are another keypad's.
+constexpr j1939_step claimed_elsewhere[] = {
+    {"18EF2100#041B7024FFFFFFFF", errc{}, 0x24, 0x24, co},
+    {"18EEFF30#3F426F1A00823CC0", errc::wrong_id, 0x24, 0, co},
+};
+static_assert(walks(model::pkp2600si, std::nullopt, claimed_elsewhere));
+constexpr j1939_step claim_then_move[] = {
+    {"18EEFF30#3F426F1A00823CC0", errc{}, 0x30, 0x30, co},
+    {"18EF2100#041B7024FFFFFFFF", errc{}, 0x30, 0, co},
+    {"18EF3000#041B7031FFFFFFFF", errc{}, 0x31, 0x31, co},
+    {"18EEFF21#3F426F1A00823CC0", errc::wrong_id, 0x31, 0, co},
+};
+static_assert(walks(model::pkp2600si, std::nullopt, claim_then_move));
+constexpr j1939_step narrowed_elsewhere[] = {
+    {"18EEFF21#3F426F1A00823CC0", errc::wrong_id, 0x22, 0, co},
+    {"18EF2100#041B7024FFFFFFFF", errc::wrong_id, 0x22, 0, co},
+    {"18EF2100#041B8000FFFFFFFF", errc::wrong_id, 0x22, 0, co},
+    {"18EEFF22#3F426F1A00823CC0", errc{}, 0x22, 0, co},
+};
+static_assert(walks(model::pkp2600si, std::uint8_t{0x22}, narrowed_elsewhere));
+}  // namespace
+
+TEST_CASE("the session follows the keypad's J1939 address across the switch") {
+    CHECK(walks(model::pkp2600si, std::nullopt, pkp2600si_across));
+    CHECK(walks(model::pkp2600si, std::uint8_t{0x21}, pkp2600si_across));
+    CHECK(walks(model::pkp1600si, std::nullopt, pkp1600si_moves));
+    CHECK(walks(model::pkp2600si, std::nullopt, claimed_elsewhere));
+    CHECK(walks(model::pkp2600si, std::nullopt, claim_then_move));
+    CHECK(walks(model::pkp2600si, std::uint8_t{0x22}, narrowed_elsewhere));
+    session<> s(model::pkp2600si, canopen::default_node_id);
+    CHECK(s.j1939_address() == 0x21);
+    CHECK_FALSE(s.j1939_narrowing().has_value());
+    const auto moved = s.step(can::candump("18EF2100#041B700201FFFFFF"));
+    REQUIRE(moved.new_address.has_value());
+    CHECK(*moved.new_address == 0x02);
+    CHECK(s.j1939_narrowing() == j1939::keypad_address{0x02});
+    CHECK_FALSE(moved.new_protocol.has_value());
+    CHECK_FALSE(moved.new_node.has_value());
+}

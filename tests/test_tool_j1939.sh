@@ -27,6 +27,45 @@ grep -q '"kind":"j1939_heartbeat","fields":{"priority":6,"destination":255,"sour
 "$pk" decode --model pkp2600si "$logs/switch-pkp2600si.log" > "$tmp/out" 2>/dev/null
 grep -q "615#2BFF200101000000 .*\[protocol now j1939\]" "$tmp/out" || fail "switch to J1939: $(cat "$tmp/out")"
 grep -q "18EF0200#041B8000FFFFFFFF .*\[protocol now canopen\]" "$tmp/out" || fail "switch back: $(cat "$tmp/out")"
+# Its address change: 70h moves the keypad to 02h (the session follows it; JSON new_address), and
+# from then on the keypad is at 02h only: 21h's frames are another keypad's, as under --address.
+grep -q "18EF2100#041B700201FFFFFF .*set_source_address  address: 02h  identifier: 01h  \[J1939 address now 02h\]$" "$tmp/out" ||
+  fail "address change: $(cat "$tmp/out")"
+[ "$(grep -c "J1939 address now" "$tmp/out")" -eq 1 ] || fail "one address change: $(cat "$tmp/out")"
+"$pk" decode --model pkp2600si --json "$logs/switch-pkp2600si.log" 2>/dev/null |
+  grep '"new_address"' > "$tmp/out"
+[ "$(wc -l < "$tmp/out")" -eq 1 ] && grep -q '"data":"041B700201FFFFFF".*"new_address":2[,}]' "$tmp/out" ||
+  fail "address change in JSON: $(cat "$tmp/out")"
+printf '%s\n' '18EF2100#041B700201FFFFFF' '18EFFF21#041B01030121FFFF' '18EFFF02#041B01030101FFFF' \
+  '18EF2100#041B0101010100FF' > "$tmp/moved.log"
+for narrow in "" "--address 21h"; do
+  "$pk" decode --model pkp2600si $narrow "$tmp/moved.log" > "$tmp/out" 2> "$tmp/err"
+  [ "$(grep -c "another keypad's frame (keypad is 02h)" "$tmp/out")" -eq 2 ] &&
+    grep -q "18EFFF02#041B01030101FFFF .*key: 3  pressed: yes  identifier: 01h" "$tmp/out" ||
+    fail "after the move ($narrow): $(cat "$tmp/out")"
+done
+
+# check on J1939 logs: the sample sessions pass; checked as a model without their frames, most
+# are refused (wrong_model); --address narrows as in decode. (The J1939 faults are in
+# examples/logs/faults/, tests/test_tool_check_faults.py.)
+for name in j1939-pkp1600si j1939-pkp2600si switch-pkp2600si; do
+  "$pk" check --model ${name#*-} "$logs/$name.log" > "$tmp/out" 2>&1 ||
+    fail "check $name: status $? $(cat "$tmp/out")"
+  [ -s "$tmp/out" ] && fail "check $name: $(cat "$tmp/out")"
+done
+"$pk" check --model pkp2400si "$logs/j1939-pkp2600si.log" > "$tmp/out" 2>&1 &&
+  fail "check j1939-pkp2600si.log as pkp2400si: status 0"
+grep -q "^[0-9]*: wrong_model: [0-9]* of [0-9]* keypad frames refused as pkp2400si frames" "$tmp/out" ||
+  fail "check as pkp2400si: $(cat "$tmp/out")"
+grep -q "^[0-9]*: refused_frame: frame 18A72100h of 8 bytes refused (undocumented)" "$tmp/out" ||
+  fail "check as pkp2400si, the multiple-LED command: $(cat "$tmp/out")"
+# Narrowed to 22h, commands to 21h go to an address no keypad holds: no keypad spoke from there.
+printf '%s\n' '18EFFF22#041B01030122FFFF' '18EF2200#041B0101010100FF' '18EF2100#041B0101010100FF' \
+  > "$tmp/narrow.log"
+"$pk" check --model pkp2600si --address 22h "$tmp/narrow.log" > "$tmp/out" 2>&1
+[ "$(cat "$tmp/out")" = "3: j1939_no_keypad: J1939 frame 18EF2100h to address 21h, which no keypad holds (the keypad is at 22h): nobody acts on it" ] ||
+  fail "check --address 22h: $(cat "$tmp/out")"
+"$pk" check --model pkp2600si "$tmp/narrow.log" > "$tmp/out" 2>&1 || fail "check without --address: $(cat "$tmp/out")"
 
 # Another PGN is not a keypad frame, counted with the other nodes' frames; a keypad frame the
 # model refuses is an error.
@@ -95,5 +134,38 @@ head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp1600si: " ||
 "$pk" decode --model auto "$logs/j1939-pkp2600si.log" > /dev/null 2> "$tmp/err"
 head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2600si: " ||
   fail "--model auto on j1939-pkp2600si.log: $(head -1 "$tmp/err")"
+
+# The tutorial's J1939 section (docs/tutorial.md, section 4): every `$ powerkey` command of its
+# console blocks runs from the repository's root, and the lines it shows come out in that order
+# ("..." stands for lines left out; no line shown and none left out: no output).
+python3 - "$src/docs/tutorial.md" > "$tmp/tutorial" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+section = text[text.index("## 4. A J1939 log"):]
+for block in re.findall(r"```console\n(.*?)```", section, re.S):
+    for line in block.splitlines():
+        print(("C " + line[2:]) if line.startswith("$ ") else ("O " + line))
+PY
+[ "$(grep -c '^C powerkey ' "$tmp/tutorial")" -ge 6 ] || fail "tutorial: its commands: $(cat "$tmp/tutorial")"
+run_shown() {  # $1: the command, $2: the file of the lines shown
+  local got="$tmp/tutorial.got" want="$2" elided=0
+  (cd "$src" && eval "\"$pk\"${1#powerkey}") > "$got" 2>&1
+  grep -qx '\.\.\.' "$want" && elided=1
+  if [ $elided -eq 0 ]; then
+    diff "$want" "$got" > /dev/null || fail "tutorial: $1: $(diff "$want" "$got" | head -5)"
+  else
+    awk 'NR == FNR { if ($0 != "...") want[++n] = $0; next } k < n && $0 == want[k + 1] { ++k }
+         END { exit k == n ? 0 : 1 }' "$want" "$got" || fail "tutorial: $1: lines shown missing"
+  fi
+}
+cmd=""
+: > "$tmp/shown"
+while IFS= read -r l; do
+  case $l in
+    "C "*) [ -n "$cmd" ] && run_shown "$cmd" "$tmp/shown"; cmd=${l#C }; : > "$tmp/shown" ;;
+    "O "*) printf '%s\n' "${l#O }" >> "$tmp/shown" ;;
+  esac
+done < "$tmp/tutorial"
+[ -n "$cmd" ] && run_shown "$cmd" "$tmp/shown"
 
 finish

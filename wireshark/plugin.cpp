@@ -60,6 +60,7 @@ int hf_text = -1;
 int hf_upload_error = -1;
 int hf_new_node = -1;
 int hf_protocol = -1;
+int hf_new_address = -1;
 int hf_pgn = -1;
 // A frame of the keypad that the library refuses: an expert warning, besides powerkey.error.
 expert_field ei_refused = EI_INIT;
@@ -158,6 +159,8 @@ void register_protoinfo() {
                 nullptr, "The keypad moved to this node id"),
         make_hf(&hf_protocol, "Protocol now", "powerkey.session.protocol", FT_STRING, BASE_NONE,
                 nullptr, "The keypad switched to this protocol (j1939 or canopen)"),
+        make_hf(&hf_new_address, "J1939 address now", "powerkey.session.new_address", FT_UINT8,
+                BASE_HEX_DEC, nullptr, "The keypad's J1939 address is now this one"),
         make_hf(&hf_pgn, "PGN", "powerkey.j1939.pgn", FT_UINT32, BASE_HEX, nullptr,
                 "The parameter group number of a J1939 frame"),
     };
@@ -255,6 +258,11 @@ std::string session_notes(const powerkey_ws::frame_record& r) {
         s += b;
     }
     if (!r.new_protocol.empty()) s += "  [protocol now " + std::string(r.new_protocol) + "]";
+    if (r.address_moved) {
+        std::snprintf(b, sizeof b, "  [J1939 address now %02Xh]",
+                      static_cast<unsigned>(r.new_address));
+        s += b;
+    }
     return s;
 }
 
@@ -359,6 +367,8 @@ int dissect_powerkey(tvbuff_t* tvb, packet_info* pinfo, proto_tree* tree, void* 
     if (record->new_node != 0) proto_tree_add_uint(t, hf_new_node, tvb, 0, 0, record->new_node);
     if (!record->new_protocol.empty())
         proto_tree_add_string(t, hf_protocol, tvb, 0, 0, std::string(record->new_protocol).c_str());
+    if (record->address_moved)
+        proto_tree_add_uint(t, hf_new_address, tvb, 0, 0, record->new_address);
     return static_cast<int>(length);
 }
 

@@ -15,7 +15,7 @@
 //   session     session<text_capacity>(model, node), step(frame) -> session_event: cls
 //               (canopen::cob_info: fn, node), node, sdo (sdo_pairing::none, to_string), request
 //               (index, subindex), upload_done + session::text(), upload_error (errc{},
-//               to_string), new_node, new_protocol (to_string(bus_protocol));
+//               to_string), new_node, new_protocol (to_string(bus_protocol)), new_address;
 //               canopen::classify, canopen::concerns, canopen::function::j1939/nmt,
 //               canopen::decode_nmt (target), j1939::parse_id (pgn), j1939::is_keypad_pgn
 //   one frame   can::make_frame(id, bytes, id_format), decode(frame, node, model) ->
@@ -253,6 +253,8 @@ struct frame_record {
     std::string_view upload_error;  // a segmented upload failed: the error code
     std::uint8_t new_node = 0;      // the keypad moved to this node id, 0 when it did not
     std::string_view new_protocol;  // "j1939" or "canopen" on a protocol switch
+    bool address_moved = false;     // the keypad's J1939 address is now new_address
+    std::uint8_t new_address = 0;
     std::uint16_t text_size = 0;
     std::array<char, text_capacity> text{};
     [[nodiscard]] std::string_view upload_text() const { return {text.data(), text_size}; }
@@ -325,6 +327,10 @@ public:
             r.upload_error = powerkey::to_string(e.upload_error);
         if (e.new_node) r.new_node = e.new_node->value();
         if (e.new_protocol) r.new_protocol = powerkey::to_string(*e.new_protocol);
+        if (e.new_address) {
+            r.address_moved = true;
+            r.new_address = *e.new_address;
+        }
         return r;
     }
 

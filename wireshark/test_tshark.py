@@ -251,6 +251,7 @@ def compare_log(run, log, model):
             "powerkey.sdo.upload_error": j.get("upload_error"),
             "powerkey.session.new_node": j.get("new_node"),
             "powerkey.session.protocol": j.get("protocol"),
+            "powerkey.session.new_address": j.get("new_address"),
             "powerkey.j1939.pgn": j.get("pgn"),
         }
         for key, want in expect.items():

@@ -8,7 +8,12 @@
 //     (PK1000 object 2013h, section 23) or from the old id and then boots up with the new one
 //     (PKP command 6500h/70h, section 13 h), as the model table says;
 //   - it notices the switch to J1939 (a write of protocol_j1939 = 1, PK1000 section 49) and back
-//     (the 18EF2100h frame), for the models that have it.
+//     (80h to the keypad's J1939 address, section 27 of the J1939 manuals), for the models that
+//     have it;
+//   - it follows the keypad's J1939 address (docs/j1939.md): 21h by default, or the one given to
+//     narrow_j1939; an address claim (EE00h, section 20) from another address when not narrowed
+//     says where the keypad is; a command 70h to the keypad (section 16) moves it at once, and
+//     from then on only the new address is the keypad's (decode narrows to it).
 //
 //   session<> s(model::pk1000, canopen::default_node_id);
 //   for (const can::frame& f : log) {
@@ -88,6 +93,7 @@ struct session_event {
     errc upload_error{};             // a segmented upload failed with this frame (toggle, abort..)
     std::optional<canopen::node_id> new_node;  // the keypad moved to this node id
     std::optional<bus_protocol> new_protocol;  // the keypad switched protocol
+    std::optional<std::uint8_t> new_address;   // the keypad's J1939 address is now this
 };
 
 template <std::size_t TextCapacity = 64>
@@ -99,11 +105,18 @@ public:
         : model_(m), info_(&detail::row_or_none(m)), node_(node), upload_(node), how_(how) {}
 
     // The J1939 frames of the keypad at `address` only (decode's J1939 narrowing: nullopt, the
-    // default, for any address).
-    constexpr void narrow_j1939(j1939::keypad_address address) noexcept { address_ = address; }
-    [[nodiscard]] constexpr j1939::keypad_address j1939_address() const noexcept {
-        return address_;
+    // default, for any address until a 70h moves the keypad).
+    constexpr void narrow_j1939(j1939::keypad_address address) noexcept {
+        narrowing_ = address;
+        if (address) address_ = *address;
     }
+    // The address decode narrows the J1939 frames to: nullopt while any address decodes.
+    [[nodiscard]] constexpr j1939::keypad_address j1939_narrowing() const noexcept {
+        return narrowing_;
+    }
+    // The keypad's J1939 address as the session follows it: the narrowing's, else 21h (the
+    // default, section 5), moved by 70h and learned from an address claim.
+    [[nodiscard]] constexpr std::uint8_t j1939_address() const noexcept { return address_; }
 
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
@@ -121,7 +134,7 @@ public:
         // During a node change the keypad may still answer (an abort) from the old id.
         e.node = node_;
         if (previous_node_ && e.cls.node == previous_node_->value()) e.node = *previous_node_;
-        e.decoded = decode(f, e.node, model_, address_, how_);
+        e.decoded = decode(f, e.node, model_, narrowing_, how_);
         const bool ours = e.cls.node == e.node.value();
         if (e.cls.fn == canopen::function::sdo_rx && ours) {
             e.sdo_frame = sdo_frame_of(f, e);
@@ -129,9 +142,8 @@ public:
         } else if (e.cls.fn == canopen::function::sdo_tx && ours) {
             e.sdo_frame = sdo_frame_of(f, e);
             if (e.sdo_frame) on_reply(*e.sdo_frame, f, e);
-        } else if (e.decoded && std::holds_alternative<j1939::switch_to_canopen>(*e.decoded)) {
-            protocol_ = bus_protocol::canopen;
-            e.new_protocol = protocol_;
+        } else if (e.cls.fn == canopen::function::j1939 && e.decoded) {
+            on_j1939(*e.decoded, e);
         }
         return e;
     }
@@ -227,6 +239,31 @@ private:
             w && w->object == object::protocol_j1939 && w->value.raw == 1) {
             protocol_ = bus_protocol::j1939;  // PK1000 section 49
             e.new_protocol = protocol_;
+        }
+    }
+
+    // The J1939 frames that move the keypad: 70h and 80h sent to its address, an address claim.
+    constexpr void on_j1939(const message& msg, session_event& e) noexcept {
+        if (const auto* c = std::get_if<j1939::command>(&msg)) {
+            // Section 16: "the new source address takes effect immediately"; FFh is no change.
+            if (c->code == j1939::command_code::set_source_address && c->destination == address_ &&
+                c->address != j1939::global_address) {
+                narrowing_ = c->address;  // the old address is no longer the keypad's
+                if (c->address != address_) e.new_address = c->address;
+                address_ = c->address;
+            }
+        } else if (const auto* s = std::get_if<j1939::switch_to_canopen>(&msg)) {
+            if (s->destination == address_) {  // section 27; its CANopen node is unchanged
+                protocol_ = bus_protocol::canopen;
+                e.new_protocol = protocol_;
+            }
+        } else if (const auto* a = std::get_if<j1939::address_claimed>(&msg)) {
+            // Narrowed, only the keypad's own claim decodes; otherwise a claim says where the
+            // keypad is (the NAME is the same placeholder on every keypad: docs/j1939.md).
+            if (a->source != address_) {
+                address_ = a->source;
+                e.new_address = address_;
+            }
         }
     }
 
@@ -330,7 +367,8 @@ private:
     std::optional<canopen::node_id> change_;         // the id after the reply (old-id models)
     canopen::segmented_upload<TextCapacity> upload_;
     reading how_ = reading::tolerant;
-    j1939::keypad_address address_;
+    j1939::keypad_address narrowing_;  // decode's J1939 narrowing (narrow_j1939, then 70h)
+    std::uint8_t address_ = j1939::keypad_default_address;  // the keypad's J1939 address
 };
 
 }  // namespace powerkey

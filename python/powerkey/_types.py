@@ -46,7 +46,8 @@ BacklightUpdate = namedtuple("BacklightUpdate", "level colour")
 # What one frame meant to a Session (session.hpp session_event).
 SessionEvent = namedtuple(
     "SessionEvent",
-    "function node message error sdo request upload_done text upload_error new_node new_protocol",
+    "function node message error sdo request upload_done text upload_error new_node new_protocol "
+    "new_address",
 )
 
 # What a Controller tells the application (controller.hpp controller_event).

@@ -596,6 +596,7 @@ py::dict session_event_to_py(const py_session& ps, const session_event& e) {
         e.upload_error != errc{} ? enum_to_py(e.upload_error) : py::object(py::none());
     d["new_node"] = e.new_node ? py::object(py::int_(e.new_node->value())) : py::none();
     d["new_protocol"] = e.new_protocol ? enum_to_py(*e.new_protocol) : py::object(py::none());
+    d["new_address"] = e.new_address ? py::object(py::int_(*e.new_address)) : py::none();
     return d;
 }
 

@@ -42,6 +42,7 @@ def test_session_equals_tool_json(log):
             assert e.message is None and e.error == j["error"]
         assert e.sdo == j.get("sdo", "none")
         assert e.new_node == j.get("new_node")
+        assert e.new_address == j.get("new_address")
         if "text" in j:
             assert e.upload_done and e.text == j["text"]
         assert e.upload_error == j.get("upload_error")

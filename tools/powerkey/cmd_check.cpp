@@ -1,6 +1,6 @@
 // powerkey check: the bus-log checker (include/powerkey/behaviour/checker.hpp) on any log.
 //
-//   powerkey check --model M [--node N] [--json] [--junit FILE] [--sdo-timeout MS]
+//   powerkey check --model M [--node N] [--address A] [--json] [--junit FILE] [--sdo-timeout MS]
 //                  [--heartbeat MS] [--key-period MS] [FILE...]
 //
 // Checks each log on its own (`-` or no file: standard input), read like every input
@@ -363,6 +363,7 @@ int run_check(const options& c, const check_options& o) {
     pb::checker_config config;
     config.keypad_model = c.keypad;
     config.node = c.node;
+    config.j1939_address = c.address;
     for (const auto& [name, text, into] :
          {std::tuple{"--sdo-timeout", &o.sdo_timeout, &config.sdo_timeout},
           std::tuple{"--heartbeat", &o.heartbeat, &config.heartbeat_period},
@@ -401,7 +402,7 @@ void add_check(registry& r) {
     static check_options o;
     auto& sub =
         r.add({"check",
-               "--model M [--node N] [--json] [--junit FILE] [--sdo-timeout MS]\n"
+               "--model M [--node N] [--address A] [--json] [--junit FILE] [--sdo-timeout MS]\n"
                "  [--heartbeat MS] [--key-period MS] [FILE...]",
                "a bus log checked against the keypad's rules (docs/checker.md)",
                "  --json       one JSON object per problem and per warning\n"

@@ -237,7 +237,7 @@ private:
             const auto id = j1939::parse_id(r.frame).value();
             if (j1939::is_keypad_pgn(id.pgn)) {
                 line.put("j1939  another keypad's frame (keypad is "sv);
-                hex_h(session_.j1939_address().value_or(0), 2);
+                hex_h(session_.j1939_address(), 2);
                 line.put(')');
             } else {
                 line.put("j1939  not a keypad frame (PGN "sv);
@@ -298,6 +298,11 @@ private:
             line.put(to_string(*e.new_protocol));
             line.put(']');
         }
+        if (e.new_address) {
+            line.put("  [J1939 address now "sv);
+            hex_h(*e.new_address, 2);
+            line.put(']');
+        }
         line.put('\n');
     }
 
@@ -353,6 +358,7 @@ private:
         if (e.new_node) w.field("new_node", e.new_node->value());
         if (e.new_protocol && !j1939_foreign && e.decoded)
             w.field("protocol", to_string(*e.new_protocol));
+        if (e.new_address) w.field("new_address", *e.new_address);
         if (!e.decoded) w.field("error", to_string(e.decoded.error()));
         w.close();
         line.put('\n');
@@ -412,6 +418,7 @@ private:
         if (e.new_node) j["new_node"] = e.new_node->value();
         if (e.new_protocol && !j1939_foreign && e.decoded)
             j["protocol"] = std::string(to_string(*e.new_protocol));
+        if (e.new_address) j["new_address"] = *e.new_address;
         if (!e.decoded) j["error"] = std::string(to_string(e.decoded.error()));
         out += j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
     }

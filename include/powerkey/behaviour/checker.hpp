@@ -18,6 +18,7 @@
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
 
 #include <powerkey/behaviour/clock.hpp>
+#include <powerkey/behaviour/j1939_checks.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/heartbeat.hpp>
@@ -79,7 +80,13 @@ enum class severity : std::uint8_t { POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_D
     X(wrong_model, problem, "most keypad frames of the log are refused: the keypad is likely another model") \
       /* detail: keypad frames refused, keypad frames, the model checked (at the first refused line) */ \
     X(not_manual_form, warning, "a frame trimmed or padded: the keypads act on it, a strict reader refuses it") \
-      /* detail: COB-ID, dlc, form (frame_form: 1 trimmed, 2 padded) */
+      /* detail: COB-ID, dlc, form (frame_form: 1 trimmed, 2 padded) */ \
+    X(j1939_bad_header, problem, "a J1939 frame to the keypad without the 04 1B header, or with a command byte no keypad has") \
+      /* detail: identifier, bytes 0..2, 0 (j1939_checks.hpp) */ \
+    X(j1939_multiple_leds_off, problem, "a J1939 multiple-LED command while LED management (37h) is single LED only") \
+      /* detail: identifier, line of the 37h (0: the default), 0 */ \
+    X(j1939_no_keypad, problem, "a J1939 command to an address no keypad holds") \
+      /* detail: identifier, destination, the keypad's address */
 // clang-format on
 #define POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR(name, ...) name,
 enum class problem_kind : std::uint8_t {
@@ -131,6 +138,9 @@ struct checker_config {
     // Periods in force before the log starts (0: not known; the log's own writes set them).
     duration_ms heartbeat_period{0};  // 1017h
     duration_ms key_state_period{0};  // PK1000 1800h sub 5, PKP command 12h
+    // The keypad's J1939 address: its frames only (session::narrow_j1939), or nullopt for any
+    // keypad's, the followed one at 21h (the default) until a 70h or an address claim moves it.
+    j1939::keypad_address j1939_address = std::nullopt;
 };
 
 template <std::size_t TextCapacity = 64>
@@ -145,7 +155,8 @@ public:
 
     constexpr explicit checker(const checker_config& c) noexcept
         : cfg_(c),
-          session_(c.keypad_model, c.node),
+          session_(make_session(c)),
+          j1939_(c.keypad_model, session_.j1939_address()),
           hb_period_(c.heartbeat_period.value),
           ks_period_(c.key_state_period.value) {}
 
@@ -159,8 +170,12 @@ public:
         const auto c = canopen::classify(f);
         old_node(f, c);
         const canopen::node_id before = session_.node();
+        const std::uint8_t address = session_.j1939_address();
         const auto e = session_.step(f);
-        form(f, e);
+        if (c.fn == canopen::function::j1939)
+            j1939(f, e, address);
+        else
+            form(f, e);
         if (e.sdo == sdo_pairing::request) {
             on_request(e);
         } else if (e.cls.fn == canopen::function::sdo_tx &&
@@ -196,8 +211,8 @@ public:
     [[nodiscard]] constexpr std::uint32_t count(problem_kind k) const noexcept {
         return counts_[static_cast<std::size_t>(k) % problem_kind_count];
     }
-    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and the
-    // J1939 switch), and how many of them the decoder refused.
+    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and its J1939
+    // frames), and how many of them the decoder refused.
     [[nodiscard]] constexpr std::uint32_t keypad_frames() const noexcept { return keypad_frames_; }
     [[nodiscard]] constexpr std::uint32_t refused_frames() const noexcept { return refused_; }
 
@@ -213,6 +228,12 @@ public:
     }
 
 private:
+    static constexpr session<TextCapacity> make_session(const checker_config& c) noexcept {
+        session<TextCapacity> s(c.keypad_model, c.node);
+        s.narrow_j1939(c.j1939_address);
+        return s;
+    }
+
     constexpr void report(std::uint32_t line, problem_kind k, std::uint32_t a, std::uint32_t b,
                           std::uint32_t c) noexcept {
         ++counts_[static_cast<std::size_t>(k) % problem_kind_count];
@@ -283,11 +304,9 @@ private:
             return;
         }
         const errc why = e.decoded.error();
-        if (e.cls.fn == canopen::function::j1939 ||
-            (why == errc::wrong_id && !canopen::concerns(e.cls, e.node)))
+        if (why == errc::wrong_id && !canopen::concerns(e.cls, e.node))
             return;  // not the keypad's: another node's, or no keypad function
-        ++keypad_frames_;
-        if (refused_++ == 0) first_refused_line_ = line_;
+        count_refused();
         switch (e.cls.fn) {
             case canopen::function::nmt:
             case canopen::function::sdo_rx:
@@ -300,6 +319,38 @@ private:
                 break;
             default: break;
         }
+    }
+
+    constexpr void count_refused() noexcept {
+        ++keypad_frames_;
+        if (refused_++ == 0) first_refused_line_ = line_;
+    }
+
+    // A 29-bit frame (j1939_checks.hpp): a keypad's frame counts as the CANopen ones do; one to
+    // the keypad that decode refuses is refused_frame, unless it is a J1939 fault of its own.
+    // J1939 frames always have 8 bytes: none is trimmed or padded.
+    constexpr void j1939(const can::frame& f, const session_event& e,
+                         std::uint8_t address) noexcept {
+        const auto r = j1939_.step(f, e, address, session_.j1939_address(), line_);
+        if (e.decoded)
+            ++keypad_frames_;
+        else if (r.keypads && e.decoded.error() != errc::wrong_id)  // not another keypad's
+            count_refused();
+        if (r.finding) {
+            report(line_, j1939_kind(r.finding->fault), r.finding->detail[0], r.finding->detail[1],
+                   r.finding->detail[2]);
+        } else if (r.to_keypad && !e.decoded && e.decoded.error() != errc::wrong_id) {
+            report(line_, problem_kind::refused_frame,
+                   static_cast<std::uint32_t>(e.decoded.error()), f.raw_id(), f.size());
+        }
+    }
+    static constexpr problem_kind j1939_kind(j1939_fault k) noexcept {
+        switch (k) {
+            case j1939_fault::bad_header: return problem_kind::j1939_bad_header;
+            case j1939_fault::multiple_leds_off: return problem_kind::j1939_multiple_leds_off;
+            case j1939_fault::no_keypad: break;
+        }
+        return problem_kind::j1939_no_keypad;
     }
 
     // A host frame to the node id the keypad left (PK1000 23, PKP 13 h): nobody answers it.
@@ -491,6 +542,7 @@ private:
 
     checker_config cfg_;
     session<TextCapacity> session_;
+    j1939_checks j1939_;
     millis now_{};
     millis last_time_{};
     std::uint32_t line_ = 0;
@@ -701,6 +753,11 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
             w.put(", not the manual's form: read as the manual's form, as the keypads do");
             break;
         }
+        case problem_kind::j1939_bad_header: explain_j1939(j1939_fault::bad_header, d, w); break;
+        case problem_kind::j1939_multiple_leds_off:
+            explain_j1939(j1939_fault::multiple_leds_off, d, w);
+            break;
+        case problem_kind::j1939_no_keypad: explain_j1939(j1939_fault::no_keypad, d, w); break;
     }
 }
 
