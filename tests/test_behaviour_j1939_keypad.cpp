@@ -244,6 +244,24 @@ TEST_CASE("J1939 multiple LEDs: only after 37h 02h, combined by TABLE 3 (section
         CHECK(s.j1939().led(led).colour == j1939::led_colour::green);
 }
 
+TEST_CASE("J1939 multiple LEDs: the PKP1600SI examples as printed, Fh fill and all (E-J1939-3)") {
+    auto k = in_j1939(model::pkp1600si);
+    const auto look = [&](unsigned led) { return k.j1939().led(led); };
+    CHECK(hear(k, "18EF2100#041B3702FFFFFFFF", {10}).empty());
+    CHECK(hear(k, "18A72100#1101FFFFFFFFFFFF", {20}).empty());  // "LED #1,2,3 red ON"
+    for (unsigned led = 1; led <= 3; ++led)
+        CHECK(look(led) ==
+              j1939::led_look{led_mode::on, j1939::led_colour::red, j1939::led_colour::off, true});
+    CHECK(hear(k, "18A62100#005FFFFFFFFFFFFF", {30}).empty());  // "LED #4 ycyan"
+    CHECK(look(3) ==
+          j1939::led_look{led_mode::blink, j1939::led_colour::red, j1939::led_colour::off, true});
+    CHECK(look(4) ==
+          j1939::led_look{led_mode::on, j1939::led_colour::cyan, j1939::led_colour::off, true});
+    // LEDs 5 and 6: Fh in both frames, which TABLE 3 does not define: they keep their look.
+    CHECK(look(5) == j1939::led_look{});
+    CHECK(look(6) == j1939::led_look{});
+}
+
 TEST_CASE("J1939 levels: 02h and 03h until the next start, 7Bh..7Dh at each start (8, 9, 24-26)") {
     auto k = in_j1939(model::pkp1600si);
     const auto& j = k.j1939();
