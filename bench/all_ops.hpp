@@ -4,6 +4,7 @@
 #define POWERKEY_BENCH_ALL_OPS_HPP
 
 #include "ops.hpp"
+#include "ops_j1939.hpp"
 #include "ops_pk1000.hpp"
 #include "ops_pkp.hpp"
 #include "ops_si.hpp"
@@ -14,11 +15,12 @@
 
 namespace bench {
 
-inline constexpr std::array<std::span<const op>, 4> op_groups = {
+inline constexpr std::array<std::span<const op>, 5> op_groups = {
     std::span<const op>(core_ops),
     std::span<const op>(pk1000_ops),
     std::span<const op>(pkp_ops),
     std::span<const op>(si_ops),
+    std::span<const op>(j1939_ops),
 };
 
 // Calls f(op) for every operation, floor first.
