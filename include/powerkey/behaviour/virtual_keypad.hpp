@@ -67,6 +67,9 @@ struct keypad_options {
     // figure). The reply leaves at receive time + this, released by advance(); 0 answers at
     // once (and then no request can find the keypad busy).
     std::uint32_t sdo_response_ms = 1;
+    // The keypad is a J1939 one: J1939 is its stored protocol (20FFh/1 = 1) from the start, so
+    // power_on() starts it in J1939. Ignored for a model without the switch (the PKP LI models).
+    bool start_in_j1939 = false;
 };
 
 // The backlight as the keypad shows it (PK1000 15, 19 b/c; PKP 13 b/c, 30).
@@ -92,6 +95,7 @@ public:
         factory_defaults();
         value_[idx(object::node_id)] = node.value();
         node_ = node;
+        if (options.start_in_j1939 && info_->j1939) value_[idx(object::protocol_j1939)] = 1;
     }
 
     // --- power and faults -------------------------------------------------------------------
