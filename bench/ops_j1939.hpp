@@ -26,62 +26,39 @@ inline constexpr std::array j1939_mixed_log = {
     candump("18EFFF21#041B01010021FFFF"),  // key 1 released
     candump("18EFFF21#041BF9030000FF21"),  // heartbeat
     candump("18FEF100#FFFFFFFFFFFFFFFF"),  // CCVS
-    candump("18EFFF21#041B01040121FFFF"),
-    candump("18EF2100#041B0104020100FF"),
-    candump("18EFFF21#0001040200FFFFFF"),
-    candump("18EFFF21#041B01040021FFFF"),
+    candump("18EFFF21#041B01040121FFFF"), candump("18EF2100#041B0104020100FF"),
+    candump("18EFFF21#0001040200FFFFFF"), candump("18EFFF21#041B01040021FFFF"),
     candump("0CF00300#D10000FFFFFFFFFF"),  // EEC2
     candump("18A72100#110100000000FFFF"),  // multiple LEDs, colour 1
     candump("18A62100#000000000096FFFF"),  // multiple LEDs, colour 2
-    candump("18EFFF21#041B01080121FFFF"),
-    candump("18EFFF21#041B01080021FFFF"),
+    candump("18EFFF21#041B01080121FFFF"), candump("18EFFF21#041B01080021FFFF"),
     candump("18FEEE00#5A5AFFFF00FFFFFF"),  // ET1
     candump("18EFFF21#041BF9038000FF21"),  // heartbeat, key 8 held
-    candump("18EFFF21#041B010C0121FFFF"),
-    candump("18EF2100#041B010C030200FF"),
-    candump("18EFFF21#00020C0300FFFFFF"),
-    candump("18EFFF21#041B010C0021FFFF"),
+    candump("18EFFF21#041B010C0121FFFF"), candump("18EF2100#041B010C030200FF"),
+    candump("18EFFF21#00020C0300FFFFFF"), candump("18EFFF21#041B010C0021FFFF"),
     candump("0CF00400#FF7D7DE015FFF0FF"),
     candump("18EF2100#041B0220FFFFFFFF"),  // LED brightness
-    candump("18EFFF21#041B01020121FFFF"),
-    candump("18EFFF21#041B01020021FFFF"),
+    candump("18EFFF21#041B01020121FFFF"), candump("18EFFF21#041B01020021FFFF"),
     candump("18FECA00#00FF00000000FFFF"),  // DM1
-    candump("18EFFF21#041BF9030000FF21"),
-    candump("18EFFF21#041B01050121FFFF"),
-    candump("18EF2100#041B0105010100FF"),
-    candump("18EFFF21#0001050100FFFFFF"),
-    candump("18EFFF21#041B01050021FFFF"),
-    candump("0CF00300#D10000FFFFFFFFFF"),
-    candump("18A72100#000200000000FFFF"),
-    candump("18A62100#000200000000FFFF"),
-    candump("18EFFF21#041B01060121FFFF"),
-    candump("18EFFF21#041B01060021FFFF"),
+    candump("18EFFF21#041BF9030000FF21"), candump("18EFFF21#041B01050121FFFF"),
+    candump("18EF2100#041B0105010100FF"), candump("18EFFF21#0001050100FFFFFF"),
+    candump("18EFFF21#041B01050021FFFF"), candump("0CF00300#D10000FFFFFFFFFF"),
+    candump("18A72100#000200000000FFFF"), candump("18A62100#000200000000FFFF"),
+    candump("18EFFF21#041B01060121FFFF"), candump("18EFFF21#041B01060021FFFF"),
     candump("18EAFF00#00EE00"),  // a request for the address claimed
-    candump("18EFFF21#041BF9030000FF21"),
-    candump("18EFFF21#041B01090121FFFF"),
-    candump("18EF2100#041B0109020100FF"),
-    candump("18EFFF21#0001090200FFFFFF"),
-    candump("18EFFF21#041B01090021FFFF"),
-    candump("0CF00400#FF7D7DE015FFF0FF"),
+    candump("18EFFF21#041BF9030000FF21"), candump("18EFFF21#041B01090121FFFF"),
+    candump("18EF2100#041B0109020100FF"), candump("18EFFF21#0001090200FFFFFF"),
+    candump("18EFFF21#041B01090021FFFF"), candump("0CF00400#FF7D7DE015FFF0FF"),
     candump("18EF2100#041B0310FFFFFFFF"),  // backlight level
-    candump("18EFFF21#041B01030121FFFF"),
-    candump("18EFFF21#041B01030021FFFF"),
-    candump("18FEF100#FFFFFFFFFFFFFFFF"),
-    candump("18EFFF21#041BF9030000FF21"),
-    candump("18EFFF21#041B010A0121FFFF"),
-    candump("18EF2100#041B010A000000FF"),
-    candump("18EFFF21#00000A0000FFFFFF"),
-    candump("18EFFF21#041B010A0021FFFF"),
-    candump("0CF00300#D10000FFFFFFFFFF"),
-    candump("18A72100#000000040000FFFF"),
-    candump("18A62100#000000050000FFFF"),
-    candump("18EFFF21#041B010B0121FFFF"),
-    candump("18EFFF21#041B010B0021FFFF"),
-    candump("18FEEE00#5A5AFFFF00FFFFFF"),
-    candump("18EFFF21#041BF9030000FF21"),
-    candump("18EFFF21#041B01070121FFFF"),
-    candump("18EFFF21#041B01070021FFFF"),
-    candump("0CF00400#FF7D7DE015FFF0FF"),
+    candump("18EFFF21#041B01030121FFFF"), candump("18EFFF21#041B01030021FFFF"),
+    candump("18FEF100#FFFFFFFFFFFFFFFF"), candump("18EFFF21#041BF9030000FF21"),
+    candump("18EFFF21#041B010A0121FFFF"), candump("18EF2100#041B010A000000FF"),
+    candump("18EFFF21#00000A0000FFFFFF"), candump("18EFFF21#041B010A0021FFFF"),
+    candump("0CF00300#D10000FFFFFFFFFF"), candump("18A72100#000000040000FFFF"),
+    candump("18A62100#000000050000FFFF"), candump("18EFFF21#041B010B0121FFFF"),
+    candump("18EFFF21#041B010B0021FFFF"), candump("18FEEE00#5A5AFFFF00FFFFFF"),
+    candump("18EFFF21#041BF9030000FF21"), candump("18EFFF21#041B01070121FFFF"),
+    candump("18EFFF21#041B01070021FFFF"), candump("0CF00400#FF7D7DE015FFF0FF"),
     candump("18EFFF21#041BF9030000FF21"),
 };
 
@@ -114,12 +91,10 @@ inline constexpr std::array j1939_key_frames = {
     candump("18EFFF21#041B010C0021FFFF"),
 };
 inline constexpr std::array j1939_set_leds = {
-    powerkey::j1939::set_led{.key = 1,
-                             .colour = powerkey::j1939::led_colour::red,
-                             .mode = powerkey::led_mode::on},
-    powerkey::j1939::set_led{.key = 12,
-                             .colour = powerkey::j1939::led_colour::blue,
-                             .mode = powerkey::led_mode::blink},
+    powerkey::j1939::set_led{
+        .key = 1, .colour = powerkey::j1939::led_colour::red, .mode = powerkey::led_mode::on},
+    powerkey::j1939::set_led{
+        .key = 12, .colour = powerkey::j1939::led_colour::blue, .mode = powerkey::led_mode::blink},
 };
 
 inline void any_decode_j1939_mixed_log(std::size_t calls) {

@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "codec_rows.hpp"
+#include "j1939_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "si_reference_rows.hpp"
@@ -81,6 +82,39 @@ static_assert(first_failing(core_rows, both_model_apis_agree<row>) == std::size(
 static_assert(first_failing(core_error_rows, both_model_apis_agree<error_row>) ==
               std::size(core_error_rows));
 
+// decode_canopen answers as decode for every 11-bit frame, and refuses every 29-bit frame with
+// wrong_id; encode of one CANopen alternative (no J1939 code) builds what encode of the message
+// builds, or refuses it the same way.
+template <std::size_t... I>
+constexpr bool canopen_only_agrees(const can::frame& f, canopen::node_id n,
+                                   std::index_sequence<I...>) {
+    const auto one = [&f, n](model m) {
+        for (const reading how : {reading::tolerant, reading::strict}) {
+            const auto r = decode_canopen(f, n, m, how);
+            if (f.is_extended() ? r != result<message>(errc::wrong_id) : r != decode(f, n, m, how))
+                return false;
+            if (!r) continue;
+            const bool same = std::visit(
+                [&](const auto& v) {
+                    if constexpr (detail::canopen_alternative<std::remove_cvref_t<decltype(v)>>)
+                        return encode(n, m, v) == encode(n, m, *r);
+                    else
+                        return true;
+                },
+                *r);
+            if (!same) return false;
+        }
+        return true;
+    };
+    return (one(static_cast<model>(I)) && ...);
+}
+template <class Row>
+constexpr bool canopen_only_decoder_agrees(const Row& r) {
+    return canopen_only_agrees(frame_of(r.frame), node_of(r.node),
+                               std::make_index_sequence<model_count>{});
+}
+static_assert(first_failing(core_rows, canopen_only_decoder_agrees<row>) == std::size(core_rows));
+
 // A value the optimiser cannot see through, so that the check below runs at run time.
 template <class T>
 T opaque(T v) {
@@ -141,6 +175,24 @@ TEST_CASE("decode<M> with the model known at compile time answers as decode(f, n
     check_rows(si_rows::error_rows, both_model_apis_agree<error_row>);
     check_rows(si_rows::errata_rows, both_model_apis_agree<error_row>);
     check_rows(si_reference_rows::rows, both_model_apis_agree<row>);
+}
+
+TEST_CASE("decode_canopen answers as decode on 11-bit frames and refuses 29-bit ones") {
+    // Every manual row and refusal row (the J1939 rows among them), every model, both readings;
+    // each decoded CANopen message encoded as its own alternative and as a message.
+    check_rows(core_rows, canopen_only_decoder_agrees<row>);
+    check_rows(core_error_rows, canopen_only_decoder_agrees<error_row>);
+    check_rows(pk1000_rows::rows, canopen_only_decoder_agrees<row>);
+    check_rows(pkp_rows::rows, canopen_only_decoder_agrees<row>);
+    check_rows(si_rows::rows, canopen_only_decoder_agrees<row>);
+    check_rows(si_rows::error_rows, canopen_only_decoder_agrees<error_row>);
+    // The J1939 manuals' frames: read by decode, wrong_id to decode_canopen.
+    for (const auto& r : j1939_rows::pkp2600si_rows) {
+        CAPTURE(r.frame);
+        const auto f = frame_of(r.frame);
+        CHECK(decode(f, keypad, model::pkp2600si).has_value());
+        CHECK(decode_canopen(f, keypad, model::pkp2600si) == result<message>(errc::wrong_id));
+    }
 }
 
 // Every byte of the one-byte fields of the CiA 301 frames every model takes, through decode: the

@@ -1,7 +1,7 @@
-// Footprint firmware (a_codec): firmware (a)'s program written with the one codec, decode and
-// encode with the model a constant, and the pressed_keys accessor. It carries the whole decoder
-// (encode checks its frame by decoding it), so it is measured next to (a) to show what the codec
-// costs a firmware that only needs the PDOs. Each pressed key lights its red LED; key 10 makes
+// Footprint firmware (a_codec): firmware (a)'s program written with the one codec, decode_canopen
+// and encode of the LED PDOs' own types with the model a constant, and the pressed_keys accessor.
+// It carries the whole CANopen decoder (encode checks its frame by decoding it), so it is measured
+// next to (a) to show what the codec costs a firmware that only needs the PDOs. Each pressed key lights its red LED; key 10 makes
 // every lit LED blink.
 // Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
 // can report the stack each one needs.
@@ -16,7 +16,7 @@ namespace pk = powerkey;
 
 namespace calls {
 [[gnu::noinline]] std::optional<pk::key_set> read_keys(const pc::frame& f, co::node_id n) {
-    const auto m = pk::decode(f, n, pk::model::pk1000);
+    const auto m = pk::decode_canopen(f, n, pk::model::pk1000);
     if (!m) return std::nullopt;
     return pk::pressed_keys(*m);
 }

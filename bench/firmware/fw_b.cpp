@@ -1,9 +1,10 @@
-// Footprint firmware (b): a bus monitor that carries the whole any-frame decoder, both object
-// dictionaries and every model (the model is read at run time from a configuration register, so
-// nothing can be left out). For each frame it reports the kind of message, or the error, in a
-// status register. Each library call sits in its own function of namespace `calls`, so that
-// scripts/footprint.sh can report the stack each one needs. It reads tolerantly (decode's
-// default); fw_b_strict.cpp is the same monitor reading strictly (powerkey::reading::strict).
+// Footprint firmware (b): a bus monitor of a CANopen bus that carries the whole any-frame decoder
+// (decode_canopen: every 11-bit frame, no J1939 code), every object dictionary and every model (the
+// model is read at run time from a configuration register, so nothing can be left out). For each
+// frame it reports the kind of message, or the error, in a status register. Each library call sits
+// in its own function of namespace `calls`, so that scripts/footprint.sh can report the stack each
+// one needs. It reads tolerantly (decode's default); fw_b_strict.cpp is the same monitor reading
+// strictly (powerkey::reading::strict).
 #include <powerkey/keypad/codec.hpp>
 
 #ifndef FW_B_READING
@@ -30,7 +31,7 @@ std::uint32_t kind_of(const powerkey::message& m) { return static_cast<std::uint
 namespace calls {
 [[gnu::noinline]] powerkey::result<powerkey::message> decode_any(const pc::frame& f, co::node_id n,
                                                                  powerkey::model m) {
-    return powerkey::decode(f, n, m, powerkey::reading::FW_B_READING);
+    return powerkey::decode_canopen(f, n, m, powerkey::reading::FW_B_READING);
 }
 }  // namespace calls
 

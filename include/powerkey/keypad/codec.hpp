@@ -56,13 +56,15 @@ constexpr result<message> answer(const T& v) noexcept {
 // line (reread, below). The reading is a template argument, so a frame of the manual's length
 // pays nothing for the tolerance. Defined here, before any use (clang evaluates a constant
 // expression only through functions defined where it is used); reread, defined after the front
-// it calls, is found when misfit<reading::tolerant> is instantiated (its Frame is a parameter).
+// it calls, is declared here.
+template <bool j1939>
+constexpr result<message> reread(const can::frame& f, const model_layout& keypad) noexcept;
 template <reading how, class Frame>
 constexpr result<message> misfit(const Frame& f, const model_layout& keypad) noexcept {
     if constexpr (how == reading::strict)
         return errc::wrong_length;
     else
-        return reread(f, keypad);
+        return reread<true>(f, keypad);
 }
 
 // The answer of a decoder of the CiA 301 or J1939 layer (NMT, SYNC, the switch back), its
@@ -517,19 +519,15 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
 // vocabulary (every model has a J1939 row, keypad/j1939_models.hpp).
 constexpr result<message> decode_j1939(model m, const can::frame& f,
                                        j1939::keypad_address address) noexcept {
-    const auto r = j1939::decode(f, m, address);
-    if (!r) return r.error();
-    return to_message(*r);
+    return j1939::detail::decode_as<message>(f, m, address);
 }
-// The same at any address, from the front's default case, its wrong_length read again as every
-// other frame's. Out of line, and given only what the front already holds (the layout): no
-// CANopen frame pays for a J1939 argument.
-template <reading how>
+// The same at any address, from the front's default case (which has tested the PGN). Out of
+// line, and given only what the front already holds (the layout): no CANopen frame pays for a
+// J1939 argument. A J1939 frame has one length, 8 bytes: no reading finds another form for it.
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
-    const auto r = decode_j1939(keypad.id, f, std::nullopt);
-    if (!r && r.error() == errc::wrong_length) return misfit<how>(f, keypad);
-    return r;
+    return j1939::detail::decode_keypad_pgn<message>(
+        f, (f.raw_id() >> 16) & 0x3FF, j1939::detail::j1939_row_of(keypad.id), std::nullopt);
 }
 
 // A J1939 alternative of message (encode hands it to the J1939 codec).
@@ -553,8 +551,9 @@ constexpr bool j1939_alternatives_in_place() noexcept {
 }
 static_assert(j1939_alternatives_in_place());
 
-// A J1939 message's frame: j1939::encode's (it checks the frame by decoding it back, narrowed to
-// `address` when given). Out of line: no CANopen message comes here.
+// A J1939 message's frame as j1939::encode builds and checks it (narrowed to `address` when
+// given), read back into message (one J1939 decoder in the program). Out of line: no CANopen
+// message comes here.
 POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
     model m, const message& msg, j1939::keypad_address address) noexcept {
     return std::visit(
@@ -563,7 +562,7 @@ POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
             if constexpr (is_j1939_alternative<T>) {
                 T manual = v;  // whatever `form` says, the manual's form is built
                 if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
-                return j1939::encode(m, manual, address);
+                return j1939::detail::encode_as<message>(m, manual, address);
             } else {
                 return errc::wrong_id_format;  // not reached: encode chose this path by the index
             }
@@ -717,8 +716,11 @@ constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id 
         msg);
 }
 
-// The front. Every length test sends a frame of another length to misfit.
-template <reading how>
+// The front. Every length test sends a frame of another length to misfit. With `j1939` false a
+// 29-bit frame is wrong_id and no J1939 code is in the program (decode_canopen). Testing for
+// 29-bit frames after the front instead (one copy of the front for both) cost every CANopen
+// frame 7 instructions.
+template <reading how, bool j1939 = true>
 POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, canopen::node_id node,
                                                         const model_layout& keypad) noexcept {
     // The same classification as canopen::classify, written into the dispatch (every frame
@@ -752,9 +754,10 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
         }
         default:
             if (f.is_extended()) {
+                if constexpr (!j1939) return errc::wrong_id;
                 // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
                 if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
-                return decode_extended<how>(keypad, f);
+                return decode_extended(keypad, f);
             }
             // Another node's frame, or one for every node: 000h (NMT) and 080h (SYNC).
             if (id == canopen::nmt_cob_id.value())
@@ -771,17 +774,18 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
 // is 00h. The message says which. A padded frame whose manual form is refused keeps that refusal
 // (every byte is there); anything else stays wrong_length. Out of line: frames of the manual's
 // length never come here. It reads with the strict decoder, so nothing here recurses. The node is
-// the frame's own: a PDO, SDO or heartbeat comes with this node's COB-ID, and NMT, SYNC and
-// 29-bit frames read the same for every node.
+// the frame's own: a PDO, SDO or heartbeat comes with this node's COB-ID, and NMT and SYNC read
+// the same for every node.
+template <bool j1939>
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
                                                       const model_layout& keypad) noexcept {
-    const std::uint32_t own = f.is_extended() ? 0 : f.id_word() & 0x7F;
+    const std::uint32_t own = f.id_word() & 0x7F;
     const auto node = *canopen::node_id::make(own == 0 ? 1 : own);
     const std::uint8_t n = f.size();
     for (std::uint8_t k = 0; k <= 8; ++k) {
         if (k == n) continue;
         const can::frame printed = with_length(f, k);
-        const auto r = decode_at<reading::strict>(printed, node, keypad);
+        const auto r = decode_at<reading::strict, j1939>(printed, node, keypad);
         if (!r && r.error() == errc::wrong_length) continue;  // not this identifier's length
         for (std::uint8_t i = k; i < n; ++i)
             if (f[i] != 0) return errc::wrong_length;
@@ -817,18 +821,54 @@ POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
 //                       size, reserved bits of COB-IDs and of the PDOs
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
-[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
-    const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
-    if (!detail::is_model(m)) return errc::value_out_of_range;
-    const detail::model_layout& keypad = detail::layout(m);
+namespace detail {
+// A CANopen message's frame (m checked), built and read back by the front (`j1939`: the one
+// decode uses, so that a program has one copy of it; false: decode_canopen's).
+template <bool j1939>
+constexpr result<can::frame> encode_canopen(canopen::node_id node, model m,
+                                            const message& msg) noexcept {
+    const auto f = build(layout(m), node, msg);
+    if (!f) return f.error();
+    const auto back = decode_at<reading::strict, j1939>(*f, node, layout(m));
+    if (!back) return back.error();
+    if (!(*back == with_form(msg, frame_form::manual))) return errc::value_out_of_range;
+    return *f;
+}
+
+// An alternative of message that is not J1939's.
+template <class T>
+concept canopen_alternative = !is_j1939_alternative<T> && requires(const T& v) {
+    {message(std::in_place_type<T>, v)};
+};
+
+template <bool j1939>
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
+                                                           canopen::node_id node, model m,
+                                                           reading how) noexcept {
+    if (!is_model(m)) return errc::value_out_of_range;
+    const model_layout& keypad = layout(m);
     if (how == reading::strict || POWERKEY_DETAIL_SIZE) {
         // Under -Os one decoder, the strict one, serves both readings (the tolerant one would be a
         // second copy): a frame of the manual's length then pays one test of its result.
-        const auto r = detail::decode_at<reading::strict>(f, node, keypad);
+        const auto r = decode_at<reading::strict, j1939>(f, node, keypad);
         if (how == reading::strict || r || r.error() != errc::wrong_length) return r;
-        return detail::reread(f, keypad);
+        return reread<j1939>(f, keypad);
     }
-    return detail::decode_at<reading::tolerant>(f, node, keypad);
+    return decode_at<reading::tolerant, j1939>(f, node, keypad);
+}
+}  // namespace detail
+
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
+    const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
+    return detail::decode_on<true>(f, node, m, how);
+}
+
+// decode on a bus that carries CANopen only (a firmware whose CAN controller takes 11-bit
+// identifiers): the same answer for every 11-bit frame; a 29-bit frame is wrong_id, and no J1939
+// code is in the program (firmware (b) of docs/performance.md).
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode_canopen(
+    const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
+    return detail::decode_on<false>(f, node, m, how);
 }
 
 // decode for a keypad whose model is known when the program is built: decode<model::pk1000>(f,
@@ -863,14 +903,19 @@ template <model M>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    if (msg.index() >= detail::first_j1939_index) [[unlikely]]
+    if (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index)
+        [[unlikely]]
         return detail::encode_j1939(m, msg, std::nullopt);
-    const auto f = detail::build(detail::layout(m), node, msg);
-    if (!f) return f.error();
-    const auto back = detail::decode_at<reading::strict>(*f, node, detail::layout(m));
-    if (!back) return back.error();
-    if (!(*back == detail::with_form(msg, frame_form::manual))) return errc::value_out_of_range;
-    return *f;
+    return detail::encode_canopen<true>(node, m, msg);
+}
+
+// The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
+// is in the program.
+template <detail::canopen_alternative T>
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
+                                                  const T& msg) noexcept {
+    if (!detail::is_model(m)) return errc::value_out_of_range;
+    return detail::encode_canopen<false>(node, m, message(msg));
 }
 
 // The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,

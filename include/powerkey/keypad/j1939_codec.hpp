@@ -108,9 +108,12 @@ struct code_pair {
 
 namespace detail {
 
-template <class T>
-constexpr result<message> answer(const T& v) noexcept {
-    return result<message>(std::in_place, std::in_place_type<T>, v);
+// The decoders below build the message variant M: j1939::message for j1939::decode, or
+// powerkey::message for the any-frame decoder (keypad/codec.hpp), which then needs no copy from
+// one variant to the other.
+template <class M, class T>
+constexpr result<M> answer(const T& v) noexcept {
+    return result<M>(std::in_place, std::in_place_type<T>, v);
 }
 
 // Bytes [from, 8) of the data word w are FFh.
@@ -179,23 +182,25 @@ constexpr errc received(const model_row& r, feature f, const route& at,
 // --- proprietary A (EF00h): the frames of the keypad ---------------------------------------------
 
 // Errors after the route: reserved_not_ff, value_out_of_range.
-constexpr result<message> key_contact_of(const route& at, std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> key_contact_of(const route& at, std::uint64_t w) noexcept {
     if (!ff_from(w, 6)) return errc::reserved_not_ff;
     const std::uint8_t key = byte_of(w, 3), state = byte_of(w, 4), id = byte_of(w, 5);
     if (key < 1 || key > 16 || state > 1 || id == 0xFF) return errc::value_out_of_range;
-    return answer(key_contact{at.priority, at.destination, at.source, key, state == 1, id});
+    return answer<M>(key_contact{at.priority, at.destination, at.source, key, state == 1, id});
 }
 
-constexpr result<message> heartbeat_of(const model_row& r, const route& at,
-                                       std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> heartbeat_of(const model_row& r, const route& at, std::uint64_t w) noexcept {
     if (byte_of(w, 6) != 0xFF) return errc::reserved_not_ff;
     const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
     if ((keys >> r.keys) != 0) return errc::reserved_not_zero;
-    return answer(heartbeat{at.priority, at.destination, at.source, byte_of(w, 3),
-                            key_set::from_mask(keys), byte_of(w, 7)});
+    return answer<M>(heartbeat{at.priority, at.destination, at.source, byte_of(w, 3),
+                               key_set::from_mask(keys), byte_of(w, 7)});
 }
 
-constexpr result<message> revision_of(const route& at, std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> revision_of(const route& at, std::uint64_t w) noexcept {
     software_revision v{at.priority, at.destination, at.source, {}};
     bool ended = false;
     for (unsigned i = 0; i < 5; ++i) {
@@ -206,41 +211,42 @@ constexpr result<message> revision_of(const route& at, std::uint64_t w) noexcept
             return errc::value_out_of_range;
         v.bytes[i] = b;
     }
-    return answer(v);
+    return answer<M>(v);
 }
 
-constexpr result<message> led_ack_of(const model_row& r, const route& at,
-                                     std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> led_ack_of(const model_row& r, const route& at, std::uint64_t w) noexcept {
     const std::uint8_t b1 = byte_of(w, 1), key = byte_of(w, 2), b3 = byte_of(w, 3),
                        b4 = byte_of(w, 4);
     if (r.form == led_form::code) {
         if (b1 != 0xFF || !ff_from(w, 4)) return errc::reserved_not_ff;
         if (!has_led(r, key)) return errc::value_out_of_range;
-        return answer(led_ack_code{at.priority, at.destination, at.source, key, b3});
+        return answer<M>(led_ack_code{at.priority, at.destination, at.source, key, b3});
     }
     if (!ff_from(w, 5)) return errc::reserved_not_ff;
     if (b1 > 3 || !has_led(r, key) || !is_colour(b3) || !is_secondary(b4))
         return errc::value_out_of_range;
-    return answer(led_ack{at.priority, at.destination, at.source, key, static_cast<led_mode>(b1),
-                          static_cast<led_colour>(b3), static_cast<led_colour>(b4)});
+    return answer<M>(led_ack{at.priority, at.destination, at.source, key, static_cast<led_mode>(b1),
+                             static_cast<led_colour>(b3), static_cast<led_colour>(b4)});
 }
 
 // --- proprietary A (EF00h): the frames to the keypad ---------------------------------------------
 
-constexpr result<message> set_led_of(const model_row& r, const route& at,
-                                     std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> set_led_of(const model_row& r, const route& at, std::uint64_t w) noexcept {
     const std::uint8_t key = byte_of(w, 3), b4 = byte_of(w, 4), b5 = byte_of(w, 5),
                        b6 = byte_of(w, 6);
     if (r.form == led_form::code) {
         if (!ff_from(w, 5)) return errc::reserved_not_ff;
         if (!has_led(r, key)) return errc::value_out_of_range;
-        return answer(set_led_code{at.priority, at.destination, at.source, key, b4});
+        return answer<M>(set_led_code{at.priority, at.destination, at.source, key, b4});
     }
     if (byte_of(w, 7) != 0xFF) return errc::reserved_not_ff;
     if (!has_led(r, key) || !is_colour(b4) || b5 > 3 || !is_secondary(b6))
         return errc::value_out_of_range;
-    return answer(set_led{at.priority, at.destination, at.source, key, static_cast<led_colour>(b4),
-                          static_cast<led_mode>(b5), static_cast<led_colour>(b6)});
+    return answer<M>(set_led{at.priority, at.destination, at.source, key,
+                             static_cast<led_colour>(b4), static_cast<led_mode>(b5),
+                             static_cast<led_colour>(b6)});
 }
 
 // Errors: value_out_of_range for a byte outside the parameter's range.
@@ -316,8 +322,8 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
 }
 
 // Errors: reserved_not_ff (a byte after the parameters), value_out_of_range.
-constexpr result<message> command_of(const command_row& row, const route& at,
-                                     std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> command_of(const command_row& row, const route& at, std::uint64_t w) noexcept {
     const unsigned used = row.p1 == command_param::none ? 3 : row.p2 == command_param::none ? 4 : 5;
     if (!ff_from(w, used)) return errc::reserved_not_ff;
     command c{};
@@ -327,13 +333,14 @@ constexpr result<message> command_of(const command_row& row, const route& at,
     c.code = row.code;
     if (const errc e = read_param(row.p1, byte_of(w, 3), c); e != errc{}) return e;
     if (const errc e = read_param(row.p2, byte_of(w, 4), c); e != errc{}) return e;
-    return answer(c);
+    return answer<M>(c);
 }
 
-constexpr result<message> switch_of(const route& at, std::uint64_t w) noexcept {
+template <class M>
+constexpr result<M> switch_of(const route& at, std::uint64_t w) noexcept {
     if (!ff_from(w, 4)) return errc::reserved_not_ff;
     if (byte_of(w, 3) != 0x00) return errc::value_out_of_range;
-    return answer(switch_to_canopen{at.priority, at.destination, at.source});
+    return answer<M>(switch_to_canopen{at.priority, at.destination, at.source});
 }
 
 // Command 01h: the keypad's key contact state or an LED command to it. Narrowed, the keypad's
@@ -350,12 +357,13 @@ constexpr bool is_led_command(const model_row& r, const route& at, std::uint64_t
     return byte_of(w, 4) <= 1 && byte_of(w, 5) <= 3;
 }
 
-constexpr result<message> decode_proprietary_a(const model_row& r, const route& at, std::uint64_t w,
-                                               keypad_address keypad) noexcept {
+template <class M>
+constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, std::uint64_t w,
+                                         keypad_address keypad) noexcept {
     const std::uint8_t b0 = byte_of(w, 0);
     if (b0 == 0x00) {  // the LED acknowledgement has no header
         if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
-        return led_ack_of(r, at, w);
+        return led_ack_of<M>(r, at, w);
     }
     if (b0 != header_0 || byte_of(w, 1) != header_1) return errc::unknown_command;
     const std::uint8_t code = byte_of(w, 2);
@@ -364,22 +372,22 @@ constexpr result<message> decode_proprietary_a(const model_row& r, const route& 
             if (is_led_command(r, at, w, keypad)) {
                 if (const errc e = received(r, feature::led_command, at, keypad); e != errc{})
                     return e;
-                return set_led_of(r, at, w);
+                return set_led_of<M>(r, at, w);
             }
             if (const errc e = sent(r, feature::key_contact, at, keypad); e != errc{}) return e;
-            return key_contact_of(at, w);
+            return key_contact_of<M>(at, w);
         case 0xF9:
             if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
-            return heartbeat_of(r, at, w);
+            return heartbeat_of<M>(r, at, w);
         case 0x80:
             if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{})
                 return e;
-            return switch_of(at, w);
+            return switch_of<M>(at, w);
         case 0x2A:
             if (!ff_from(w, 3)) {  // the answer; the request's bytes 3..7 are FFh
                 if (const errc e = sent(r, feature::software_revision, at, keypad); e != errc{})
                     return e;
-                return revision_of(at, w);
+                return revision_of<M>(at, w);
             }
             break;
         default: break;
@@ -387,13 +395,14 @@ constexpr result<message> decode_proprietary_a(const model_row& r, const route& 
     const command_row* row = find_command(code);
     if (row == nullptr) return errc::unknown_command;
     if (const errc e = received(r, row->what, at, keypad); e != errc{}) return e;
-    return command_of(*row, at, w);
+    return command_of<M>(*row, at, w);
 }
 
 // --- the multiple-LED frames (A700h, A600h) and the address claim (EE00h) -----------------------
 
-constexpr result<message> multiple_leds_of(const model_row& r, const route& at, colour_frame frame,
-                                           std::uint64_t w, keypad_address keypad) noexcept {
+template <class M>
+constexpr result<M> multiple_leds_of(const model_row& r, const route& at, colour_frame frame,
+                                     std::uint64_t w, keypad_address keypad) noexcept {
     if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
     const unsigned bits = 4u * r.plane_leds;
     const std::uint64_t used = powerkey::detail::low_bits(bits);
@@ -402,16 +411,17 @@ constexpr result<message> multiple_leds_of(const model_row& r, const route& at, 
         const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
         if (c >= 0xA && c <= 0xE) return errc::value_out_of_range;
     }
-    return answer(multiple_leds{at.priority, at.destination, at.source, frame,
-                                multiple_leds::halves(w & used)});
+    return answer<M>(multiple_leds{at.priority, at.destination, at.source, frame,
+                                   multiple_leds::halves(w & used)});
 }
 
-constexpr result<message> address_claimed_of(const model_row& r, const route& at, std::uint64_t w,
-                                             keypad_address keypad) noexcept {
+template <class M>
+constexpr result<M> address_claimed_of(const model_row& r, const route& at, std::uint64_t w,
+                                       keypad_address keypad) noexcept {
     if (const errc e = sent(r, feature::address_claim, at, keypad); e != errc{}) return e;
     const auto n = unpack_name(w);
     if (!n) return n.error();
-    return answer(address_claimed{at.priority, at.destination, at.source, *n});
+    return answer<M>(address_claimed{at.priority, at.destination, at.source, *n});
 }
 
 // --- encoding
@@ -504,26 +514,39 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
 //                       a colour above 09h, a state above 03h, a level above 3Fh, a baud code
 //                       other than 02h/03h, a reserved address FEh, a period below 05h, a
 //                       multiple-LED code Ah..Eh, revision bytes that are not ASCII, ...)
-[[nodiscard]] constexpr result<message> decode(const can::frame& f, model m,
-                                               keypad_address keypad = std::nullopt) noexcept {
-    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
-    if (!f.is_extended()) return errc::wrong_id_format;
+namespace detail {
+// decode, building the variant M (j1939::message, or powerkey::message for keypad/codec.hpp).
+// A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r.
+template <class M>
+constexpr result<M> decode_keypad_pgn(const can::frame& f, std::uint32_t pf, const model_row& r,
+                                      keypad_address keypad) noexcept {
     const std::uint32_t id = f.raw_id();
-    const std::uint32_t pf = (id >> 16) & 0x3FF;  // EDP, DP and PDU format: the PGN of PDU1
-    // First: most 29-bit frames on a bus are not a keypad's (the CANopen front sends them all).
-    if (!detail::is_keypad_pf(pf)) return errc::wrong_id;
-    const model_row& r = detail::j1939_row_of(m);
-    const detail::route at{priority::make((id >> 26) & 7u).value(),
-                           static_cast<std::uint8_t>(id >> 8), static_cast<std::uint8_t>(id)};
+    const route at{priority::make((id >> 26) & 7u).value(), static_cast<std::uint8_t>(id >> 8),
+                   static_cast<std::uint8_t>(id)};
     if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
     if (f.size() != 8) return errc::wrong_length;
     const std::uint64_t w = f.data_le();
     switch (pf) {
-        case 0xEF: return detail::decode_proprietary_a(r, at, w, keypad);
-        case 0xA7: return detail::multiple_leds_of(r, at, 1, w, keypad);
-        case 0xA6: return detail::multiple_leds_of(r, at, 2, w, keypad);
-        default: return detail::address_claimed_of(r, at, w, keypad);
+        case 0xEF: return decode_proprietary_a<M>(r, at, w, keypad);
+        case 0xA7: return multiple_leds_of<M>(r, at, 1, w, keypad);
+        case 0xA6: return multiple_leds_of<M>(r, at, 2, w, keypad);
+        default: return address_claimed_of<M>(r, at, w, keypad);
     }
+}
+template <class M>
+constexpr result<M> decode_as(const can::frame& f, model m, keypad_address keypad) noexcept {
+    if (!is_j1939_model(m)) return errc::value_out_of_range;
+    if (!f.is_extended()) return errc::wrong_id_format;
+    const std::uint32_t pf = (f.raw_id() >> 16) & 0x3FF;  // EDP, DP and PDU format: a PDU1 PGN
+    // First: most 29-bit frames on a bus are not a keypad's (the CANopen front sends them all).
+    if (!is_keypad_pf(pf)) return errc::wrong_id;
+    return decode_keypad_pgn<M>(f, pf, j1939_row_of(m), keypad);
+}
+}  // namespace detail
+
+[[nodiscard]] constexpr result<message> decode(const can::frame& f, model m,
+                                               keypad_address keypad = std::nullopt) noexcept {
+    return detail::decode_as<message>(f, m, keypad);
 }
 
 // The frame of msg for a keypad of model m, such that decode(frame, m, keypad) == msg. A message
@@ -537,16 +560,25 @@ concept message_alternative = []<class... A>(std::type_identity<std::variant<A..
     return (std::is_same_v<T, A> || ...);
 }(std::type_identity<message>{});
 
-template <message_alternative T>
-[[nodiscard]] constexpr result<can::frame> encode(model m, const T& msg,
-                                                  keypad_address keypad = std::nullopt) noexcept {
-    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
-    const can::frame f = detail::build(detail::j1939_row_of(m), msg);
-    const auto back = decode(f, m, keypad);
+namespace detail {
+// encode, its frame read back into the variant M (decode_as<M>: keypad/codec.hpp reads it back
+// into powerkey::message, so that a program holds one J1939 decoder).
+template <class M, class T>
+constexpr result<can::frame> encode_as(model m, const T& msg, keypad_address keypad) noexcept {
+    if (!is_j1939_model(m)) return errc::value_out_of_range;
+    const can::frame f = build(j1939_row_of(m), msg);
+    const auto back = decode_as<M>(f, m, keypad);
     if (!back) return back.error();
     const T* same = std::get_if<T>(&*back);
     if (same == nullptr || !(*same == msg)) return errc::value_out_of_range;
     return f;
+}
+}  // namespace detail
+
+template <message_alternative T>
+[[nodiscard]] constexpr result<can::frame> encode(model m, const T& msg,
+                                                  keypad_address keypad = std::nullopt) noexcept {
+    return detail::encode_as<message>(m, msg, keypad);
 }
 
 [[nodiscard]] constexpr result<can::frame> encode(model m, const message& msg,
