@@ -16,11 +16,8 @@
 namespace bench {
 
 inline constexpr std::array<std::span<const op>, 5> op_groups = {
-    std::span<const op>(core_ops),
-    std::span<const op>(pk1000_ops),
-    std::span<const op>(pkp_ops),
-    std::span<const op>(si_ops),
-    std::span<const op>(j1939_ops),
+    std::span<const op>(core_ops), std::span<const op>(pk1000_ops), std::span<const op>(pkp_ops),
+    std::span<const op>(si_ops),   std::span<const op>(j1939_ops),
 };
 
 // Calls f(op) for every operation, floor first.

@@ -1,10 +1,9 @@
 // Footprint firmware (a_codec): firmware (a)'s program written with the one codec, decode_canopen
 // and encode of the LED PDOs' own types with the model a constant, and the pressed_keys accessor.
 // It carries the whole CANopen decoder (encode checks its frame by decoding it), so it is measured
-// next to (a) to show what the codec costs a firmware that only needs the PDOs. Each pressed key lights its red LED; key 10 makes
-// every lit LED blink.
-// Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
-// can report the stack each one needs.
+// next to (a) to show what the codec costs a firmware that only needs the PDOs. Each pressed key
+// lights its red LED; key 10 makes every lit LED blink. Each library call sits in its own function
+// of namespace `calls`, so that scripts/footprint.sh can report the stack each one needs.
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
 
