@@ -18,6 +18,8 @@
 #include <powerkey/behaviour/clock.hpp>
 #include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/j1939_checks.hpp>
+#include <powerkey/behaviour/j1939_controller.hpp>
+#include <powerkey/behaviour/j1939_keypad.hpp>
 #include <powerkey/behaviour/key_modes.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
 

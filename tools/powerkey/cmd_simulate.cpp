@@ -1,8 +1,11 @@
-// powerkey simulate --model M [--node N] [--press T:K] [--release T:K] [--until T] [FILE...]
+// powerkey simulate --model M [--node N] [--j1939] [--press T:K] [--release T:K] [--until T]
+//                   [FILE...]
 //
 // Runs the virtual keypad (include/powerkey/behaviour/virtual_keypad.hpp) as a filter: reads the
 // frames a controller sends from any log (input.hpp), and writes the frames the keypad sends as
 // candump log lines in time order, starting with its boot-up (docs/cli.md, docs/virtual-keypad.md).
+// With --j1939 the keypad is a J1939 one from power-on (behaviour/j1939_keypad.hpp): no boot-up,
+// its key contact states, heartbeats and answers in J1939.
 //
 // Time: the keypad powers on at the first time of the input (0 when it has none); times are
 // honoured to the millisecond. A frame without a time comes `untimed_step` after the frame
@@ -52,6 +55,7 @@ std::string seconds_text(std::uint64_t ms) {
 struct simulate_options {
     std::vector<std::string> press, release;  // T:K
     std::string until;                        // T
+    bool j1939 = false;                       // the keypad starts in J1939
     std::vector<std::string> files;
 };
 
@@ -88,6 +92,10 @@ public:
 int run_simulate(const options& c, const simulate_options& o) {
     std::vector<key_event> keys;
     const auto mi = info(c.keypad).value();
+    if (o.j1939 && !mi.j1939)
+        return usage_error("--j1939: the virtual " + std::string(to_string(c.keypad)) +
+                           " does not speak J1939 (its CANopen manual has no switch, 20FFh; "
+                           "docs/virtual-keypad.md)");
     for (const auto* list : {&o.press, &o.release}) {
         for (const auto& text : *list) {
             const auto colon = text.find(':');
@@ -168,7 +176,9 @@ int run_simulate(const options& c, const simulate_options& o) {
     if (until) end = static_cast<std::uint64_t>(*until / 1000);
 
     const std::string iface = in.interface.empty() ? std::string("can0") : in.interface;
-    behaviour::virtual_keypad<64> k(c.keypad, c.node);
+    behaviour::keypad_options ko;
+    ko.start_in_j1939 = o.j1939;
+    behaviour::virtual_keypad<64> k(c.keypad, c.node, ko);
     // The conversation as a checker sees it, to say which requests the keypad drops.
     behaviour::checker<> conversation({c.keypad, c.node});
     const auto where = [&](std::uint32_t index) {
@@ -250,9 +260,10 @@ void add_simulate(registry& r) {
     static simulate_options o;
     auto& sub =
         r.add({"simulate",
-               "--model M [--node N] [--press T:K] [--release T:K] [--until T]\n"
-               "  [FILE...]",
+               "--model M [--node N] [--j1939] [--press T:K] [--release T:K]\n"
+               "  [--until T] [FILE...]",
                "a virtual keypad answering a controller's frames (docs/virtual-keypad.md)",
+               "  --j1939      the keypad is in J1939 from power-on (no boot-up)\n"
                "  --press T:K  press key K at T seconds after power-on (repeatable)\n"
                "  --release T:K  release key K at T seconds (repeatable)\n"
                "  --until T    run until T seconds (default: 100 ms after the last input)\n",
@@ -261,6 +272,7 @@ void add_simulate(registry& r) {
     sub.add_option("--press", o.press)->allow_extra_args(false);
     sub.add_option("--release", o.release)->allow_extra_args(false);
     sub.add_option("--until", o.until);
+    sub.add_flag("--j1939", o.j1939);
     sub.add_option("FILE", o.files);
 }
 

@@ -16,6 +16,7 @@
 #define POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
 
 #include <powerkey/behaviour/clock.hpp>
+#include <powerkey/behaviour/j1939_keypad.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/heartbeat.hpp>
 #include <powerkey/canopen/nmt.hpp>
@@ -44,7 +45,7 @@ namespace powerkey::behaviour {
 // --- the keypad ---------------------------------------------------------------------------------
 
 // Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
-// switched to J1939 (PK1000 49), where it hears only the switch back.
+// switched to J1939 (PK1000 49), where behaviour/j1939_keypad.hpp speaks for it.
 // clang-format off
 #define POWERKEY_BEHAVIOUR_RUN_STATE_LIST(X) \
     X(off) \
@@ -66,6 +67,9 @@ struct keypad_options {
     // figure). The reply leaves at receive time + this, released by advance(); 0 answers at
     // once (and then no request can find the keypad busy).
     std::uint32_t sdo_response_ms = 1;
+    // The keypad is a J1939 one: J1939 is its stored protocol (20FFh/1 = 1) from the start, so
+    // power_on() starts it in J1939. Ignored for a model without the switch (the PKP LI models).
+    bool start_in_j1939 = false;
 };
 
 // The backlight as the keypad shows it (PK1000 15, 19 b/c; PKP 13 b/c, 30).
@@ -86,10 +90,12 @@ public:
                                       keypad_options options = {}) noexcept
         : model_(powerkey::detail::is_model(m) ? m : powerkey::model::pk1000),
           info_(&powerkey::detail::row_of(model_)),
-          options_(options) {
+          options_(options),
+          j1939_(model_) {
         factory_defaults();
         value_[idx(object::node_id)] = node.value();
         node_ = node;
+        if (options.start_in_j1939 && info_->j1939) value_[idx(object::protocol_j1939)] = 1;
     }
 
     // --- power and faults -------------------------------------------------------------------
@@ -133,7 +139,10 @@ public:
             return;
         }
         if (state_ == run_state::j1939) {
-            on_j1939(f, t);
+            if (j1939_.receive(f, t, sink()) == j1939_keypad::heard::to_canopen) {
+                value_[idx(object::protocol_j1939)] = 0;  // then boots in CANopen (inferred)
+                boot(t);
+            }
             return;
         }
         if (f.is_extended()) return;
@@ -158,6 +167,7 @@ public:
     constexpr void advance(millis t) noexcept {
         if (silent_ && reached(silent_until_, t)) silent_ = false;
         now_ = t;
+        if (state_ == run_state::j1939) j1939_.advance(t, keys_, sink());
         if (state_ == run_state::off || state_ == run_state::j1939) return;
         release_reply(t);
         // heartbeat producer (PK1000 29, PKP 9/17): every heartbeat_time ms, the NMT state
@@ -198,6 +208,8 @@ public:
             if (!due || before(t, *due)) due = t;
         };
         if (silent_) take(silent_until_);
+        if (state_ == run_state::j1939)
+            if (const auto j = j1939_.next_due()) take(*j);
         if (state_ == run_state::off || state_ == run_state::j1939) return due;
         if (pending_) take(pending_->due);
         if (value(object::heartbeat_time) != 0) take(next_heartbeat_);
@@ -226,6 +238,7 @@ public:
         advance(t);
         s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(info_->keys));
         if (s == keys_) return;
+        if (state_ == run_state::j1939) j1939_.keys_changed(keys_, s, sink());
         keys_ = s;
         if (state_ == run_state::operational && event_driven()) send_keys(t);
     }
@@ -247,8 +260,13 @@ public:
     // Key LED brightness 00h..3Fh (PK1000 14, 19 a; PKP 13 b, 30).
     [[nodiscard]] constexpr powerkey::level brightness() const noexcept { return brightness_; }
     [[nodiscard]] constexpr backlight_state backlight() const noexcept { return backlight_; }
-    // The bit rate it runs at: the stored 2010h / command 11h value as of the last reset.
-    [[nodiscard]] constexpr baud_rate baud() const noexcept { return baud_; }
+    // The bit rate it runs at: the stored 2010h / command 11h value as of the last reset; in
+    // J1939, 6Fh's.
+    [[nodiscard]] constexpr baud_rate baud() const noexcept {
+        return state_ == run_state::j1939 ? j1939_.settings().baud : baud_;
+    }
+    // The J1939 side: its settings, address, LEDs and levels (behaviour/j1939_keypad.hpp).
+    [[nodiscard]] constexpr const j1939_keypad& j1939() const noexcept { return j1939_; }
     // The tick timer of the key-state PDO at t: +1 every 100 ms since power on (PK1000 11).
     [[nodiscard]] constexpr std::uint8_t tick(millis t) const noexcept {
         return static_cast<std::uint8_t>(elapsed(boot_time_, t).value / 100u);
@@ -370,6 +388,7 @@ private:
         boot_time_ = t;
         if (value(object::protocol_j1939) != 0 && info_->j1939) {
             state_ = run_state::j1939;
+            j1939_.boot(t, keys_, false, sink());
             return;
         }
         state_ = value(object::active_on_startup) != 0 ? run_state::operational
@@ -772,16 +791,6 @@ private:
         }
     }
 
-    // The J1939 side (PK1000 49): only the switch back to CANopen is heard; the keypad then
-    // boots in CANopen (inferred: the manual shows the frame only).
-    constexpr void on_j1939(const can::frame& f, millis t) noexcept {
-        if (!f.is_extended()) return;
-        const auto m = powerkey::decode(f, node_, model_);
-        if (!m || !std::holds_alternative<j1939::switch_to_canopen>(*m)) return;
-        value_[idx(object::protocol_j1939)] = 0;
-        boot(t);
-    }
-
     // --- sending ------------------------------------------------------------------------------
 
     constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
@@ -809,6 +818,7 @@ private:
         if (r.then == after_reply::to_j1939) {
             state_ = run_state::j1939;
             upload_ = {};
+            j1939_.boot(r.due, keys_, true, sink());
         } else if (r.then == after_reply::reboot) {
             boot(r.due);
         }
@@ -823,13 +833,20 @@ private:
     }
     constexpr void send_from(canopen::node_id from, std::uint16_t base, std::uint8_t n,
                              const can::payload& p) noexcept {
+        const auto id = can::standard_id::make(base + from.value()).value();
+        emit(can::frame(id, can::dlc::make(n).value(), p));
+    }
+    // Every frame the keypad sends, CANopen or J1939, unless silenced or dropped.
+    constexpr void emit(const can::frame& f) noexcept {
         if (silent_) return;
         if (drop_tx_ > 0) {
             --drop_tx_;
             return;
         }
-        const auto id = can::standard_id::make(base + from.value()).value();
-        (void)outbox_.push(can::frame(id, can::dlc::make(n).value(), p));
+        (void)outbox_.push(f);
+    }
+    constexpr auto sink() noexcept {
+        return [this](const can::frame& f) { emit(f); };
     }
 
     struct pending_reply {
@@ -871,6 +888,7 @@ private:
     std::uint32_t drop_rx_ = 0;
     std::uint32_t drop_tx_ = 0;
 
+    j1939_keypad j1939_;
     frame_queue<Outbox> outbox_{};
 };
 
