@@ -116,12 +116,16 @@ grep -q "18EFFF21#041B01020121FFFF .*J1939 key contact .*key: 2  pressed: yes  i
 grep -q "18EFFF21#0003010405FFFFFF .*J1939 LED ack .*key: 1  mode: alternate_blink  colour: yellow  secondary: cyan$" "$tmp/text" ||
   fail "j1939 decode: no acknowledgement: $(cat "$tmp/text")"
 # The J1939 sample logs of the complete manuals, fed to a keypad in J1939: read without an error,
-# every line a candump log line with a 29-bit identifier.
+# every line a candump log line with a 29-bit identifier until the log's last frame (04 1B 80h 00h,
+# the switch back to CANopen), after which the keypad boots up in CANopen at its default node 15h.
 for m in pkp1600si pkp2600si; do
   sim --model $m --j1939 "$src/examples/logs/j1939-$m.log" > "$tmp/out" 2> "$tmp/err" ||
     fail "j1939-$m: exit status $? $(head -3 "$tmp/err")"
   [ -s "$tmp/out" ] || fail "j1939-$m: the keypad sent nothing"
-  grep -Evq '^\([0-9.]+\) can0 [0-9A-F]{8}#([0-9A-F]{2}){8}$' "$tmp/out" && fail "j1939-$m: a line not a J1939 frame"
+  sed '$d' "$tmp/out" | grep -Evq '^\([0-9.]+\) can0 [0-9A-F]{8}#([0-9A-F]{2}){8}$' &&
+    fail "j1939-$m: a line before the switch not a J1939 frame"
+  tail -n 1 "$tmp/out" | grep -Eq '^\([0-9.]+\) can0 715#00$' ||
+    fail "j1939-$m: no CANopen boot-up after the switch: $(tail -n 1 "$tmp/out")"
   "$pk" decode --model $m "$tmp/out" > "$tmp/text" 2>/dev/null
   grep -q "error:" "$tmp/text" && fail "j1939-$m: decode: $(grep -m3 'error:' "$tmp/text")"
 done
