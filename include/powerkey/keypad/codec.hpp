@@ -639,9 +639,10 @@ constexpr can::frame with_length(const can::frame& f, std::uint8_t length) noexc
 
 // --- encoding -----------------------------------------------------------------------------------
 
-POWERKEY_DETAIL_INLINE constexpr can::frame pdo_frame(canopen::function fn, canopen::node_id node,
-                                                      std::uint8_t dlc,
-                                                      std::uint64_t bits) noexcept {
+// The frame of function fn for `node` whose dlc bytes are `bits`, little endian.
+POWERKEY_DETAIL_INLINE constexpr can::frame word_frame(canopen::function fn, canopen::node_id node,
+                                                       std::uint8_t dlc,
+                                                       std::uint64_t bits) noexcept {
     can::payload p{};
     store_le<8>(p, 0, bits);
     return can::frame(canopen::cob_id(fn, node), can::dlc::make(dlc).value(), p);
@@ -659,26 +660,26 @@ constexpr result<can::frame> build_of(const model_layout& keypad, canopen::node_
     } else if constexpr (is_j1939_alternative<T>) {
         return errc::wrong_id_format;  // encode gives these to encode_j1939
     } else if constexpr (std::is_same_v<T, key_state>) {
-        return pdo_frame(function::tpdo1, node, 5,
-                         (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
+        return word_frame(function::tpdo1, node, 5,
+                          (v.keys.mask() & 0xFFFF) | (std::uint64_t{v.tick} << 32));
     } else if constexpr (std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) {
-        return pdo_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2, node, 8,
-                         pack_leds(keypad, v.map, keypad.planes));
+        return word_frame(std::is_same_v<T, led_on> ? function::rpdo1 : function::rpdo2, node, 8,
+                          pack_leds(keypad, v.map, keypad.planes));
     } else if constexpr (std::is_same_v<T, led_brightness>) {
-        return pdo_frame(function::rpdo3, node, 8, v.level.value());
+        return word_frame(function::rpdo3, node, 8, v.level.value());
     } else if constexpr (std::is_same_v<T, encoder_leds>) {
-        return pdo_frame(function::rpdo3, node, 8, v.leds.mask());
+        return word_frame(function::rpdo3, node, 8, v.leds.mask());
     } else if constexpr (std::is_same_v<T, encoder_state>) {
-        return pdo_frame(v.encoder == 2 ? function::tpdo3 : function::tpdo2, node, 8,
-                         (v.counterclockwise ? 0x80u : 0u) | (v.ticks & 0x7Fu) |
-                             (std::uint64_t{v.counter} << 8) | (std::uint64_t{v.top} << 24));
+        return word_frame(v.encoder == 2 ? function::tpdo3 : function::tpdo2, node, 8,
+                          (v.counterclockwise ? 0x80u : 0u) | (v.ticks & 0x7Fu) |
+                              (std::uint64_t{v.counter} << 8) | (std::uint64_t{v.top} << 24));
     } else if constexpr (std::is_same_v<T, analog_inputs>) {
         std::uint64_t bits = 0;
         for (std::size_t i = 0; i < 4; ++i)
             bits |= std::uint64_t{static_cast<std::uint16_t>(v.mv[i] / 10)} << (16 * i);
-        return pdo_frame(function::tpdo4, node, 8, bits);
+        return word_frame(function::tpdo4, node, 8, bits);
     } else if constexpr (std::is_same_v<T, backlight>) {
-        return pdo_frame(
+        return word_frame(
             function::rpdo4, node, 8,
             v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(v.colour)} << 8));
     } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
@@ -731,6 +732,98 @@ requires(std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) constexpr er
                                   (v.map.green.mask() & ~(keypad.planes > 1 ? one : 0)) |
                                   (v.map.blue.mask() & ~(keypad.planes > 2 ? one : 0));
     return outside != 0 ? errc::value_out_of_range : errc{};
+}
+
+// The frame of a PDO that checks itself, checked.
+template <class T>
+requires requires(const model_layout& k, const T& v) { own_check(k, v); }
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const T& v) noexcept {
+    if (const errc e = own_check(keypad, v); e != errc{}) return e;
+    return build_of(keypad, node, v);
+}
+
+// The SDO alternatives check themselves too: the row found by object once, the access decode
+// tests (unknown_command), and the value read back by value_message or read_command, the
+// decoder's own reading of the bytes built (no frame is decoded): a value that would come back as
+// another is value_out_of_range. Same answers as the frame read back (a test runs every manual
+// row and every object over many values through both).
+template <class T>
+concept own_sdo = std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
+    std::is_same_v<T, sdo_read_reply> || std::is_same_v<T, sdo_write_reply> ||
+    std::is_same_v<T, command>;
+
+// An expedited SDO frame: the specifier, row's address and 4 data bytes.
+POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, canopen::node_id node,
+                                                      std::uint8_t specifier, const codec_row& row,
+                                                      std::uint64_t data) noexcept {
+    return word_frame(fn, node, 8, specifier | std::uint64_t{row.key} << 8 | data << 32);
+}
+
+// The frame of an SDO read (40h), write (23h..2Fh), write reply (60h) or read reply (43h..4Fh) of
+// object `id` (value `v` for the two that carry one), checked. One function for the four: one
+// copy in a program.
+enum class sdo_verb : std::uint8_t { read, write, write_reply, read_reply };
+constexpr result<can::frame> checked_sdo(const model_layout& keypad, canopen::node_id node,
+                                         object id, sdo_verb verb, const object_value& v) noexcept {
+    using canopen::function;
+    const std::uint8_t i = find_codec_row(keypad.dictionary, id);
+    if (i == 0) return errc::unknown_object;
+    const codec_row& row = codec_rows[i];
+    const bool write = verb == sdo_verb::write || verb == sdo_verb::write_reply;
+    if (verb == sdo_verb::write && row.kind == value_kind::commands)
+        return errc::unknown_object;  // a `command`
+    if (write ? !row.writable() : !row.readable()) return errc::unknown_command;
+    if (verb == sdo_verb::read) return sdo_frame(function::sdo_rx, node, 0x40, row, 0);
+    if (verb == sdo_verb::write_reply) return sdo_frame(function::sdo_tx, node, 0x60, row, 0);
+    // What write_value builds and value_message reads, in one visit of the row's kind.
+    return visit_kind(row.kind, [&](auto k) -> result<can::frame> {
+        using K = decltype(k);
+        const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
+        const auto sent = canopen::expedited_size::make(
+                              row.size() != 0 ? row.size() : K::size(keypad, row, carried))
+                              .value_or(canopen::expedited_size{4});
+        const std::uint8_t size = sent.value();
+        const std::uint32_t data = K::pack(keypad, row, v);
+        if (size != decoded_size(keypad, row, size)) return errc::size_mismatch;
+        if (data > largest_of_size[size]) return errc::reserved_not_zero;
+        if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
+        if (!(K::value(keypad, row, size, data) == v)) return errc::value_out_of_range;
+        // 23h / 43h with bits 2..3 the bytes not used (CiA 301)
+        const auto specifier = static_cast<std::uint8_t>((write ? 0x23 : 0x43) | ((4 - size) << 2));
+        return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node, specifier, row, data);
+    });
+}
+
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const sdo_read& v) noexcept {
+    return checked_sdo(keypad, node, v.object, sdo_verb::read, {});
+}
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const sdo_write& v) noexcept {
+    return checked_sdo(keypad, node, v.object, sdo_verb::write, v.value);
+}
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const sdo_write_reply& v) noexcept {
+    return checked_sdo(keypad, node, v.object, sdo_verb::write_reply, {});
+}
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const sdo_read_reply& v) noexcept {
+    return checked_sdo(keypad, node, v.object, sdo_verb::read_reply, v.value);
+}
+// A command: its bytes read back by read_command, the decoder's reading.
+constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+                                       const command& v) noexcept {
+    const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
+    if (i == 0) return errc::unknown_object;
+    const auto data = static_cast<std::uint32_t>(load_le<4>(write_command(v).bytes, 0));
+    const auto back = read_command(keypad, 4, data);
+    if (!back) return back.error();
+    command want = v;
+    want.form = frame_form::manual;
+    if (const auto* c = std::get_if<command>(&*back); c == nullptr || !(*c == want))
+        return errc::value_out_of_range;
+    return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_rows[i], data);
 }
 
 // The front. Every length test sends a frame of another length to misfit. With `j1939` false a
@@ -839,11 +932,17 @@ POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
 //   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
 //                       node id, heartbeat 1..9 ms, ...), or m is not a model
 namespace detail {
-// A CANopen message's frame (m checked), built and read back by the front (`j1939`: the one
-// decode uses, so that a program has one copy of it; false: decode_canopen's).
+// A CANopen message's frame (m checked): a PDO that checks itself (own_check) built checked, any
+// other built and read back by the front (`j1939`: the one decode uses, so that a program has one
+// copy of it; false: decode_canopen's). The SDO messages check themselves too (checked_sdo), but
+// here they are read back: a program that encodes a `message` holds the decoder anyway, and the
+// value checks written twice cost firmware (c) 4 KB (docs/performance.md).
 template <bool j1939>
 constexpr result<can::frame> encode_canopen(canopen::node_id node, model m,
                                             const message& msg) noexcept {
+    if (const auto* v = std::get_if<key_state>(&msg)) return own_frame(layout(m), node, *v);
+    if (const auto* v = std::get_if<led_on>(&msg)) return own_frame(layout(m), node, *v);
+    if (const auto* v = std::get_if<led_blink>(&msg)) return own_frame(layout(m), node, *v);
     const auto f = build(layout(m), node, msg);
     if (!f) return f.error();
     const auto back = decode_at<reading::strict, j1939>(*f, node, layout(m));
@@ -928,14 +1027,16 @@ template <model M>
 
 // The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
 // is in the program.
-// A PDO that checks itself (key_state, led_on, led_blink: detail::own_check) links no decoder.
+// A message that checks itself (key_state, led_on, led_blink: detail::own_check; the SDO reads,
+// writes, replies and commands: detail::own_frame) links no decoder.
 template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
     if constexpr (requires { detail::own_check(detail::layout(m), msg); }) {
-        if (const errc e = detail::own_check(detail::layout(m), msg); e != errc{}) return e;
-        return detail::build_of(detail::layout(m), node, msg);
+        return detail::own_frame(detail::layout(m), node, msg);
+    } else if constexpr (detail::own_sdo<T>) {
+        return detail::own_frame(detail::layout(m), node, msg);
     } else {
         return detail::encode_canopen<false>(node, m, message(msg));
     }
