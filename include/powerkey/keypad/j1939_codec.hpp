@@ -572,31 +572,31 @@ POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std
 // decode's order (decode_checked, out of line), so the fast path only ever answers what
 // decode_checked answers. Under -Os one decoder, decode_checked.
 template <class M>
-POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, const model_row& r,
+POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, const model_row r,
                                                      keypad_address keypad) noexcept {
     const std::uint32_t id = f.id_word();
     const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
     if (!POWERKEY_DETAIL_SIZE && !keypad && f.size() == 8) {
         const std::uint64_t w = f.data_le();
         const bool to_global = ((id >> 8) & 0xFF) == global_address;
-        if (pf == 0x80EF) {
+        // The key contact state first: half the frames of a keypad's bus.
+        if (pf == 0x80EF && to_global && (w & 0xFF'FFFF) == 0x01'1B04) {
+            // Key 01h..10h (byte 3 - 1 at most 0Fh: a key 00h borrows and fails there), the state
+            // 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
+            if (r.frames.has(feature::key_contact) &&
+                ((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
+                byte_of(w, 5) != 0xFF) {
+                const route at = route_of(id);
+                return answer<M>(key_contact{at.priority, at.destination, at.source, byte_of(w, 3),
+                                             byte_of(w, 4) == 1, byte_of(w, 5)});
+            }
+        } else if (pf == 0x80EF) {
             switch (static_cast<std::uint32_t>(w) & 0xFF'FFFF) {
-                case 0x01'1B04:  // 04 1B 01: to FFh a key state, else as is_led_command says
-                    if (to_global) {
-                        // bytes 6, 7 FFh and the state 00h/01h; key 01h..10h; identifier not FFh
-                        if (r.frames.has(feature::key_contact) &&
-                            (w & 0xFFFF'00FE'0000'0000) == 0xFFFF'0000'0000'0000 &&
-                            static_cast<std::uint8_t>(byte_of(w, 3) - 1) < 16 &&
-                            byte_of(w, 5) != 0xFF) {
-                            const route at = route_of(id);
-                            return answer<M>(key_contact{at.priority, at.destination, at.source,
-                                                         byte_of(w, 3), byte_of(w, 4) == 1,
-                                                         byte_of(w, 5)});
-                        }
-                    } else if (r.form == led_form::si && byte_of(w, 7) == 0xFF &&
-                               byte_of(w, 6) != 0xFF && r.frames.has(feature::led_command) &&
-                               has_led(r, byte_of(w, 3)) && is_colour(byte_of(w, 4)) &&
-                               byte_of(w, 5) <= 3 && is_secondary(byte_of(w, 6))) {
+                case 0x01'1B04:  // addressed: an LED command where is_led_command says so
+                    if (!to_global && r.form == led_form::si && byte_of(w, 7) == 0xFF &&
+                        byte_of(w, 6) != 0xFF && r.frames.has(feature::led_command) &&
+                        has_led(r, byte_of(w, 3)) && is_colour(byte_of(w, 4)) &&
+                        byte_of(w, 5) <= 3 && is_secondary(byte_of(w, 6))) {
                         const route at = route_of(id);
                         return answer<M>(set_led{at.priority, at.destination, at.source,
                                                  byte_of(w, 3),
