@@ -679,13 +679,19 @@ TEST_CASE("j1939: the fast path answers as the checks in order, every byte of ev
         const auto m = static_cast<powerkey::model>(i);
         for (const can::frame& kind : kinds) {
             for (const std::uint32_t destination : {0xFFu, 0x21u}) {
-                const std::uint32_t id = (kind.raw_id() & ~0xFF00u) | (destination << 8);
+                // An 11-bit frame keeps its identifier (wrong_id_format either way).
+                const std::uint32_t id = kind.is_extended()
+                                             ? (kind.raw_id() & ~0xFF00u) | (destination << 8)
+                                             : kind.raw_id();
                 for (std::size_t at = 0; at < kind.size(); ++at) {
                     for (unsigned v = 0; v < 0x100; ++v) {
                         can::payload p = kind.bytes();
                         p[at] = static_cast<std::uint8_t>(v);
-                        const can::frame f(can::extended_id::make(id).value(),
-                                           can::dlc::make(kind.size()).value(), p);
+                        const auto length = can::dlc::make(kind.size()).value();
+                        const can::frame f =
+                            kind.is_extended()
+                                ? can::frame(can::extended_id::make(id).value(), length, p)
+                                : can::frame(can::standard_id::make(id).value(), length, p);
                         const auto fast = pj::decode(f, m);
                         const auto checked =
                             pj::detail::decode_checked_only<pj::message>(f, m, std::nullopt);

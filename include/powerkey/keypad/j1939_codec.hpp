@@ -406,6 +406,14 @@ constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, st
 
 // --- the multiple-LED frames (A700h, A600h) and the address claim (EE00h) -----------------------
 
+// Every byte of v at most the byte of `max` at its place, each byte of max at most 7Fh, in one
+// add: a byte above 7Fh has its high bit set already, one up to 7Fh gets it from the add exactly
+// when it is above its bound, and no byte carries into the next.
+constexpr bool bytes_at_most(std::uint64_t v, std::uint64_t max) noexcept {
+    constexpr std::uint64_t low7 = 0x7F7F'7F7F'7F7F'7F7F;
+    return ((((v & low7) + (low7 - max)) | v) & ~low7) == 0;
+}
+
 // A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set, bit 2 or
 // bit 1 set, and not all four (Fh, blink). Every nibble at once.
 constexpr bool has_unused_code(std::uint64_t w) noexcept {
@@ -579,84 +587,85 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, const 
     if (!POWERKEY_DETAIL_SIZE && !keypad && f.size() == 8) {
         const std::uint64_t w = f.data_le();
         const bool to_global = ((id >> 8) & 0xFF) == global_address;
-        // The key contact state first: half the frames of a keypad's bus.
-        if (pf == 0x80EF && to_global && (w & 0xFF'FFFF) == 0x01'1B04) {
-            // Key 01h..10h (byte 3 - 1 at most 0Fh: a key 00h borrows and fails there), the state
-            // 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
-            if (r.frames.has(feature::key_contact) &&
-                ((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
-                byte_of(w, 5) != 0xFF) {
-                const route at = route_of(id);
-                return answer<M>(key_contact{at.priority, at.destination, at.source, byte_of(w, 3),
-                                             byte_of(w, 4) == 1, byte_of(w, 5)});
-            }
-        } else if (pf == 0x80EF) {
-            switch (static_cast<std::uint32_t>(w) & 0xFF'FFFF) {
-                case 0x01'1B04:  // addressed: an LED command where is_led_command says so
-                    if (!to_global && r.form == led_form::si && byte_of(w, 7) == 0xFF &&
-                        byte_of(w, 6) != 0xFF && r.frames.has(feature::led_command) &&
-                        has_led(r, byte_of(w, 3)) && is_colour(byte_of(w, 4)) &&
-                        byte_of(w, 5) <= 3 && is_secondary(byte_of(w, 6))) {
+        if (pf == 0x80EF) {
+            // Header and command byte; the tests in the order of their frames' share of a bus.
+            const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
+            if (head == 0x01'1B04) {
+                if (to_global) {  // the key contact state (is_led_command)
+                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there),
+                    // the state 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
+                    if (((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
+                        byte_of(w, 5) != 0xFF && r.frames.has(feature::key_contact)) {
                         const route at = route_of(id);
-                        return answer<M>(set_led{at.priority, at.destination, at.source,
-                                                 byte_of(w, 3),
-                                                 static_cast<led_colour>(byte_of(w, 4)),
-                                                 static_cast<led_mode>(byte_of(w, 5)),
-                                                 static_cast<led_colour>(byte_of(w, 6))});
+                        return answer<M>(key_contact{at.priority, at.destination, at.source,
+                                                     byte_of(w, 3), byte_of(w, 4) == 1,
+                                                     byte_of(w, 5)});
                     }
-                    break;
-                case 0xF9'1B04: {  // heartbeat: byte 6 FFh, no key bit above the model's keys
-                    const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
-                    if (r.frames.has(feature::heartbeat) && byte_of(w, 6) == 0xFF &&
-                        (keys >> r.keys) == 0) {
-                        const route at = route_of(id);
-                        return answer<M>(heartbeat{at.priority, at.destination, at.source,
-                                                   byte_of(w, 3), key_set::from_mask(keys),
-                                                   byte_of(w, 7)});
-                    }
-                    break;
+                } else if ((w >> 56) == 0xFF &&
+                           bytes_at_most((w - 0x0100'0000) & 0x00FF'FFFF'FF00'0000,
+                                         0x0009'0309'0F00'0000) &&
+                           r.form == led_form::si && r.frames.has(feature::led_command) &&
+                           ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
+                    // Addressed with byte 6 not FFh, the LED command (is_led_command): byte 7
+                    // FFh; the LED - 1, colour, state and secondary colour at most 0Fh, 09h,
+                    // 03h, 09h (an LED 00h borrows and fails there); an LED the model has.
+                    const route at = route_of(id);
+                    return answer<M>(set_led{at.priority, at.destination, at.source, byte_of(w, 3),
+                                             static_cast<led_colour>(byte_of(w, 4)),
+                                             static_cast<led_mode>(byte_of(w, 5)),
+                                             static_cast<led_colour>(byte_of(w, 6))});
                 }
-                case 0x02'1B04:    // LED brightness
-                case 0x03'1B04: {  // backlight level: 04 1B cmd | level | FF FF FF FF
-                    const bool led = byte_of(w, 2) == 0x02;
-                    if (!to_global &&
-                        r.frames.has(led ? feature::led_brightness : feature::backlight_level) &&
-                        ff_from(w, 4) && byte_of(w, 3) <= level::max) {
-                        const route at = route_of(id);
-                        command c{};
-                        c.priority = at.priority;
-                        c.destination = at.destination;
-                        c.source = at.source;
-                        c.code = led ? command_code::set_led_brightness
-                                     : command_code::set_backlight_level;
-                        c.level = level::make(byte_of(w, 3)).value();
-                        return answer<M>(c);
-                    }
-                    break;
+            } else if (head == 0xF9'1B04) {
+                // The heartbeat: byte 6 FFh, no key bit above the model's keys.
+                const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
+                if (byte_of(w, 6) == 0xFF && (keys >> r.keys) == 0 &&
+                    r.frames.has(feature::heartbeat)) {
+                    const route at = route_of(id);
+                    return answer<M>(heartbeat{at.priority, at.destination, at.source,
+                                               byte_of(w, 3), key_set::from_mask(keys),
+                                               byte_of(w, 7)});
                 }
-                default:  // the SI acknowledgement: 00h | state | LED | colour | secondary | FF..
-                    if ((w & 0xFF) == 0 && ff_from(w, 5) && r.form == led_form::si &&
-                        r.frames.has(feature::led_ack) && byte_of(w, 1) <= 3 &&
-                        has_led(r, byte_of(w, 2)) && is_colour(byte_of(w, 3)) &&
-                        is_secondary(byte_of(w, 4))) {
-                        const route at = route_of(id);
-                        return answer<M>(led_ack{at.priority, at.destination, at.source,
-                                                 byte_of(w, 2),
-                                                 static_cast<led_mode>(byte_of(w, 1)),
-                                                 static_cast<led_colour>(byte_of(w, 3)),
-                                                 static_cast<led_colour>(byte_of(w, 4))});
-                    }
-                    break;
+            } else if ((head & 0xFF) == 0) {
+                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. The
+                // state, LED - 1 and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
+                // decode_checked); an LED the model has.
+                if ((w >> 40) == 0xFF'FFFF &&
+                    bytes_at_most((w - 0x01'0000) & 0xFF'FFFF'FF00, 0x09'090F'0300) &&
+                    r.form == led_form::si && r.frames.has(feature::led_ack) &&
+                    ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
+                    const route at = route_of(id);
+                    return answer<M>(led_ack{at.priority, at.destination, at.source, byte_of(w, 2),
+                                             static_cast<led_mode>(byte_of(w, 1)),
+                                             static_cast<led_colour>(byte_of(w, 3)),
+                                             static_cast<led_colour>(byte_of(w, 4))});
+                }
+            } else if ((head | 0x01'0000) == 0x03'1B04) {
+                // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
+                const bool led = head == 0x02'1B04;
+                if (!to_global && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
+                    r.frames.has(led ? feature::led_brightness : feature::backlight_level)) {
+                    const route at = route_of(id);
+                    command c{};
+                    c.priority = at.priority;
+                    c.destination = at.destination;
+                    c.source = at.source;
+                    c.code =
+                        led ? command_code::set_led_brightness : command_code::set_backlight_level;
+                    c.level = level::make(byte_of(w, 3)).value();
+                    return answer<M>(c);
+                }
             }
         } else if ((pf & ~1u) == 0x80A6) {  // a multiple-LED frame, A700h or A600h
             const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
-            if (!to_global && r.frames.has(feature::multiple_leds) &&
-                (w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
+            if (!to_global && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
+                r.frames.has(feature::multiple_leds)) {
                 const route at = route_of(id);
                 return answer<M>(multiple_leds{at.priority, at.destination, at.source,
                                                colour_frame::make(pf == 0x80A7 ? 1 : 2).value(),
                                                multiple_leds::halves(w & used)});
             }
+        } else if (pf >= 0x8000 && (pf & ~1u) != 0x80EE) {
+            return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
         }
     }
     if (!f.is_extended()) return errc::wrong_id_format;
