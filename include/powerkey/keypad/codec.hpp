@@ -521,10 +521,10 @@ constexpr result<message> decode_j1939(model m, const can::frame& f,
                                        j1939::keypad_address address) noexcept {
     return j1939::detail::decode_as<message>(f, m, address);
 }
-// The same at any address, from the front's default case, given only what the front already
-// holds (the layout): no CANopen frame pays for a J1939 argument. Inlined there: the frequent
-// J1939 frames are answered in place, the others out of line (j1939::detail::decode_frame). A
-// J1939 frame has one length, 8 bytes: no reading finds another form for it.
+// The same at any address, from the front's default case (which has tested the PGN). Out of
+// line, and given only what the front already holds (the layout): no CANopen frame pays for a
+// J1939 argument, and the front's registers stay the CANopen frames' (docs/performance.md, the
+// J1939 mixed log). A J1939 frame has one length, 8 bytes: no reading finds another form for it.
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
     return j1939::detail::decode_frame<message>(f, j1939::detail::j1939_row_of(keypad.id),
@@ -773,7 +773,7 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
         default:
             if (f.is_extended()) {
                 if constexpr (!j1939) return errc::wrong_id;
-                // Most 29-bit frames on a bus are no keypad's: refused here, at once.
+                // Most 29-bit frames on a bus are no keypad's: refused here, without a call.
                 if (!j1939::detail::is_keypad_pf((id >> 16) & 0x3FF)) return errc::wrong_id;
                 return decode_extended(keypad, f);
             }

@@ -544,7 +544,7 @@ constexpr route route_of(std::uint32_t id) noexcept {
 
 // A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r, every check in the
 // order decode documents. Out of line: the frequent frames that pass every check are answered
-// before it (decode_keypad_pgn).
+// before it (decode_frame).
 template <class M>
 constexpr result<M> check_and_decode(const can::frame& f, std::uint32_t pf, const model_row& r,
                                      keypad_address keypad) noexcept {
@@ -671,8 +671,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, const 
     if (!f.is_extended()) return errc::wrong_id_format;
     // Most 29-bit frames on a bus are not a keypad's: refused here, without a call.
     if (!is_keypad_pf(pf & 0x3FF)) return errc::wrong_id;
-    // Any keypad: a call without the (empty) address, which would take a register for nothing.
-    if (!keypad) return decode_checked<M>(f, pf & 0x3FF, r);
+    // Any keypad: a call without the (empty) address, which would take a register for nothing
+    // (under -Os one function, the one with the address).
+    if (!POWERKEY_DETAIL_SIZE && !keypad) return decode_checked<M>(f, pf & 0x3FF, r);
     return decode_checked<M>(f, pf & 0x3FF, r, keypad);
 }
 // decode without the fast path: every frame through the checks in order. The tests and the fuzz
