@@ -571,6 +571,11 @@ POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std
     return check_and_decode<M>(f, pf, r, std::nullopt);
 }
 
+// The model row as decode_frame takes it: a copy, whose fields g++ reads where they are kept
+// (through a reference it recomputed the row's address from a spilled model at each use); under
+// -Os a reference, the smaller call.
+using row_argument = std::conditional_t<POWERKEY_DETAIL_SIZE, const model_row&, const model_row>;
+
 // A frame of a keypad of row r (decode after the model's test). The frames of a keypad on its bus
 // (key contact state, heartbeat, SI LED command and acknowledgement, the multiple-LED frames, the
 // level commands 02h and 03h), from or to any address, are answered in place when every check
@@ -580,7 +585,7 @@ POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std
 // decode's order (decode_checked, out of line), so the fast path only ever answers what
 // decode_checked answers. Under -Os one decoder, decode_checked.
 template <class M>
-POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, const model_row r,
+POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_argument r,
                                                      keypad_address keypad) noexcept {
     const std::uint32_t id = f.id_word();
     const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
