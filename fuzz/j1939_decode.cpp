@@ -4,7 +4,8 @@
 // decode a fixed point (properties.hpp); what decodes carries the identifier's priority,
 // destination and source; an 11-bit frame and a value outside the table are refused; narrowed,
 // nothing decodes that is neither from nor to the keypad; the switch back agrees with
-// decode_switch_to_canopen; decode_key_or_led agrees with decode.
+// decode_switch_to_canopen; decode_key_or_led agrees with decode; decode agrees with the checks
+// alone (detail::decode_checked_only, without the in-place answers of the frequent frames).
 // g++ 12 reports the keypad_address optional below as maybe uninitialised once the J1939 codec is
 // inlined into this function (a false positive: its value is read only when it holds one; which
 // file it hits changes with what the headers inline).
@@ -33,6 +34,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool decoded = decode_fixed_point(
         f, [&](const can::frame& x) { return j1939::decode(x, m, keypad); },
         [&](const j1939::message& msg) { return j1939::encode(m, msg, keypad); });
+    // The frequent frames are answered in place: the same answer as the checks in order.
+    POWERKEY_FUZZ_CHECK_FRAME(j1939::decode(f, m, keypad) ==
+                                  j1939::detail::decode_checked_only<j1939::message>(f, m, keypad),
+                              f);
     if (!j1939::row(m)) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
     if (!f.is_extended()) POWERKEY_FUZZ_CHECK_FRAME(!decoded, f);
     // The reader of command 01h alone gives decode's answer for the three messages it reads,

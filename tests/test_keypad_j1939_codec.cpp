@@ -20,6 +20,7 @@
 #include <string_view>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 namespace {
 using namespace j1939_rows;
@@ -646,4 +647,65 @@ TEST_CASE("every byte 3 and every reserved bit of the switch back to CANopen") {
         CAPTURE(bit);
         CHECK(at(manual & ~(std::uint64_t{1} << bit)) == errc::reserved_not_ff);
     }
+}
+
+// The decoder answers the frequent frames in place and sends the others through every check in
+// decode's order (j1939::detail::decode_frame): the two must agree on every frame. Each kind of
+// frame of the rows (manual examples, other models, refusals) and of the bench's J1939 mixed log,
+// to the global address and to the keypad's, with every value of each data byte in turn, in every
+// model; each answer is also checked against the checks alone.
+TEST_CASE("j1939: the fast path answers as the checks in order, every byte of every frame kind") {
+    namespace pj = powerkey::j1939;
+    std::vector<can::frame> kinds;
+    const auto add = [&kinds](std::string_view text) {
+        const can::frame f = frame_of(text);
+        for (const can::frame& k : kinds)
+            if (k.raw_id() == f.raw_id() && k.size() == f.size() &&
+                (k.data_le() & 0xFF'FFFF) == (f.data_le() & 0xFF'FFFF))
+                return;
+        kinds.push_back(f);
+    };
+    for (const auto& r : pkp1600si_rows) add(r.frame);
+    for (const auto& r : pkp2600si_rows) add(r.frame);
+    for (const auto& r : other_rows) add(r.frame);
+    for (const auto& r : error_rows) add(r.frame);
+    for (const auto text :
+         {"18EF2100#041B0101010100FF", "18EFFF21#0001010100FFFFFF", "18A72100#110100000000FFFF",
+          "18A62100#000000000096FFFF", "0CF00400#FF7D7DE015FFF0FF", "18EAFF00#00EE00"})
+        add(text);
+    REQUIRE(kinds.size() >= 40);
+    std::size_t decoded = 0, compared = 0;
+    for (std::size_t i = 0; i <= pj::model_row_count; ++i) {
+        const auto m = static_cast<powerkey::model>(i);
+        for (const can::frame& kind : kinds) {
+            for (const std::uint32_t destination : {0xFFu, 0x21u}) {
+                // An 11-bit frame keeps its identifier (wrong_id_format either way).
+                const std::uint32_t id = kind.is_extended()
+                                             ? (kind.raw_id() & ~0xFF00u) | (destination << 8)
+                                             : kind.raw_id();
+                for (std::size_t at = 0; at < kind.size(); ++at) {
+                    for (unsigned v = 0; v < 0x100; ++v) {
+                        can::payload p = kind.bytes();
+                        p[at] = static_cast<std::uint8_t>(v);
+                        const auto length = can::dlc::make(kind.size()).value();
+                        const can::frame f =
+                            kind.is_extended()
+                                ? can::frame(can::extended_id::make(id).value(), length, p)
+                                : can::frame(can::standard_id::make(id).value(), length, p);
+                        const auto fast = pj::decode(f, m);
+                        const auto checked =
+                            pj::detail::decode_checked_only<pj::message>(f, m, std::nullopt);
+                        ++compared;
+                        if (fast) ++decoded;
+                        if (fast == checked) continue;
+                        CAPTURE(i);
+                        const std::string text(can::format_candump(f).view());
+                        CAPTURE(text);
+                        CHECK(fast == checked);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(decoded > compared / 40);  // the walk reaches decodable frames, not only refusals
 }

@@ -523,11 +523,12 @@ constexpr result<message> decode_j1939(model m, const can::frame& f,
 }
 // The same at any address, from the front's default case (which has tested the PGN). Out of
 // line, and given only what the front already holds (the layout): no CANopen frame pays for a
-// J1939 argument. A J1939 frame has one length, 8 bytes: no reading finds another form for it.
+// J1939 argument, and the front's registers stay the CANopen frames' (docs/performance.md, the
+// J1939 mixed log). A J1939 frame has one length, 8 bytes: no reading finds another form for it.
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
-    return j1939::detail::decode_keypad_pgn<message>(
-        f, (f.raw_id() >> 16) & 0x3FF, j1939::detail::j1939_row_of(keypad.id), std::nullopt);
+    return j1939::detail::decode_frame<message>(f, j1939::detail::j1939_row_of(keypad.id),
+                                                std::nullopt);
 }
 
 // A J1939 alternative of message (encode hands it to the J1939 codec).

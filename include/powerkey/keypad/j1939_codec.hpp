@@ -406,6 +406,23 @@ constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, st
 
 // --- the multiple-LED frames (A700h, A600h) and the address claim (EE00h) -----------------------
 
+// Every byte of v at most the byte of `max` at its place, each byte of max at most 7Fh, in one
+// add: a byte above 7Fh has its high bit set already, one up to 7Fh gets it from the add exactly
+// when it is above its bound, and no byte carries into the next.
+constexpr bool bytes_at_most(std::uint64_t v, std::uint64_t max) noexcept {
+    constexpr std::uint64_t low7 = 0x7F7F'7F7F'7F7F'7F7F;
+    return ((((v & low7) + (low7 - max)) | v) & ~low7) == 0;
+}
+
+// A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set, bit 2 or
+// bit 1 set, and not all four (Fh, blink). Every nibble at once.
+constexpr bool has_unused_code(std::uint64_t w) noexcept {
+    constexpr std::uint64_t ones = 0x1111'1111'1111'1111;
+    const std::uint64_t b0 = w & ones, b1 = (w >> 1) & ones, b2 = (w >> 2) & ones,
+                        b3 = (w >> 3) & ones;
+    return (b3 & (b2 | b1) & ~(b0 & b1 & b2)) != 0;
+}
+
 template <class M>
 constexpr result<M> multiple_leds_of(const model_row& r, const route& at, colour_frame frame,
                                      std::uint64_t w, keypad_address keypad) noexcept {
@@ -413,10 +430,7 @@ constexpr result<M> multiple_leds_of(const model_row& r, const route& at, colour
     const unsigned bits = 4u * r.plane_leds;
     const std::uint64_t used = powerkey::detail::low_bits(bits);
     if ((w | used) != ~std::uint64_t{0}) return errc::reserved_not_ff;
-    for (unsigned k = 0; k < r.plane_leds; ++k) {
-        const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
-        if (c >= 0xA && c <= 0xE) return errc::value_out_of_range;
-    }
+    if (has_unused_code(w)) return errc::value_out_of_range;  // the nibbles past `used` are Fh
     return answer<M>(multiple_leds{at.priority, at.destination, at.source, frame,
                                    multiple_leds::halves(w & used)});
 }
@@ -528,10 +542,12 @@ constexpr route route_of(std::uint32_t id) noexcept {
             static_cast<std::uint8_t>(id)};
 }
 
-// A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r.
+// A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r, every check in the
+// order decode documents. Out of line: the frequent frames that pass every check are answered
+// before it (decode_frame).
 template <class M>
-constexpr result<M> decode_keypad_pgn(const can::frame& f, std::uint32_t pf, const model_row& r,
-                                      keypad_address keypad) noexcept {
+constexpr result<M> check_and_decode(const can::frame& f, std::uint32_t pf, const model_row& r,
+                                     keypad_address keypad) noexcept {
     const route at = route_of(f.raw_id());
     if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
     if (f.size() != 8) return errc::wrong_length;
@@ -544,18 +560,148 @@ constexpr result<M> decode_keypad_pgn(const can::frame& f, std::uint32_t pf, con
     }
 }
 template <class M>
-constexpr result<M> decode_as(const can::frame& f, model m, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std::uint32_t pf,
+                                                        const model_row& r,
+                                                        keypad_address keypad) noexcept {
+    return check_and_decode<M>(f, pf, r, keypad);
+}
+template <class M>
+POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std::uint32_t pf,
+                                                        const model_row& r) noexcept {
+    return check_and_decode<M>(f, pf, r, std::nullopt);
+}
+
+// The model row as decode_frame takes it: a copy, whose fields g++ reads where they are kept
+// (through a reference it recomputed the row's address from a spilled model at each use); under
+// -Os a reference, the smaller call.
+using row_argument = std::conditional_t<POWERKEY_DETAIL_SIZE, const model_row&, const model_row>;
+
+// A frame of a keypad of row r (decode after the model's test). The frames of a keypad on its bus
+// (key contact state, heartbeat, SI LED command and acknowledgement, the multiple-LED frames, the
+// level commands 02h and 03h), from or to any address, are answered in place when every check
+// decode_checked makes passes: one test of the identifier (29-bit, the PGN) and the length, one
+// of the header and command byte, the model's word on the frame, the fields' ranges in as few
+// tests as they fold into. Anything else, a frame refused included, goes through the checks in
+// decode's order (decode_checked, out of line), so the fast path only ever answers what
+// decode_checked answers. Under -Os one decoder, decode_checked.
+template <class M>
+POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_argument r,
+                                                     keypad_address keypad) noexcept {
+    const std::uint32_t id = f.id_word();
+    const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
+    if (!POWERKEY_DETAIL_SIZE && !keypad && f.size() == 8) {
+        const std::uint64_t w = f.data_le();
+        const bool to_global = ((id >> 8) & 0xFF) == global_address;
+        if (pf == 0x80EF) {
+            // Header and command byte; the tests in the order of their frames' share of a bus.
+            const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
+            if (head == 0x01'1B04) {
+                if (to_global) {  // the key contact state (is_led_command)
+                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there),
+                    // the state 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
+                    if (((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
+                        byte_of(w, 5) != 0xFF && r.frames.has(feature::key_contact)) {
+                        const route at = route_of(id);
+                        return answer<M>(key_contact{at.priority, at.destination, at.source,
+                                                     byte_of(w, 3), byte_of(w, 4) == 1,
+                                                     byte_of(w, 5)});
+                    }
+                } else if ((w >> 56) == 0xFF &&
+                           bytes_at_most((w - 0x0100'0000) & 0x00FF'FFFF'FF00'0000,
+                                         0x0009'0309'0F00'0000) &&
+                           r.form == led_form::si && r.frames.has(feature::led_command) &&
+                           ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
+                    // Addressed with byte 6 not FFh, the LED command (is_led_command): byte 7
+                    // FFh; the LED - 1, colour, state and secondary colour at most 0Fh, 09h,
+                    // 03h, 09h (an LED 00h borrows and fails there); an LED the model has.
+                    const route at = route_of(id);
+                    return answer<M>(set_led{at.priority, at.destination, at.source, byte_of(w, 3),
+                                             static_cast<led_colour>(byte_of(w, 4)),
+                                             static_cast<led_mode>(byte_of(w, 5)),
+                                             static_cast<led_colour>(byte_of(w, 6))});
+                }
+            } else if (head == 0xF9'1B04) {
+                // The heartbeat: byte 6 FFh, no key bit above the model's keys.
+                const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
+                if (byte_of(w, 6) == 0xFF && (keys >> r.keys) == 0 &&
+                    r.frames.has(feature::heartbeat)) {
+                    const route at = route_of(id);
+                    return answer<M>(heartbeat{at.priority, at.destination, at.source,
+                                               byte_of(w, 3), key_set::from_mask(keys),
+                                               byte_of(w, 7)});
+                }
+            } else if ((head & 0xFF) == 0) {
+                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. The
+                // state, LED - 1 and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
+                // decode_checked); an LED the model has.
+                if ((w >> 40) == 0xFF'FFFF &&
+                    bytes_at_most((w - 0x01'0000) & 0xFF'FFFF'FF00, 0x09'090F'0300) &&
+                    r.form == led_form::si && r.frames.has(feature::led_ack) &&
+                    ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
+                    const route at = route_of(id);
+                    return answer<M>(led_ack{at.priority, at.destination, at.source, byte_of(w, 2),
+                                             static_cast<led_mode>(byte_of(w, 1)),
+                                             static_cast<led_colour>(byte_of(w, 3)),
+                                             static_cast<led_colour>(byte_of(w, 4))});
+                }
+            } else if ((head | 0x01'0000) == 0x03'1B04) {
+                // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
+                const bool led = head == 0x02'1B04;
+                if (!to_global && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
+                    r.frames.has(led ? feature::led_brightness : feature::backlight_level)) {
+                    const route at = route_of(id);
+                    command c{};
+                    c.priority = at.priority;
+                    c.destination = at.destination;
+                    c.source = at.source;
+                    c.code =
+                        led ? command_code::set_led_brightness : command_code::set_backlight_level;
+                    c.level = level::make(byte_of(w, 3)).value();
+                    return answer<M>(c);
+                }
+            }
+        } else if ((pf & ~1u) == 0x80A6) {  // a multiple-LED frame, A700h or A600h
+            const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
+            if (!to_global && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
+                r.frames.has(feature::multiple_leds)) {
+                const route at = route_of(id);
+                return answer<M>(multiple_leds{at.priority, at.destination, at.source,
+                                               colour_frame::make(pf == 0x80A7 ? 1 : 2).value(),
+                                               multiple_leds::halves(w & used)});
+            }
+        } else if (pf >= 0x8000 && (pf & ~1u) != 0x80EE) {
+            return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
+        }
+    }
+    if (!f.is_extended()) return errc::wrong_id_format;
+    // Most 29-bit frames on a bus are not a keypad's: refused here, without a call.
+    if (!is_keypad_pf(pf & 0x3FF)) return errc::wrong_id;
+    // Any keypad: a call without the (empty) address, which would take a register for nothing
+    // (under -Os one function, the one with the address).
+    if (!POWERKEY_DETAIL_SIZE && !keypad) return decode_checked<M>(f, pf & 0x3FF, r);
+    return decode_checked<M>(f, pf & 0x3FF, r, keypad);
+}
+// decode without the fast path: every frame through the checks in order. The tests and the fuzz
+// target hold decode to it.
+template <class M>
+constexpr result<M> decode_checked_only(const can::frame& f, model m,
+                                        keypad_address keypad) noexcept {
     if (!is_j1939_model(m)) return errc::value_out_of_range;
     if (!f.is_extended()) return errc::wrong_id_format;
-    const std::uint32_t pf = (f.raw_id() >> 16) & 0x3FF;  // EDP, DP and PDU format: a PDU1 PGN
-    // First: most 29-bit frames on a bus are not a keypad's (the CANopen front sends them all).
+    const std::uint32_t pf = (f.raw_id() >> 16) & 0x3FF;
     if (!is_keypad_pf(pf)) return errc::wrong_id;
-    return decode_keypad_pgn<M>(f, pf, j1939_row_of(m), keypad);
+    return check_and_decode<M>(f, pf, j1939_row_of(m), keypad);
+}
+template <class M>
+POWERKEY_DETAIL_HOT constexpr result<M> decode_as(const can::frame& f, model m,
+                                                  keypad_address keypad) noexcept {
+    if (!is_j1939_model(m)) return errc::value_out_of_range;
+    return decode_frame<M>(f, j1939_row_of(m), keypad);
 }
 }  // namespace detail
 
-[[nodiscard]] constexpr result<message> decode(const can::frame& f, model m,
-                                               keypad_address keypad = std::nullopt) noexcept {
+[[nodiscard]] POWERKEY_DETAIL_HOT constexpr result<message> decode(
+    const can::frame& f, model m, keypad_address keypad = std::nullopt) noexcept {
     return detail::decode_as<message>(f, m, keypad);
 }
 
