@@ -5,6 +5,7 @@
 // except those the fault itself causes. Then small queues and outboxes, the controller alone
 // against scripted replies, the key modes (behaviour/key_modes.hpp), and the same session at
 // compile time.
+#include "behaviour_support.hpp"
 #include "support.hpp"
 
 #include <powerkey/behaviour/checker.hpp>
@@ -25,61 +26,28 @@ using namespace powerkey;
 using namespace powerkey::behaviour;
 using powerkey::canopen::node_id;
 
-// Levels and node ids below are built with make() rather than the consteval literal
-// constructor: clang 14 crashes generating code for a consteval temporary passed as an argument
-// in these test functions (level{0x10} as an argument of a member call).
+using powerkey_tests::lv;
+
+// Node ids below are built with make() rather than the consteval literal constructor: clang 14
+// crashes generating code for a consteval temporary passed as an argument in these test functions.
 
 namespace {
 
-struct logged {
-    can::frame frame;
-    std::uint32_t time;
-};
-
-// A controller and a virtual keypad on one bus, stepped every millisecond.
-struct bench {
+// A controller and a virtual keypad on one bus, stepped every millisecond, with the fault below.
+struct bench : powerkey_tests::closed_loop<controller<16, 64>> {
     explicit bench(model m, controller_config cfg = {}, node_id node = canopen::default_node_id)
-        : keypad(m, node), ctl(with_model(cfg, m)) {}
-
-    static controller_config with_model(controller_config c, model m) {
-        c.keypad_model = m;
-        return c;
-    }
+        : closed_loop(m, cfg, node) {}
 
     void run(std::uint32_t ms) {
-        for (std::uint32_t i = 0; i < ms; ++i) {
-            ++now;
-            const millis t{now};
-            keypad.advance(t);
-            bool any = false;
-            while (auto f = keypad.transmit()) {
-                if (abort_next && f->raw_id() == 0x580u + keypad.node().value() &&
-                    (*f)[1] == (abort_next->index & 0xFF) && (*f)[2] == (abort_next->index >> 8) &&
-                    (*f)[3] == abort_next->subindex) {
-                    f = canopen::encode(keypad.node(),
-                                        canopen::sdo_abort_response{{*abort_next, abort_code}});
-                    abort_next.reset();
-                }
-                log.push_back({*f, now});
-                ctl.step(*f, t);
-                any = true;
+        closed_loop::run(ms, [this](can::frame& f) {
+            if (abort_next && f.raw_id() == 0x580u + keypad.node().value() &&
+                f[1] == (abort_next->index & 0xFF) && f[2] == (abort_next->index >> 8) &&
+                f[3] == abort_next->subindex) {
+                f = canopen::encode(keypad.node(),
+                                    canopen::sdo_abort_response{{*abort_next, abort_code}});
+                abort_next.reset();
             }
-            if (!any) ctl.tick(t);
-            while (const auto f = ctl.next_frame()) {
-                log.push_back({*f, now});
-                keypad.receive(*f, t);
-            }
-            while (const auto e = ctl.poll()) events.push_back(*e);
-        }
-    }
-
-    std::size_t count(event_kind k) const {
-        return static_cast<std::size_t>(std::count_if(events.begin(), events.end(),
-                                                      [k](const auto& e) { return e.kind == k; }));
-    }
-    bool saw(event_kind k, unsigned key) const {
-        return std::any_of(events.begin(), events.end(),
-                           [&](const auto& e) { return e.kind == k && e.key == key; });
+        });
     }
 
     // The checker's view of the whole session: the problem kinds, in order.
@@ -96,18 +64,10 @@ struct bench {
         return out;
     }
 
-    millis at() const { return millis{now}; }
-
     // Fault injection for a keypad whose refusals the codec cannot provoke: its next reply for
     // this object becomes an abort with abort_code.
     std::optional<canopen::sdo_address> abort_next;
     canopen::sdo_abort_code abort_code = canopen::sdo_abort_code::general_error;
-
-    virtual_keypad<32> keypad;
-    controller<16, 64> ctl;
-    std::uint32_t now = 0;
-    std::vector<logged> log;
-    std::vector<controller_event> events;
 };
 
 std::string kinds(const std::vector<problem>& ps) {
@@ -174,11 +134,11 @@ TEST_CASE("controller + virtual keypad: start, configure, LEDs, levels, keys, fo
         b.run(20);
         CHECK(b.keypad.led_on().red.contains(some_led));
         CHECK(b.keypad.led_blink().green.contains(3));
-        b.ctl.set_brightness(level::make(0x10).value());
-        b.ctl.set_backlight(level::make(0x20).value(), backlight_colour::red);
+        b.ctl.set_brightness(lv(0x10));
+        b.ctl.set_backlight(lv(0x20), backlight_colour::red);
         b.run(50);
-        CHECK(b.keypad.brightness() == level::make(0x10).value());
-        CHECK(b.keypad.backlight().level == level::make(0x20).value());
+        CHECK(b.keypad.brightness() == lv(0x10));
+        CHECK(b.keypad.backlight().level == lv(0x20));
 
         // Key events: press, long press, repeats, release.
         b.keypad.press(1, b.at());
@@ -204,7 +164,7 @@ TEST_CASE("controller + virtual keypad: the keypad reboots mid-session, everythi
         b.keypad.power_on(b.at());
         b.run(200);
         b.ctl.set_led(some_led, colour::green);
-        b.ctl.set_brightness(level::make(0x08).value());
+        b.ctl.set_brightness(lv(0x08));
         b.run(50);
         REQUIRE(b.keypad.led_on().green.contains(some_led));
         b.keypad.power_cycle(b.at());
@@ -214,7 +174,7 @@ TEST_CASE("controller + virtual keypad: the keypad reboots mid-session, everythi
         CHECK(b.count(event_kind::ready) == 2);
         CHECK(b.keypad.state() == run_state::operational);
         CHECK(b.keypad.led_on().green.contains(some_led));
-        CHECK(b.keypad.brightness() == level::make(0x08).value());
+        CHECK(b.keypad.brightness() == lv(0x08));
         CHECK(b.count(event_kind::lost) == 0);
         const auto problems = without_identify(m, b.check(m));
         CHECK_MESSAGE(problems.empty(), kinds(problems));
@@ -264,12 +224,12 @@ TEST_CASE("controller + virtual keypad: lost frames (an SDO request, a reply, th
         CHECK(b.count(event_kind::sdo_timed_out) == 0);
 
         // The keypad's reply to the next request is lost: the controller asks again.
-        b.ctl.set_brightness(level::make(0x21).value());
+        b.ctl.set_brightness(lv(0x21));
         b.keypad.drop_transmitted(1);
         b.run(20);
         b.keypad.drop_transmitted(0);
         b.run(400);
-        CHECK(b.keypad.brightness() == level::make(0x21).value());
+        CHECK(b.keypad.brightness() == lv(0x21));
 
         // The NMT start after a reboot is lost: the keypad's heartbeat says pre-operational and
         // the controller starts it again.
@@ -552,10 +512,10 @@ TEST_CASE(
     // PKP-2400: no brightness PDO, so the LED level goes by SDO (6201h sub 1, PKP 30) right
     // after the NMT start, which fills a one-frame outbox.
     loop<1, 64> l({}, model::pkp2400);
-    l.ctl.set_brightness(level::make(0x10).value());
+    l.ctl.set_brightness(lv(0x10));
     l.keypad.power_on(millis{0});
     l.run(2000);
-    CHECK(l.keypad.brightness() == level::make(0x10).value());
+    CHECK(l.keypad.brightness() == lv(0x10));
 }
 
 TEST_CASE("controller, scripted: replies for another object or out of turn do not end a read") {

@@ -36,6 +36,7 @@
 #define POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 
 #include <powerkey/behaviour/clock.hpp>
+#include <powerkey/behaviour/key_timing.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/heartbeat.hpp>
@@ -200,15 +201,13 @@ public:
     [[nodiscard]] constexpr frame_queue<OutboxCapacity>& outbox() noexcept { return outbox_; }
     // The next event, oldest first.
     [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
-        if (events_size_ == 0) return std::nullopt;
-        const controller_event e = events_[events_head_];
-        events_head_ = (events_head_ + 1) % EventCapacity;
-        --events_size_;
-        return e;
+        return events_.pop();
     }
     // Events refused because the queue was full: the application polled too slowly, or one call
     // reported more than EventCapacity (see events_per_call).
-    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept { return events_dropped_; }
+    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept {
+        return events_.dropped();
+    }
     [[nodiscard]] static constexpr std::size_t event_capacity() noexcept { return EventCapacity; }
 
     // --- what the application shows ---------------------------------------------------------
@@ -274,7 +273,7 @@ public:
     [[nodiscard]] constexpr std::optional<canopen::nmt_state> keypad_state() const noexcept {
         return keypad_state_;
     }
-    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
+    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_.held(); }
     [[nodiscard]] constexpr const leds& led_on() const noexcept { return on_; }
     [[nodiscard]] constexpr const leds& led_blink() const noexcept { return blink_; }
     // The text of the last string read (100Bh ...), up to 16 bytes.
@@ -300,14 +299,10 @@ private:
 
     // --- events -----------------------------------------------------------------------------
 
+    // A full queue refuses the event and counts it (events_dropped).
     constexpr void emit(controller_event e) noexcept {
-        if (events_size_ == EventCapacity) {
-            ++events_dropped_;
-            return;
-        }
-        e.node = node_;
-        events_[(events_head_ + events_size_) % EventCapacity] = e;
-        ++events_size_;
+        if (!events_.full()) e.node = node_;  // (stamped only when kept: smaller firmware)
+        (void)events_.push(e);
     }
     constexpr void emit(event_kind k) noexcept { emit(controller_event{k}); }
     constexpr void emit_key(event_kind k, unsigned key) noexcept {
@@ -481,37 +476,12 @@ private:
     // --- keys -------------------------------------------------------------------------------
 
     constexpr void on_keys(key_set now_pressed) noexcept {
-        for (unsigned k = 1; k <= info_->keys; ++k) {
-            const bool was = keys_.contains(k), is = now_pressed.contains(k);
-            if (is && !was) {
-                pressed_at_[k - 1] = now_;
-                next_repeat_[k - 1] = now_ + cfg_.repeat_delay;
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ & ~(1u << (k - 1)));
-                emit_key(event_kind::key_pressed, k);
-            } else if (was && !is) {
-                emit_key(event_kind::key_released, k);
-            }
-        }
-        keys_ = now_pressed;
+        keys_.update(now_pressed, info_->keys, now_, cfg_,
+                     [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
-
     constexpr void key_timers() noexcept {
-        for (unsigned k : keys_) {
-            if (k > info_->keys) continue;
-            const auto bit = static_cast<std::uint16_t>(1u << (k - 1));
-            if (cfg_.long_press.value != 0 && (long_sent_ & bit) == 0 &&
-                reached(pressed_at_[k - 1] + cfg_.long_press, now_)) {
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ | bit);
-                emit_key(event_kind::key_long_press, k);
-            }
-            if (cfg_.repeat_delay.value != 0 && reached(next_repeat_[k - 1], now_)) {
-                emit_key(event_kind::key_repeat, k);
-                const duration_ms p =
-                    cfg_.repeat_period.value != 0 ? cfg_.repeat_period : cfg_.repeat_delay;
-                next_repeat_[k - 1] = next_repeat_[k - 1] + p;
-                if (reached(next_repeat_[k - 1], now_)) next_repeat_[k - 1] = now_ + p;
-            }
-        }
+        keys_.tick(info_->keys, now_, cfg_,
+                   [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
 
     // Keys held when the keypad went away are released for the application.
@@ -596,14 +566,14 @@ private:
                                         : max_configuration;
         while (list_pos_ < entries) {
             // A refused entry is an event: with the queue full, the setup waits for a poll.
-            if (events_size_ == EventCapacity) return;
+            if (events_.full()) return;
             const auto i = list_pos_++;
             if (begin_job(cfg_.configuration[i], sdo_origin::configuration,
                           static_cast<std::uint16_t>(i)))
                 return;
         }
         if (cfg_.configuration.size() > max_configuration && !list_cut_said_) {
-            if (events_size_ == EventCapacity) return;
+            if (events_.full()) return;
             list_cut_said_ = true;
             controller_event e{event_kind::sdo_refused};
             e.step = static_cast<std::uint16_t>(max_configuration);
@@ -611,7 +581,7 @@ private:
             emit(e);
         }
         // Ready is an event too: it waits for room as the refusals do.
-        if (events_size_ == EventCapacity) return;
+        if (events_.full()) return;
         // Set up: start it and show the picture.
         done_setup_once_ = true;
         state_ = controller_state::running;
@@ -812,16 +782,10 @@ private:
     std::uint8_t dirty_ = dirty_all;
 
     // Keys.
-    key_set keys_{};
-    std::array<millis, key_set::max> pressed_at_{};
-    std::array<millis, key_set::max> next_repeat_{};
-    std::uint16_t long_sent_ = 0;
+    key_timing<event_kind> keys_{};
 
     frame_queue<OutboxCapacity> outbox_{};
-    std::array<controller_event, EventCapacity> events_{};
-    std::size_t events_head_ = 0;
-    std::size_t events_size_ = 0;
-    std::size_t events_dropped_ = 0;
+    fixed_queue<controller_event, EventCapacity> events_{};
 };
 
 }  // namespace powerkey::behaviour
