@@ -773,19 +773,7 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
 
 }  // namespace powerkey::behaviour
 
-#define POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME(name, ...) {value_type::name, #name},
-template <>
-struct powerkey::enum_names<powerkey::behaviour::problem_kind> {
-    using value_type = powerkey::behaviour::problem_kind;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME)};
-};
-#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME
-template <>
-struct powerkey::enum_names<powerkey::behaviour::severity> {
-    using value_type = powerkey::behaviour::severity;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::problem_kind, POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::severity, POWERKEY_BEHAVIOUR_SEVERITY_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_CHECKER_HPP

@@ -10,28 +10,10 @@
 //       c.set_led(3, colour::green);                  // sent when it changes, refreshed, resent
 //   }
 //
-// What it does, and where the manuals say so (docs/controller.md has the whole list):
-//   - finds the keypad by its boot-up or heartbeat (PK1000 8, 9, 29; PKP 8, 9, 17), or by probing
-//     its SDO server when it booted before the host did;
-//   - reads the model id 100Bh (PK1000 35 "PK1000", PKP 22 "PKU2400") and takes the model it
-//     names (model_from_report), else keeps the configured one;
-//   - runs the setup and the caller's configuration list through the SDO server one request at a
-//     time (a keypad drops a request that arrives while it still owes a reply), with a timeout,
-//     retries and the keypad's abort reported;
-//   - starts the keypad with NMT start (PK1000 4, PKP 4), optionally also setting it active on
-//     startup (PK1000 2012h section 22, PKP command 10h 13 d), and starts it again whenever its
-//     heartbeat says it is not operational (PK1000 28 note 2: a keypad whose consumer heartbeat
-//     timed out turns its LEDs off and waits in pre-operational for a new NMT start);
-//   - keeps a shadow of the LEDs (RPDO1/2: PK1000 12, 13; PKP 11, 12), the LED brightness and the
-//     backlight (PK1000 RPDO3/4 sections 14, 15; PKP 6201h section 30 and command 04h 13 c),
-//     sends it when it changes, refreshes the LED PDOs periodically, and sends everything again
-//     after the keypad rebooted or was started again (a rebooted keypad shows its defaults);
-//   - reports a lost keypad when it heard nothing from it (heartbeat, key state, SDO reply) for
-//     longer than configured, so that the application can go to a safe state;
-//   - turns key-state PDOs (PK1000 11, PKP 10) into key events: press, release, long press and
-//     repeat, with the caller's times;
-//   - follows a node-id change it is asked for: the reply from the new id (PK1000 2013h section
-//     23) or from the old id and a boot-up from the new one (PKP command 70h, 13 h).
+// It finds the keypad (boot-up, heartbeat, or an SDO probe), identifies it (100Bh), runs the setup
+// and the caller's configuration one SDO request at a time, starts it, keeps a shadow of its LEDs,
+// brightness and backlight, reports it lost, turns its key states into key events and follows a
+// node-id change: docs/controller.md lists each behaviour with the manual section it comes from.
 #ifndef POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 #define POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 
@@ -153,13 +135,9 @@ enum class controller_state : std::uint8_t {
 };
 
 // The most events one call (step() or tick()) reports for a keypad with `keys` keys: each key
-// at most twice (pressed or released; or, held, its long press and a repeat), and at most 13
-// others: found, rebooted or lost; ready; node_changed; 3 answers to SDO requests (one the frame
-// brings, one timeout in setup and one after it); 3 refused setup requests (identify, heartbeat,
-// active on startup) and 4 refused running ones (node change, brightness, backlight level and
-// colour). A refused configuration entry, and the ready that ends the setup, are reported only
-// when the queue has room: the setup waits for the next call otherwise. An application that polls
-// after every call loses no event when EventCapacity is at least this for the model it runs.
+// twice and 13 others (docs/controller.md, "Events"). A queue of at least this many loses no event
+// when the application polls after every call; a refused configuration entry and the ready that
+// ends the setup wait for room rather than being dropped.
 [[nodiscard]] constexpr std::size_t events_per_call(std::size_t keys) noexcept {
     return 2 * keys + 13;
 }
@@ -790,32 +768,10 @@ private:
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::event_kind> {
-    using value_type = powerkey::behaviour::event_kind;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_EVENT_KIND_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::sdo_origin> {
-    using value_type = powerkey::behaviour::sdo_origin;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::controller_state> {
-    using value_type = powerkey::behaviour::controller_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::start_mode> {
-    using value_type = powerkey::behaviour::start_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::event_kind, POWERKEY_BEHAVIOUR_EVENT_KIND_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::sdo_origin, POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::controller_state,
+                           POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::start_mode, POWERKEY_BEHAVIOUR_START_MODE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_CONTROLLER_HPP

@@ -89,11 +89,6 @@ private:
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::key_mode> {
-    using value_type = powerkey::behaviour::key_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_KEY_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::key_mode, POWERKEY_BEHAVIOUR_KEY_MODE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_KEY_MODES_HPP

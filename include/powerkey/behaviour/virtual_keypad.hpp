@@ -894,11 +894,6 @@ private:
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::run_state> {
-    using value_type = powerkey::behaviour::run_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_RUN_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::run_state, POWERKEY_BEHAVIOUR_RUN_STATE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
