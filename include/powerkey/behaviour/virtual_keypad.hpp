@@ -370,8 +370,6 @@ private:
             factory_defaults();
             restore_pending_ = false;
         }
-        node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
-        baud_ = effective_baud();
         on_ = {};
         blink_ = {};
         brightness_ = powerkey::level::make(value(object::default_led_brightness))
@@ -380,28 +378,20 @@ private:
                                .value_or(powerkey::level{0});
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         // keys_ stay: a key held through a reboot is still held
-        rpdo_buffer_ = {};
-        sync_count_ = 0;
-        monitoring_ = false;
-        pending_.reset();
-        upload_ = {};
         boot_time_ = t;
         if (value(object::protocol_j1939) != 0 && info_->j1939) {
-            state_ = run_state::j1939;
+            reset_communication(t, run_state::j1939);
             j1939_.boot(t, keys_, false, sink());
             return;
         }
-        state_ = value(object::active_on_startup) != 0 ? run_state::operational
-                                                       : run_state::pre_operational;
-        restart_timers(t);
-        // "If a CANopen device starts with a heartbeat producer time unequal to 0 the boot-up
-        // message is regarded as first heartbeat message" (PK1000 29, PKP 9).
-        if (value(object::boot_up) != 0) send_heartbeat(0x00);
+        reset_communication(t, value(object::active_on_startup) != 0 ? run_state::operational
+                                                                     : run_state::pre_operational);
     }
-    // Reset communication (CiA 301 7.3.2.2.1): the pending node id and baud rate take effect and
-    // the boot-up goes out; the application (LEDs, levels) keeps its state (inferred: the manuals
-    // do not print 82h).
-    constexpr void reset_communication(millis t) noexcept {
+    // Reset communication (CiA 301 7.3.2.2.1), alone or as part of a boot: the pending node id
+    // and baud rate take effect and the boot-up goes out; the application (LEDs, levels) keeps
+    // its state (inferred: the manuals do not print 82h).
+    constexpr void reset_communication(millis t,
+                                       run_state to = run_state::pre_operational) noexcept {
         node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
         baud_ = effective_baud();
         rpdo_buffer_ = {};
@@ -409,8 +399,11 @@ private:
         monitoring_ = false;
         pending_.reset();
         upload_ = {};
-        state_ = run_state::pre_operational;
+        state_ = to;
+        if (to == run_state::j1939) return;
         restart_timers(t);
+        // "If a CANopen device starts with a heartbeat producer time unequal to 0 the boot-up
+        // message is regarded as first heartbeat message" (PK1000 29, PKP 9).
         if (value(object::boot_up) != 0) send_heartbeat(0x00);
     }
     // 2010h codes 01h and 05h are "Reserved (force to 125k)" (PK1000 20).
@@ -723,44 +716,38 @@ private:
         const auto m = powerkey::decode(f, node_, model_);
         const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
         if (c == nullptr) return canopen::sdo_abort_code::invalid_value;
+        using cc = command_code;
+        const auto stored = [&](object o, std::uint32_t v) { value_[idx(o)] = v; };
         switch (c->code) {
-            case command_code::set_led_state: set_led_state(c->key, c->state); break;
-            case command_code::set_led_brightness: brightness_ = c->level; break;
-            case command_code::set_backlight_level: backlight_.level = c->level; break;
-            case command_code::set_backlight_colour: backlight_.colour = c->colour; break;
-            case command_code::set_active_on_startup:
-                value_[idx(object::active_on_startup)] = c->enabled ? 1 : 0;
+            case cc::set_led_state: set_led_state(c->key, c->state); break;
+            case cc::set_led_brightness: brightness_ = c->level; break;
+            case cc::set_backlight_level: backlight_.level = c->level; break;
+            case cc::set_backlight_colour: backlight_.colour = c->colour; break;
+            case cc::set_active_on_startup: stored(object::active_on_startup, c->enabled); break;
+            case cc::set_baud_rate:
+                stored(object::baud_rate, static_cast<unsigned>(c->baud));
                 break;
-            case command_code::set_baud_rate:
-                value_[idx(object::baud_rate)] = static_cast<std::uint32_t>(c->baud);
-                break;
-            case command_code::set_periodic_transmission:  // PKP 13 f: period x 10 ms
-                value_[idx(object::tpdo1_event_timer)] =
-                    c->enabled ? std::uint32_t{c->period_10ms} * 10u : 0u;
+            case cc::set_periodic_transmission:  // PKP 13 f: period x 10 ms
+                stored(object::tpdo1_event_timer, c->enabled ? c->period_10ms * 10u : 0u);
                 next_periodic_ = now_ + duration_ms{periodic_ms()};
                 break;
-            case command_code::set_boot_up:
-                value_[idx(object::boot_up)] = c->enabled ? 1 : 0;
+            case cc::set_boot_up: stored(object::boot_up, c->enabled); break;
+            case cc::set_startup_show:
+                stored(object::startup_show, static_cast<unsigned>(c->show));
                 break;
-            case command_code::set_startup_show:
-                value_[idx(object::startup_show)] = static_cast<std::uint32_t>(c->show);
-                break;
-            case command_code::set_node_id:  // PKP 13 h: reply from the old id, then boot-up
-                value_[idx(object::node_id)] = c->node_id.value();
+            case cc::set_node_id:  // PKP 13 h: reply from the old id, then boot-up
+                stored(object::node_id, c->node_id.value());
                 then = after_reply::reboot;
                 break;
-            case command_code::set_demo_mode:
-                value_[idx(object::demo_mode)] = c->enabled ? 1 : 0;
+            case cc::set_demo_mode: stored(object::demo_mode, c->enabled); break;
+            case cc::set_default_backlight_level:
+                stored(object::default_backlight_level, c->level.value());
                 break;
-            case command_code::set_default_backlight_level:
-                value_[idx(object::default_backlight_level)] = c->level.value();
+            case cc::set_default_led_brightness:
+                stored(object::default_led_brightness, c->level.value());
                 break;
-            case command_code::set_default_led_brightness:
-                value_[idx(object::default_led_brightness)] = c->level.value();
-                break;
-            case command_code::set_default_backlight_colour:
-                value_[idx(object::default_backlight_colour)] =
-                    static_cast<std::uint32_t>(c->colour);
+            case cc::set_default_backlight_colour:
+                stored(object::default_backlight_colour, static_cast<unsigned>(c->colour));
                 break;
         }
         return std::nullopt;
