@@ -50,6 +50,12 @@ struct bench : powerkey_tests::closed_loop<controller<16, 64>> {
         });
     }
 
+    // The keypad powered on, and the session run for `ms` (200: found, set up and started).
+    void start(std::uint32_t ms = 200) {
+        keypad.power_on(at());
+        run(ms);
+    }
+
     // The checker's view of the whole session: the problem kinds, in order.
     std::vector<problem> check(model m, node_id start = canopen::default_node_id) const {
         checker_config cc;
@@ -111,8 +117,7 @@ TEST_CASE("controller + virtual keypad: start, configure, LEDs, levels, keys, fo
         controller_config cfg;
         cfg.configuration = config;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         CHECK(b.ctl.state() == controller_state::running);
         CHECK(b.keypad.state() == run_state::operational);
         CHECK(b.count(event_kind::found) == 1);
@@ -161,8 +166,7 @@ TEST_CASE("controller + virtual keypad: the keypad reboots mid-session, everythi
     for (const model m : enum_values<model>()) {
         INFO("model " << std::string(to_string(m)));
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.set_led(some_led, colour::green);
         b.ctl.set_brightness(lv(0x08));
         b.run(50);
@@ -185,8 +189,7 @@ TEST_CASE("controller + virtual keypad: the keypad goes silent, is reported lost
     for (const model m : enum_values<model>()) {
         INFO("model " << std::string(to_string(m)));
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.set_led(some_led, colour::red);
         b.keypad.press(2, b.at());
         b.run(50);
@@ -216,8 +219,7 @@ TEST_CASE("controller + virtual keypad: lost frames (an SDO request, a reply, th
         controller_config cfg;
         cfg.configuration = config;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(1);                   // boot-up seen; the 100Bh read is on its way
+        b.start(1);                 // boot-up seen; the 100Bh read is on its way
         b.keypad.drop_received(1);  // ... and the keypad never hears it
         b.run(400);
         CHECK(b.count(event_kind::ready) == 1);  // the retry after 300 ms went through
@@ -326,8 +328,7 @@ TEST_CASE("controller + virtual keypad: an SDO abort is reported and the list go
             b.abort_next = canopen::sdo_address{0x1018, 1};
             b.abort_code = canopen::sdo_abort_code::hardware_error;
         }
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         REQUIRE(b.count(event_kind::sdo_aborted) == 1);
         const auto e = *std::find_if(b.events.begin(), b.events.end(), [](const auto& x) {
             return x.kind == event_kind::sdo_aborted;
@@ -356,8 +357,7 @@ TEST_CASE("controller + virtual keypad: the keypad changes node id") {
             continue;
         }
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.change_node(node_id::make(0x3A).value());
         b.run(300);
         CHECK(b.count(event_kind::node_changed) == 1);
@@ -401,8 +401,7 @@ TEST_CASE("controller + virtual keypad: any node adopts a keypad at another node
         controller_config cfg;
         cfg.any_node = true;
         bench b(m, cfg, node_id::make(0x30).value());
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         CHECK(b.ctl.node() == node_id::make(0x30).value());
         CHECK(b.ctl.state() == controller_state::running);
         CHECK(b.keypad.state() == run_state::operational);
@@ -417,8 +416,7 @@ TEST_CASE("controller + virtual keypad: active on startup") {
         controller_config cfg;
         cfg.start = start_mode::active_on_startup;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.keypad.power_cycle(b.at());
         CHECK(b.keypad.state() == run_state::operational);  // by itself after the power cycle
         b.run(200);
@@ -597,8 +595,7 @@ TEST_CASE("controller + virtual keypad: the abort of 1001h is reported with its 
     controller_config cfg;
     cfg.configuration = config;
     bench b(model::pk1000, cfg);
-    b.keypad.power_on(b.at());
-    b.run(3000);
+    b.start(3000);
     REQUIRE(b.count(event_kind::sdo_aborted) == 1);
     const auto e = *std::find_if(b.events.begin(), b.events.end(),
                                  [](const auto& x) { return x.kind == event_kind::sdo_aborted; });

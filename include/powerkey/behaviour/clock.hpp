@@ -18,14 +18,12 @@ namespace powerkey::behaviour {
 // elapsed(), which are right across the wrap as long as the two points are < 2^31 ms apart.
 struct millis {
     std::uint32_t value = 0;
-
     friend constexpr bool operator==(millis, millis) noexcept = default;
 };
 
 // A span of time in milliseconds.
 struct duration_ms {
     std::uint32_t value = 0;
-
     friend constexpr bool operator==(duration_ms, duration_ms) noexcept = default;
 };
 

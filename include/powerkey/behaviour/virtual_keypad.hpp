@@ -151,14 +151,9 @@ public:
         if (id == 0x080) return on_sync(f, t);
         if ((id & 0x780) == 0x700) return on_heartbeat(f, t);
         if ((id & 0x7F) != node_.value()) return;
-        switch (id & 0x780) {
-            case 0x200:
-            case 0x300:
-            case 0x400:
-            case 0x500: return on_rpdo(f, t);
-            case 0x600: return on_sdo(f, t);
-            default: return;
-        }
+        const std::uint32_t fn = id & 0x780;
+        if (fn >= 0x200 && fn <= 0x500) return on_rpdo(f, t);
+        if (fn == 0x600) return on_sdo(f, t);
     }
 
     // Runs the timers up to t: a due SDO reply, the heartbeat producer (1017h), the heartbeat
@@ -444,11 +439,7 @@ private:
         }
     }
     constexpr std::uint8_t nmt_byte() const noexcept {
-        switch (state_) {
-            case run_state::operational: return 0x05;
-            case run_state::stopped: return 0x04;
-            default: return 0x7F;
-        }
+        return state_ == run_state::operational ? 0x05 : state_ == run_state::stopped ? 0x04 : 0x7F;
     }
 
     // Heartbeat consumer (PK1000 28): 1016h sub 1 = period (bits 0..15) and producer (16..23).
@@ -583,9 +574,7 @@ private:
         if (info(row->id).kind == value_kind::none)
             return abort(a, canopen::sdo_abort_code::object_does_not_exist, t);
         if (!row->readable()) return abort(a, canopen::sdo_abort_code::write_only, t);
-        can::payload p{};
-        powerkey::detail::store_le<2>(p, 1, a.index);
-        p[3] = a.subindex;
+        can::payload p = sdo_payload(0, a);
         const unsigned size = size_of(*row);
         if (size == 0) {
             const auto s = info_->string_of(row->id);
@@ -644,16 +633,11 @@ private:
             static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
         after_reply then = after_reply::none;
         if (const auto code = check_and_apply(*row, f, v, then, t)) return abort(a, *code, t);
-        can::payload p{};
-        p[0] = 0x60;
-        p[1] = f[1];
-        p[2] = f[2];
-        p[3] = f[3];
         if (row->id == object::node_id && info_->replies_from_new_id) {
             // PK1000 23: the acknowledgement already comes from the new id
             node_ = canopen::node_id::make(v).value();
         }
-        reply(p, t, then);
+        reply(sdo_payload(0x60, a), t, then);
     }
 
     // Checks a written value against its row as the codec does (its kind's check,
@@ -780,11 +764,15 @@ private:
 
     // --- sending ------------------------------------------------------------------------------
 
-    constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
-        can::payload p{};
-        p[0] = 0x80;
+    // An SDO reply's first four bytes: the command specifier and the object's address.
+    static constexpr can::payload sdo_payload(std::uint8_t cs, canopen::sdo_address a) noexcept {
+        can::payload p{cs};
         powerkey::detail::store_le<2>(p, 1, a.index);
         p[3] = a.subindex;
+        return p;
+    }
+    constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
+        can::payload p = sdo_payload(0x80, a);
         powerkey::detail::store_le<4>(p, 4, static_cast<std::uint32_t>(c));
         reply(p, t);
     }
