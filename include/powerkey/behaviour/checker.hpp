@@ -9,11 +9,8 @@
 //   for (const problem& p : c.finish()) print(p);
 //   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
 //
-// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST: its name, its severity and what it
-// means (problem_kinds[], summary_of()); docs/checker.md gives the manual behaviour each comes
-// from. A `problem` is a fault of the controller or the keypad; a `warning` is a frame the keypads
-// act on that a strict reader would refuse. Counted per kind: count(kind).
-// No heap, no I/O: problems come back as small structs, explain() writes the text.
+// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST; docs/checker.md gives the manual
+// behaviour each comes from. No heap, no I/O: problems are small structs, explain() writes text.
 #ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
 
@@ -452,18 +449,12 @@ private:
         const auto node = session_.node();
         if (const auto* n = std::get_if<canopen::nmt_message>(&msg)) {
             if (n->target.value() != 0 && n->target.value() != node.value()) return;
-            switch (n->command) {
-                case canopen::nmt_command::start: set_state(canopen::nmt_state::operational); break;
-                case canopen::nmt_command::stop:
-                case canopen::nmt_command::legacy_stop:
-                    set_state(canopen::nmt_state::stopped);
-                    break;
-                case canopen::nmt_command::enter_pre_operational:
-                case canopen::nmt_command::reset_node:
-                case canopen::nmt_command::reset_communication:
-                    set_state(canopen::nmt_state::pre_operational);
-                    break;
-            }
+            using cmd = canopen::nmt_command;
+            // A reset (node or communication) ends in pre-operational too.
+            set_state(n->command == cmd::start ? canopen::nmt_state::operational
+                      : n->command == cmd::stop || n->command == cmd::legacy_stop
+                          ? canopen::nmt_state::stopped
+                          : canopen::nmt_state::pre_operational);
             return;
         }
         if (c.node != node.value()) return;

@@ -300,31 +300,28 @@ private:
             dirty_leds_ = static_cast<std::uint16_t>(dirty_leds_ & ~bit(k));
         }
         using cc = j1939::command_code;
-        if ((dirty_ & dirty_brightness) != 0) {
-            if (brightness_) {
-                j1939::command c = to_keypad();
-                c.code = cc::set_led_brightness;
-                c.level = *brightness_;
-                if (!send(c)) return;
-            }
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
-        }
-        if ((dirty_ & dirty_level) != 0) {
-            if (backlight_) {
-                j1939::command c = to_keypad();
-                c.code = cc::set_backlight_level;
-                c.level = *backlight_;
-                if (!send(c)) return;
-            }
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_level);
-        }
-        if ((dirty_ & dirty_colour) != 0) {
+        if (!send_level(dirty_brightness, cc::set_led_brightness, brightness_) ||
+            !send_level(dirty_level, cc::set_backlight_level, backlight_) ||
+            (dirty_ & dirty_colour) == 0)
+            return;
+        j1939::command c = to_keypad();
+        c.code = cc::set_default_backlight_colour;
+        c.colour = colour_;
+        if (send(c)) dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_colour);
+    }
+    // A level whose dirty bit is set, sent by `code` when there is one; false when the outbox is
+    // full (the bit stays: sent at the next call).
+    constexpr bool send_level(std::uint8_t bit, j1939::command_code code,
+                              const std::optional<level>& l) noexcept {
+        if ((dirty_ & bit) == 0) return true;
+        if (l) {
             j1939::command c = to_keypad();
-            c.code = cc::set_default_backlight_colour;
-            c.colour = colour_;
-            if (!send(c)) return;
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_colour);
+            c.code = code;
+            c.level = *l;
+            if (!send(c)) return false;
         }
+        dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
+        return true;
     }
 
     constexpr j1939::command to_keypad() const noexcept {

@@ -643,15 +643,13 @@ private:
     // Checks a written value against its row as the codec does (its kind's check,
     // value_kinds.hpp) and applies it; the abort code when refused. An LED object's value is
     // merged into its map (the LEDs its kind covers); the command module runs its command.
-    constexpr std::optional<canopen::sdo_abort_code> check_and_apply(const object_row& r,
-                                                                     const can::frame& f,
-                                                                     std::uint32_t v,
-                                                                     after_reply& then,
-                                                                     millis t) noexcept {
+    using refusal = std::optional<canopen::sdo_abort_code>;
+    constexpr refusal check_and_apply(const object_row& r, const can::frame& f, std::uint32_t v,
+                                      after_reply& then, millis t) noexcept {
         const value_kind kind = info(r.id).kind;
-        if (kind == value_kind::commands) return command(f, then, t);
+        if (kind == value_kind::commands) return command(f, then);
         const auto& c = codec_row_of(r);
-        std::optional<canopen::sdo_abort_code> refused;
+        refusal refused;
         const bool led = visit_kind(kind, [&](auto k) {
             using K = decltype(k);
             const auto size = static_cast<std::uint8_t>(size_of(r));
@@ -695,8 +693,7 @@ private:
     }
 
     // The PKP command module, 6500h sub 1 (PKP 13 a-m).
-    constexpr std::optional<canopen::sdo_abort_code> command(const can::frame& f, after_reply& then,
-                                                             millis) noexcept {
+    constexpr refusal command(const can::frame& f, after_reply& then) noexcept {
         const auto m = powerkey::decode(f, node_, model_);
         const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
         if (c == nullptr) return canopen::sdo_abort_code::invalid_value;
