@@ -1,6 +1,5 @@
-// powerkey: what every behaviour role (virtual keypad, controller, checker) is stepped with.
-// Roles own no clock and do no I/O: the caller passes the current time to each call and drains
-// the frames a role wants to send from its fixed-capacity outbox.
+// powerkey: what every behaviour role is stepped with. Roles own no clock and do no I/O: the caller
+// passes the time to each call and drains the frames a role sends from its fixed-capacity outbox.
 #ifndef POWERKEY_BEHAVIOUR_CLOCK_HPP
 #define POWERKEY_BEHAVIOUR_CLOCK_HPP
 
@@ -45,20 +44,19 @@ struct duration_ms {
     return !before(now, deadline);
 }
 
-// A fixed-capacity FIFO: a role's outbox of frames, a controller's events. No heap; push() on a
-// full queue refuses (returns false) and counts the item in dropped(), so a caller that drains
-// too slowly sees it.
+// A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
+// false) and counts the item in dropped(), so a caller that drains too slowly sees it.
 template <class T, std::size_t N>
 class fixed_queue {
     static_assert(N > 0, "a fixed_queue holds at least one item");
 
 public:
-    [[nodiscard]] constexpr bool push(const T& f) noexcept {
+    [[nodiscard]] constexpr bool push(const T& x) noexcept {
         if (full()) {
             ++dropped_;
             return false;
         }
-        items_[(head_ + size_) % N] = f;
+        items_[(head_ + size_) % N] = x;
         ++size_;
         return true;
     }
