@@ -176,6 +176,44 @@ constexpr bool all_decode(const Frames& frames, Decode d) {
 }
 }  // namespace detail
 
+// How many frames of `log` a keypad of model m at node 15h decodes (the others: other nodes' or
+// other devices' frames).
+template <std::size_t N>
+constexpr std::size_t keypad_frames(const std::array<pc::frame, N>& log, powerkey::model m) {
+    std::size_t n = 0;
+    for (const auto& f : log)
+        if (powerkey::decode(f, node, m).has_value()) ++n;
+    return n;
+}
+// Those frames decoded, in order (K: their number): what the encoders are given.
+template <std::size_t K, std::size_t N>
+constexpr auto keypad_messages(const std::array<pc::frame, N>& log, powerkey::model m) {
+    std::array<powerkey::message, K> out{};
+    std::size_t n = 0;
+    for (const auto& f : log)
+        if (const auto r = powerkey::decode(f, node, m)) out[n++] = *r;
+    return out;
+}
+
+// The one codec as model m at node 15h: every frame decoded, or every message (any message
+// type) encoded.
+template <std::size_t N>
+[[gnu::always_inline]] inline void decode_all(const std::array<pc::frame, N>& frames,
+                                              powerkey::model model, std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(model);
+    cycle(frames, calls,
+          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
+}
+template <class T, std::size_t N>
+[[gnu::always_inline]] inline void encode_all(const std::array<T, N>& messages,
+                                              powerkey::model model, std::size_t calls) {
+    const auto n = opaque(node);
+    const auto m = opaque(model);
+    cycle(messages, calls,
+          [n, m](const T& msg) BENCH_INLINE { return powerkey::encode(n, m, msg); });
+}
+
 // --- the operations -------------------------------------------------------------------------
 
 inline void floor_read(std::size_t calls) {

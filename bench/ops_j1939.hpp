@@ -65,23 +65,14 @@ inline constexpr std::array j1939_mixed_log = {
 inline constexpr powerkey::model j1939_model = powerkey::model::pkp2600si;
 
 // How many frames belong to the keypad (the others are other ECUs': wrong_id).
-inline constexpr std::size_t j1939_mixed_log_keypad_frames = [] {
-    std::size_t n = 0;
-    for (const auto& f : j1939_mixed_log)
-        if (powerkey::decode(f, node, j1939_model).has_value()) ++n;
-    return n;
-}();
+inline constexpr std::size_t j1939_mixed_log_keypad_frames =
+    keypad_frames(j1939_mixed_log, j1939_model);
 static_assert(j1939_mixed_log.size() == 64);
 static_assert(j1939_mixed_log_keypad_frames == j1939_mixed_log.size() - 13);
 
 // The decoded log, for the encoder.
-inline constexpr auto j1939_mixed_log_messages = [] {
-    std::array<powerkey::message, j1939_mixed_log_keypad_frames> m{};
-    std::size_t n = 0;
-    for (const auto& f : j1939_mixed_log)
-        if (const auto r = powerkey::decode(f, node, j1939_model)) m[n++] = *r;
-    return m;
-}();
+inline constexpr auto j1939_mixed_log_messages =
+    keypad_messages<j1939_mixed_log_keypad_frames>(j1939_mixed_log, j1939_model);
 
 // The key contact states and LED commands of the log, alone.
 inline constexpr std::array j1939_key_frames = {
@@ -98,17 +89,10 @@ inline constexpr std::array j1939_set_leds = {
 };
 
 inline void any_decode_j1939_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(j1939_model);
-    cycle(j1939_mixed_log, calls,
-          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
+    decode_all(j1939_mixed_log, j1939_model, calls);
 }
 inline void any_encode_j1939_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(j1939_model);
-    cycle(j1939_mixed_log_messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
-        return powerkey::encode(n, m, msg);
-    });
+    encode_all(j1939_mixed_log_messages, j1939_model, calls);
 }
 inline void j1939_decode_mixed_log(std::size_t calls) {
     const auto m = opaque(j1939_model);

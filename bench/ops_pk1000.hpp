@@ -17,8 +17,9 @@
 
 namespace bench {
 
+inline constexpr auto pk1000 = powerkey::model::pk1000;
+
 namespace pk_detail {
-constexpr auto pk1000 = powerkey::model::pk1000;
 
 // The keypad's node id of a row: 15h unless the row names another (a number or a node_id).
 template <class Row>
@@ -177,75 +178,40 @@ static_assert(detail::all_decode(pk_sdo_request_frames, pk_detail::decode_pk));
 static_assert(detail::all_decode(pk_sdo_response_frames, pk_detail::decode_pk));
 
 // 57 of the 64 frames are the keypad's; the J1939 frames and those of node 16h are refused.
-inline constexpr std::size_t pk_mixed_log_keypad_frames = [] {
-    std::size_t n = 0;
-    for (const auto& f : pk_mixed_log)
-        if (pk_detail::decode_pk(f).has_value()) ++n;
-    return n;
-}();
+inline constexpr std::size_t pk_mixed_log_keypad_frames = keypad_frames(pk_mixed_log, pk1000);
 static_assert(pk_mixed_log_keypad_frames == pk_mixed_log.size() - 7);
 
-inline constexpr auto pk_mixed_log_messages = [] {
-    std::array<powerkey::message, pk_mixed_log_keypad_frames> m{};
-    std::size_t n = 0;
-    for (const auto& f : pk_mixed_log)
-        if (const auto r = pk_detail::decode_pk(f)) m[n++] = *r;
-    return m;
-}();
+inline constexpr auto pk_mixed_log_messages =
+    keypad_messages<pk_mixed_log_keypad_frames>(pk_mixed_log, pk1000);
 
-namespace pk_detail {
-// Decodes every frame of `frames` at node 15h as a PK1000.
-template <std::size_t N>
-[[gnu::always_inline]] inline void decode_all(const std::array<pc::frame, N>& frames,
-                                              std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pk1000);
-    cycle(frames, calls,
-          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
-}
-template <std::size_t N>
-[[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
-                                              std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pk1000);
-    cycle(messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
-        return powerkey::encode(n, m, msg);
-    });
-}
-}  // namespace pk_detail
-
-inline void pk_key_state_decode(std::size_t calls) { pk_detail::decode_all(pk_key_frames, calls); }
-inline void pk_key_state_encode(std::size_t calls) {
-    pk_detail::encode_all(pk_key_messages, calls);
-}
-inline void pk_led_on_decode(std::size_t calls) { pk_detail::decode_all(pk_led_on_frames, calls); }
-inline void pk_led_on_encode(std::size_t calls) {
-    pk_detail::encode_all(pk_led_on_messages, calls);
-}
+inline void pk_key_state_decode(std::size_t calls) { decode_all(pk_key_frames, pk1000, calls); }
+inline void pk_key_state_encode(std::size_t calls) { encode_all(pk_key_messages, pk1000, calls); }
+inline void pk_led_on_decode(std::size_t calls) { decode_all(pk_led_on_frames, pk1000, calls); }
+inline void pk_led_on_encode(std::size_t calls) { encode_all(pk_led_on_messages, pk1000, calls); }
 inline void pk_led_blink_decode(std::size_t calls) {
-    pk_detail::decode_all(pk_led_blink_frames, calls);
+    decode_all(pk_led_blink_frames, pk1000, calls);
 }
 inline void pk_backlight_decode(std::size_t calls) {
-    pk_detail::decode_all(pk_backlight_frames, calls);
+    decode_all(pk_backlight_frames, pk1000, calls);
 }
 inline void pk_backlight_encode(std::size_t calls) {
-    pk_detail::encode_all(pk_backlight_messages, calls);
+    encode_all(pk_backlight_messages, pk1000, calls);
 }
 inline void pk_sdo_request_decode(std::size_t calls) {
-    pk_detail::decode_all(pk_sdo_request_frames, calls);
+    decode_all(pk_sdo_request_frames, pk1000, calls);
 }
 inline void pk_sdo_response_decode(std::size_t calls) {
-    pk_detail::decode_all(pk_sdo_response_frames, calls);
+    decode_all(pk_sdo_response_frames, pk1000, calls);
 }
 inline void pk_sdo_request_encode(std::size_t calls) {
-    pk_detail::encode_all(pk_sdo_request_messages, calls);
+    encode_all(pk_sdo_request_messages, pk1000, calls);
 }
 inline void pk_sdo_response_encode(std::size_t calls) {
-    pk_detail::encode_all(pk_sdo_response_messages, calls);
+    encode_all(pk_sdo_response_messages, pk1000, calls);
 }
-inline void pk_decode_all_rows(std::size_t calls) { pk_detail::decode_all(pk_all_rows, calls); }
+inline void pk_decode_all_rows(std::size_t calls) { decode_all(pk_all_rows, pk1000, calls); }
 inline void any_pk1000_decode_mixed_log(std::size_t calls) {
-    pk_detail::decode_all(pk_mixed_log, calls);
+    decode_all(pk_mixed_log, pk1000, calls);
 }
 inline void one_pk1000_decode_mixed_log(std::size_t calls) {
     const auto n = opaque(node);
@@ -254,7 +220,7 @@ inline void one_pk1000_decode_mixed_log(std::size_t calls) {
     });
 }
 inline void any_pk1000_encode_mixed_log(std::size_t calls) {
-    pk_detail::encode_all(pk_mixed_log_messages, calls);
+    encode_all(pk_mixed_log_messages, pk1000, calls);
 }
 
 inline constexpr op pk1000_ops[] = {

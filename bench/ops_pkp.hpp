@@ -166,58 +166,26 @@ static_assert(detail::all_decode(pkp_sdo_response_frames, detail::pkp_decode));
 
 // How many frames of the mixed log belong to the keypad (the rest are refused with wrong_id or
 // wrong_id_format): kept in the table's notes.
-inline constexpr std::size_t mixed_log_keypad_frames = [] {
-    std::size_t n = 0;
-    for (const auto& f : mixed_log)
-        if (powerkey::decode(f, node, powerkey::model::pkp2400).has_value()) ++n;
-    return n;
-}();
+inline constexpr std::size_t mixed_log_keypad_frames = keypad_frames(mixed_log, pkp_model);
 static_assert(mixed_log_keypad_frames == mixed_log.size() - 7);
 
 // The decoded log, for the encoder: encode(decode(f)) == f for each of these.
-inline constexpr auto mixed_log_messages = [] {
-    std::array<powerkey::message, mixed_log_keypad_frames> m{};
-    std::size_t n = 0;
-    for (const auto& f : mixed_log)
-        if (const auto r = powerkey::decode(f, node, powerkey::model::pkp2400)) m[n++] = *r;
-    return m;
-}();
-
-namespace pkp_detail {
-template <std::size_t N>
-[[gnu::always_inline]] inline void decode_all(const std::array<pc::frame, N>& frames,
-                                              std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(frames, calls,
-          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
-}
-template <std::size_t N>
-[[gnu::always_inline]] inline void encode_all(const std::array<powerkey::message, N>& messages,
-                                              std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
-        return powerkey::encode(n, m, msg);
-    });
-}
-}  // namespace pkp_detail
+inline constexpr auto mixed_log_messages =
+    keypad_messages<mixed_log_keypad_frames>(mixed_log, pkp_model);
 
 inline void pkp_key_state_decode(std::size_t calls) {
-    pkp_detail::decode_all(pkp_key_frames, calls);
+    decode_all(pkp_key_frames, pkp_model, calls);
 }
 inline void pkp_key_state_encode(std::size_t calls) {
-    pkp_detail::encode_all(pkp_key_messages, calls);
+    encode_all(pkp_key_messages, pkp_model, calls);
 }
 inline void pkp_led_on_decode(std::size_t calls) {
-    pkp_detail::decode_all(pkp_led_on_frames, calls);
+    decode_all(pkp_led_on_frames, pkp_model, calls);
 }
 inline void pkp_led_blink_decode(std::size_t calls) {
-    pkp_detail::decode_all(pkp_led_blink_frames, calls);
+    decode_all(pkp_led_blink_frames, pkp_model, calls);
 }
-inline void pkp_led_on_encode(std::size_t calls) {
-    pkp_detail::encode_all(pkp_led_messages, calls);
-}
+inline void pkp_led_on_encode(std::size_t calls) { encode_all(pkp_led_messages, pkp_model, calls); }
 // The firmware's way: the map from run-time key numbers (leds::set), then encode.
 inline void pkp_led_on_encode_typed(std::size_t calls) {
     const auto n = opaque(node);
@@ -238,35 +206,20 @@ constexpr auto alternatives_of(const std::array<powerkey::message, N>& messages)
 }
 inline constexpr auto pkp_key_states = alternatives_of<powerkey::key_state>(pkp_key_messages);
 inline constexpr auto pkp_led_ons = alternatives_of<powerkey::led_on>(pkp_led_messages);
-template <class T, std::size_t N>
-[[gnu::always_inline]] inline void encode_each(const std::array<T, N>& messages,
-                                               std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(pkp_model);
-    cycle(messages, calls,
-          [n, m](const T& msg) BENCH_INLINE { return powerkey::encode(n, m, msg); });
+inline void pkp_key_state_encode_own(std::size_t calls) {
+    encode_all(pkp_key_states, pkp_model, calls);
 }
-inline void pkp_key_state_encode_own(std::size_t calls) { encode_each(pkp_key_states, calls); }
-inline void pkp_led_on_encode_own(std::size_t calls) { encode_each(pkp_led_ons, calls); }
+inline void pkp_led_on_encode_own(std::size_t calls) { encode_all(pkp_led_ons, pkp_model, calls); }
 inline void pkp_sdo_request_decode(std::size_t calls) {
-    pkp_detail::decode_all(pkp_sdo_request_frames, calls);
+    decode_all(pkp_sdo_request_frames, pkp_model, calls);
 }
 inline void pkp_sdo_response_decode(std::size_t calls) {
-    pkp_detail::decode_all(pkp_sdo_response_frames, calls);
+    decode_all(pkp_sdo_response_frames, pkp_model, calls);
 }
-inline void pkp_sdo_encode(std::size_t calls) { pkp_detail::encode_all(pkp_sdo_messages, calls); }
-inline void any_decode_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(powerkey::model::pkp2400);
-    cycle(mixed_log, calls,
-          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
-}
+inline void pkp_sdo_encode(std::size_t calls) { encode_all(pkp_sdo_messages, pkp_model, calls); }
+inline void any_decode_mixed_log(std::size_t calls) { decode_all(mixed_log, pkp_model, calls); }
 inline void any_encode_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(powerkey::model::pkp2400);
-    cycle(mixed_log_messages, calls, [n, m](const powerkey::message& msg) BENCH_INLINE {
-        return powerkey::encode(n, m, msg);
-    });
+    encode_all(mixed_log_messages, pkp_model, calls);
 }
 
 inline constexpr op pkp_ops[] = {

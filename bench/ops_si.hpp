@@ -85,20 +85,12 @@ inline constexpr std::array mt_mixed_log = {
 inline constexpr powerkey::model mt_model = powerkey::model::pkp3500mt;
 
 // How many frames belong to the keypad (the others: another node's or a foreign 29-bit frame).
-inline constexpr std::size_t mt_mixed_log_keypad_frames = [] {
-    std::size_t n = 0;
-    for (const auto& f : mt_mixed_log)
-        if (powerkey::decode(f, node, mt_model).has_value()) ++n;
-    return n;
-}();
+inline constexpr std::size_t mt_mixed_log_keypad_frames = keypad_frames(mt_mixed_log, mt_model);
 static_assert(mt_mixed_log.size() == 64);
 static_assert(mt_mixed_log_keypad_frames == mt_mixed_log.size() - 7);
 
 inline void any_decode_mt_mixed_log(std::size_t calls) {
-    const auto n = opaque(node);
-    const auto m = opaque(mt_model);
-    cycle(mt_mixed_log, calls,
-          [n, m](const pc::frame& f) BENCH_INLINE { return powerkey::decode(f, n, m); });
+    decode_all(mt_mixed_log, mt_model, calls);
 }
 
 inline constexpr op si_ops[] = {

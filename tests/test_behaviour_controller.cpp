@@ -5,6 +5,7 @@
 // except those the fault itself causes. Then small queues and outboxes, the controller alone
 // against scripted replies, the key modes (behaviour/key_modes.hpp), and the same session at
 // compile time.
+#include "behaviour_support.hpp"
 #include "support.hpp"
 
 #include <powerkey/behaviour/checker.hpp>
@@ -25,61 +26,34 @@ using namespace powerkey;
 using namespace powerkey::behaviour;
 using powerkey::canopen::node_id;
 
-// Levels and node ids below are built with make() rather than the consteval literal
-// constructor: clang 14 crashes generating code for a consteval temporary passed as an argument
-// in these test functions (level{0x10} as an argument of a member call).
+using powerkey_tests::lv;
+
+// Node ids below are built with make() rather than the consteval literal constructor: clang 14
+// crashes generating code for a consteval temporary passed as an argument in these test functions.
 
 namespace {
 
-struct logged {
-    can::frame frame;
-    std::uint32_t time;
-};
-
-// A controller and a virtual keypad on one bus, stepped every millisecond.
-struct bench {
+// A controller and a virtual keypad on one bus, stepped every millisecond, with the fault below.
+struct bench : powerkey_tests::closed_loop<controller<16, 64>> {
     explicit bench(model m, controller_config cfg = {}, node_id node = canopen::default_node_id)
-        : keypad(m, node), ctl(with_model(cfg, m)) {}
-
-    static controller_config with_model(controller_config c, model m) {
-        c.keypad_model = m;
-        return c;
-    }
+        : closed_loop(m, cfg, node) {}
 
     void run(std::uint32_t ms) {
-        for (std::uint32_t i = 0; i < ms; ++i) {
-            ++now;
-            const millis t{now};
-            keypad.advance(t);
-            bool any = false;
-            while (auto f = keypad.transmit()) {
-                if (abort_next && f->raw_id() == 0x580u + keypad.node().value() &&
-                    (*f)[1] == (abort_next->index & 0xFF) && (*f)[2] == (abort_next->index >> 8) &&
-                    (*f)[3] == abort_next->subindex) {
-                    f = canopen::encode(keypad.node(),
-                                        canopen::sdo_abort_response{{*abort_next, abort_code}});
-                    abort_next.reset();
-                }
-                log.push_back({*f, now});
-                ctl.step(*f, t);
-                any = true;
+        closed_loop::run(ms, [this](can::frame& f) {
+            if (abort_next && f.raw_id() == 0x580u + keypad.node().value() &&
+                f[1] == (abort_next->index & 0xFF) && f[2] == (abort_next->index >> 8) &&
+                f[3] == abort_next->subindex) {
+                f = canopen::encode(keypad.node(),
+                                    canopen::sdo_abort_response{{*abort_next, abort_code}});
+                abort_next.reset();
             }
-            if (!any) ctl.tick(t);
-            while (const auto f = ctl.next_frame()) {
-                log.push_back({*f, now});
-                keypad.receive(*f, t);
-            }
-            while (const auto e = ctl.poll()) events.push_back(*e);
-        }
+        });
     }
 
-    std::size_t count(event_kind k) const {
-        return static_cast<std::size_t>(std::count_if(events.begin(), events.end(),
-                                                      [k](const auto& e) { return e.kind == k; }));
-    }
-    bool saw(event_kind k, unsigned key) const {
-        return std::any_of(events.begin(), events.end(),
-                           [&](const auto& e) { return e.kind == k && e.key == key; });
+    // The keypad powered on, and the session run for `ms` (200: found, set up and started).
+    void start(std::uint32_t ms = 200) {
+        keypad.power_on(at());
+        run(ms);
     }
 
     // The checker's view of the whole session: the problem kinds, in order.
@@ -96,18 +70,10 @@ struct bench {
         return out;
     }
 
-    millis at() const { return millis{now}; }
-
     // Fault injection for a keypad whose refusals the codec cannot provoke: its next reply for
     // this object becomes an abort with abort_code.
     std::optional<canopen::sdo_address> abort_next;
     canopen::sdo_abort_code abort_code = canopen::sdo_abort_code::general_error;
-
-    virtual_keypad<32> keypad;
-    controller<16, 64> ctl;
-    std::uint32_t now = 0;
-    std::vector<logged> log;
-    std::vector<controller_event> events;
 };
 
 std::string kinds(const std::vector<problem>& ps) {
@@ -151,8 +117,7 @@ TEST_CASE("controller + virtual keypad: start, configure, LEDs, levels, keys, fo
         controller_config cfg;
         cfg.configuration = config;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         CHECK(b.ctl.state() == controller_state::running);
         CHECK(b.keypad.state() == run_state::operational);
         CHECK(b.count(event_kind::found) == 1);
@@ -174,11 +139,11 @@ TEST_CASE("controller + virtual keypad: start, configure, LEDs, levels, keys, fo
         b.run(20);
         CHECK(b.keypad.led_on().red.contains(some_led));
         CHECK(b.keypad.led_blink().green.contains(3));
-        b.ctl.set_brightness(level::make(0x10).value());
-        b.ctl.set_backlight(level::make(0x20).value(), backlight_colour::red);
+        b.ctl.set_brightness(lv(0x10));
+        b.ctl.set_backlight(lv(0x20), backlight_colour::red);
         b.run(50);
-        CHECK(b.keypad.brightness() == level::make(0x10).value());
-        CHECK(b.keypad.backlight().level == level::make(0x20).value());
+        CHECK(b.keypad.brightness() == lv(0x10));
+        CHECK(b.keypad.backlight().level == lv(0x20));
 
         // Key events: press, long press, repeats, release.
         b.keypad.press(1, b.at());
@@ -201,10 +166,9 @@ TEST_CASE("controller + virtual keypad: the keypad reboots mid-session, everythi
     for (const model m : enum_values<model>()) {
         INFO("model " << std::string(to_string(m)));
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.set_led(some_led, colour::green);
-        b.ctl.set_brightness(level::make(0x08).value());
+        b.ctl.set_brightness(lv(0x08));
         b.run(50);
         REQUIRE(b.keypad.led_on().green.contains(some_led));
         b.keypad.power_cycle(b.at());
@@ -214,7 +178,7 @@ TEST_CASE("controller + virtual keypad: the keypad reboots mid-session, everythi
         CHECK(b.count(event_kind::ready) == 2);
         CHECK(b.keypad.state() == run_state::operational);
         CHECK(b.keypad.led_on().green.contains(some_led));
-        CHECK(b.keypad.brightness() == level::make(0x08).value());
+        CHECK(b.keypad.brightness() == lv(0x08));
         CHECK(b.count(event_kind::lost) == 0);
         const auto problems = without_identify(m, b.check(m));
         CHECK_MESSAGE(problems.empty(), kinds(problems));
@@ -225,8 +189,7 @@ TEST_CASE("controller + virtual keypad: the keypad goes silent, is reported lost
     for (const model m : enum_values<model>()) {
         INFO("model " << std::string(to_string(m)));
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.set_led(some_led, colour::red);
         b.keypad.press(2, b.at());
         b.run(50);
@@ -256,20 +219,19 @@ TEST_CASE("controller + virtual keypad: lost frames (an SDO request, a reply, th
         controller_config cfg;
         cfg.configuration = config;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(1);                   // boot-up seen; the 100Bh read is on its way
+        b.start(1);                 // boot-up seen; the 100Bh read is on its way
         b.keypad.drop_received(1);  // ... and the keypad never hears it
         b.run(400);
         CHECK(b.count(event_kind::ready) == 1);  // the retry after 300 ms went through
         CHECK(b.count(event_kind::sdo_timed_out) == 0);
 
         // The keypad's reply to the next request is lost: the controller asks again.
-        b.ctl.set_brightness(level::make(0x21).value());
+        b.ctl.set_brightness(lv(0x21));
         b.keypad.drop_transmitted(1);
         b.run(20);
         b.keypad.drop_transmitted(0);
         b.run(400);
-        CHECK(b.keypad.brightness() == level::make(0x21).value());
+        CHECK(b.keypad.brightness() == lv(0x21));
 
         // The NMT start after a reboot is lost: the keypad's heartbeat says pre-operational and
         // the controller starts it again.
@@ -366,8 +328,7 @@ TEST_CASE("controller + virtual keypad: an SDO abort is reported and the list go
             b.abort_next = canopen::sdo_address{0x1018, 1};
             b.abort_code = canopen::sdo_abort_code::hardware_error;
         }
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         REQUIRE(b.count(event_kind::sdo_aborted) == 1);
         const auto e = *std::find_if(b.events.begin(), b.events.end(), [](const auto& x) {
             return x.kind == event_kind::sdo_aborted;
@@ -396,8 +357,7 @@ TEST_CASE("controller + virtual keypad: the keypad changes node id") {
             continue;
         }
         bench b(m);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.ctl.change_node(node_id::make(0x3A).value());
         b.run(300);
         CHECK(b.count(event_kind::node_changed) == 1);
@@ -441,8 +401,7 @@ TEST_CASE("controller + virtual keypad: any node adopts a keypad at another node
         controller_config cfg;
         cfg.any_node = true;
         bench b(m, cfg, node_id::make(0x30).value());
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         CHECK(b.ctl.node() == node_id::make(0x30).value());
         CHECK(b.ctl.state() == controller_state::running);
         CHECK(b.keypad.state() == run_state::operational);
@@ -457,8 +416,7 @@ TEST_CASE("controller + virtual keypad: active on startup") {
         controller_config cfg;
         cfg.start = start_mode::active_on_startup;
         bench b(m, cfg);
-        b.keypad.power_on(b.at());
-        b.run(200);
+        b.start();
         b.keypad.power_cycle(b.at());
         CHECK(b.keypad.state() == run_state::operational);  // by itself after the power cycle
         b.run(200);
@@ -552,10 +510,10 @@ TEST_CASE(
     // PKP-2400: no brightness PDO, so the LED level goes by SDO (6201h sub 1, PKP 30) right
     // after the NMT start, which fills a one-frame outbox.
     loop<1, 64> l({}, model::pkp2400);
-    l.ctl.set_brightness(level::make(0x10).value());
+    l.ctl.set_brightness(lv(0x10));
     l.keypad.power_on(millis{0});
     l.run(2000);
-    CHECK(l.keypad.brightness() == level::make(0x10).value());
+    CHECK(l.keypad.brightness() == lv(0x10));
 }
 
 TEST_CASE("controller, scripted: replies for another object or out of turn do not end a read") {
@@ -637,8 +595,7 @@ TEST_CASE("controller + virtual keypad: the abort of 1001h is reported with its 
     controller_config cfg;
     cfg.configuration = config;
     bench b(model::pk1000, cfg);
-    b.keypad.power_on(b.at());
-    b.run(3000);
+    b.start(3000);
     REQUIRE(b.count(event_kind::sdo_aborted) == 1);
     const auto e = *std::find_if(b.events.begin(), b.events.end(),
                                  [](const auto& x) { return x.kind == event_kind::sdo_aborted; });

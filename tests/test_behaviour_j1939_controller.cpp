@@ -3,6 +3,7 @@
 // keypad, sends its start-up settings, drives its LEDs and levels, turns its key states into
 // events, notices its restart and its loss, and moves it to another address. Then the first
 // frames it sends, byte for byte.
+#include "behaviour_support.hpp"
 #include "support.hpp"
 
 #include <powerkey/behaviour/j1939_controller.hpp>
@@ -21,62 +22,18 @@
 using namespace powerkey;
 using namespace powerkey::behaviour;
 using powerkey_tests::frame_of;
+using powerkey_tests::lv;
 
 namespace {
 
-// Levels are built with make(): clang 14 crashes generating code for the consteval literal
-// constructor as an argument in these test functions.
-level lv(unsigned v) { return level::make(v).value(); }
-
 // A J1939 controller and a virtual keypad already switched to J1939, on one bus, stepped every
-// millisecond. Every frame on the bus is logged in the candump form.
-struct bench {
+// millisecond.
+struct bench : powerkey_tests::closed_loop<j1939_controller<16, 64>> {
     explicit bench(model m, j1939_controller_config cfg = {})
-        : keypad(m, canopen::default_node_id, keypad_options{true, 0}), ctl(with_model(cfg, m)) {
+        : closed_loop(m, cfg, canopen::default_node_id, keypad_options{true, 0}) {
         keypad.power_on(millis{0});
-        keypad.receive(frame_of("615#2BFF200101000000"), millis{0});
-        while (keypad.transmit()) {
-        }
+        powerkey_tests::switch_to_j1939(keypad, millis{0});
     }
-    static j1939_controller_config with_model(j1939_controller_config c, model m) {
-        c.keypad_model = m;
-        return c;
-    }
-
-    void run(std::uint32_t ms) {
-        for (std::uint32_t i = 0; i < ms; ++i) {
-            ++now;
-            const millis t{now};
-            keypad.advance(t);
-            bool any = false;
-            while (const auto f = keypad.transmit()) {
-                log.emplace_back(can::format_candump(*f).view());
-                ctl.step(*f, t);
-                any = true;
-            }
-            if (!any) ctl.tick(t);
-            while (const auto f = ctl.next_frame()) {
-                log.emplace_back(can::format_candump(*f).view());
-                keypad.receive(*f, t);
-            }
-            while (const auto e = ctl.poll()) events.push_back(*e);
-        }
-    }
-    std::size_t count(event_kind k) const {
-        return static_cast<std::size_t>(std::count_if(events.begin(), events.end(),
-                                                      [k](const auto& e) { return e.kind == k; }));
-    }
-    bool saw(event_kind k, unsigned key) const {
-        return std::any_of(events.begin(), events.end(),
-                           [&](const auto& e) { return e.kind == k && e.key == key; });
-    }
-    millis at() const { return millis{now}; }
-
-    virtual_keypad<32> keypad;
-    j1939_controller<16, 64> ctl;
-    std::uint32_t now = 0;
-    std::vector<std::string> log;
-    std::vector<controller_event> events;
 };
 
 // The models that speak J1939 in the virtual keypad: those with 20FFh (the PKP LI models have
@@ -155,9 +112,9 @@ TEST_CASE("J1939 controller: its first frames, byte for byte") {
     b.run(1);
     // 2Ah to the keypad (section 11); its answer finds it; then 75h 01h 14h (200 ms, section 21),
     // 74h 01h (section 20) and the picture: every LED off, brightness 3Fh, backlight 00h.
-    CHECK(b.log == std::vector<std::string>{"18EF2100#041B2AFFFFFFFFFF"});
+    CHECK(b.candump() == std::vector<std::string>{"18EF2100#041B2AFFFFFFFFFF"});
     b.run(2);
-    CHECK(b.log ==
+    CHECK(b.candump() ==
           std::vector<std::string>{"18EF2100#041B2AFFFFFFFFFF", "18EFFF21#041B2A56322E3130",
                                    "18EF2100#041B750114FFFFFF", "18EF2100#041B7401FFFFFFFF",
                                    "18EF2100#041B0101000000FF", "18EF2100#041B0102000000FF",
@@ -167,7 +124,7 @@ TEST_CASE("J1939 controller: its first frames, byte for byte") {
     // A key press and the heartbeat: the events come from both.
     b.keypad.press(4, b.at());
     b.run(1);
-    CHECK(b.log.back() == "18EFFF21#041B01040121FFFF");
+    CHECK(b.candump().back() == "18EFFF21#041B01040121FFFF");
     CHECK(b.saw(event_kind::key_pressed, 4));
 }
 
@@ -216,14 +173,15 @@ TEST_CASE("J1939 controller: moves the keypad to another address (70h) and follo
     CHECK(b.count(event_kind::node_changed) == 1);
     CHECK(b.ctl.address() == 0x42);
     CHECK(b.keypad.j1939().address() == 0x42);
-    CHECK(std::find(b.log.begin(), b.log.end(), "18EF2100#041B7042FFFFFFFF") != b.log.end());
+    const auto log = b.candump();
+    CHECK(std::find(log.begin(), log.end(), "18EF2100#041B7042FFFFFFFF") != log.end());
     b.keypad.press(6, b.at());
     b.run(1);
-    CHECK(b.log.back() == "18EFFF42#041B01060121FFFF");
+    CHECK(b.candump().back() == "18EFFF42#041B01060121FFFF");
     CHECK(b.saw(event_kind::key_pressed, 6));
     CHECK(b.ctl.set_led(6, j1939::led_colour::blue));
     b.run(5);
-    CHECK(b.log.back() == "18EF4200#041B0106030100FF");
+    CHECK(b.candump().back() == "18EF4200#041B0106030100FF");
     CHECK(b.keypad.j1939().led(6).colour == j1939::led_colour::blue);
     b.run(1000);
     CHECK(b.count(event_kind::lost) == 0);

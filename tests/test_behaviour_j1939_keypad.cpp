@@ -2,6 +2,7 @@
 // the PKP1600SI and PKP2600SI J1939 manuals describe (docs/virtual-keypad.md#j1939). Every frame
 // it sends is compared byte for byte with the manual's example where one is printed; each timer
 // is tested at the millisecond before, at and after its period.
+#include "behaviour_support.hpp"
 #include "support.hpp"
 
 #include <powerkey/behaviour/virtual_keypad.hpp>
@@ -20,6 +21,7 @@ using behaviour::millis;
 using behaviour::run_state;
 using behaviour::virtual_keypad;
 using powerkey_tests::frame_of;
+using powerkey_tests::lv;
 
 namespace {
 
@@ -30,14 +32,9 @@ using strings = std::vector<std::string>;
 virtual_keypad<> in_j1939(model m, millis t = {0}) {
     virtual_keypad<> k(m, canopen::default_node_id, behaviour::keypad_options{true, 0});
     k.power_on(millis{0});
-    k.receive(frame_of("615#2BFF200101000000"), t);
-    while (k.transmit()) {
-    }
+    powerkey_tests::switch_to_j1939(k, t);
     return k;
 }
-
-// A level at run time (clang 14 cannot generate code for the consteval literal inside CHECK).
-level lv(unsigned v) { return level::make(v).value(); }
 
 // What the keypad has sent, oldest first, in the candump form.
 strings drain(virtual_keypad<>& k) {

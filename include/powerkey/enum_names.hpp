@@ -33,6 +33,15 @@ struct enum_names;
 #define POWERKEY_DETAIL_ENUM_NAME(name, ...) {value_type::name, #name},
 // A second name for a value, read as well as the first (which is the one written).
 #define POWERKEY_DETAIL_ENUM_ALIAS(name, alias) {value_type::name, alias},
+// The name table of enum E (its qualified name) from its list, at global scope:
+//   POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::run_state, POWERKEY_BEHAVIOUR_RUN_STATE_LIST);
+#define POWERKEY_DETAIL_ENUM_NAMES(E, LIST)                        \
+    template <>                                                    \
+    struct powerkey::enum_names<E> {                               \
+        using value_type = E;                                      \
+        static constexpr enum_name_entry<value_type> entries[] = { \
+            LIST(POWERKEY_DETAIL_ENUM_NAME)};                      \
+    }
 
 namespace powerkey {}  // namespace powerkey
 

@@ -21,6 +21,7 @@
 #include <powerkey/behaviour/j1939_controller.hpp>
 #include <powerkey/behaviour/j1939_keypad.hpp>
 #include <powerkey/behaviour/key_modes.hpp>
+#include <powerkey/behaviour/key_timing.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
 
 #include <powerkey/can/candump.hpp>

@@ -9,11 +9,8 @@
 //   for (const problem& p : c.finish()) print(p);
 //   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
 //
-// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST: its name, its severity and what it
-// means (problem_kinds[], summary_of()); docs/checker.md gives the manual behaviour each comes
-// from. A `problem` is a fault of the controller or the keypad; a `warning` is a frame the keypads
-// act on that a strict reader would refuse. Counted per kind: count(kind).
-// No heap, no I/O: problems come back as small structs, explain() writes the text.
+// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST; docs/checker.md gives the manual
+// behaviour each comes from. No heap, no I/O: problems are small structs, explain() writes text.
 #ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
 
@@ -54,39 +51,44 @@ namespace powerkey::behaviour {
 // clang-format on
 enum class severity : std::uint8_t { POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-// X(name, severity, what it means); the detail each kind carries in its comment.
+// X(name, severity, what it means, its explanation): the explanation is text with the details
+// in braces: {N} detail N in decimal, {N:xW} in hex of W digits, {N:at} the object index N and
+// sub-index N+1, {N:frame} "frame <id>h of <dlc> bytes" (id N, dlc N+1), {N:abort}, {N:nmt},
+// {N:errc}, {N:model}, {N:form} the name of detail N, {N?a|b} a when detail N is 0, else b. The
+// J1939 kinds are explained by j1939_checks.hpp.
 // clang-format off
 #define POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(X) \
-    X(sdo_overlap, problem, "a request while another is outstanding: the keypad drops it") \
-      /* detail: line of the outstanding request, its index, its sub-index */ \
-    X(sdo_no_reply, problem, "a request never answered within the SDO timeout") \
-      /* detail: index, sub-index, ms waited */ \
-    X(sdo_abort, problem, "the keypad aborted a request") \
-      /* detail: abort code, index, sub-index */ \
-    X(pdo_not_operational, problem, "an RPDO to a keypad that is not operational: it ignores it") \
-      /* detail: COB-ID, NMT state (00h booting, 04h, 7Fh), 0 */ \
-    X(heartbeat_silence, problem, "no heartbeat for longer than the configured period allows") \
-      /* detail: ms silent so far, period ms (1017h), line of the last heartbeat */ \
-    X(key_state_silence, problem, "no key state for longer than the periodic transmission allows") \
-      /* detail: ms silent so far, period ms, line of the last key state */ \
-    X(old_node_traffic, problem, "a frame to the node id the keypad left") \
-      /* detail: COB-ID, old node id, the node id it moved to */ \
-    X(segment_toggle, problem, "a segment request or response with the wrong toggle bit") \
-      /* detail: toggle expected, toggle sent, 0 from the host / 1 the keypad */ \
-    X(segment_size, problem, "a segmented upload whose bytes do not match the size it announced") \
-      /* detail: size announced, bytes received, index */ \
-    X(refused_frame, problem, "a frame to the keypad that the decoder refuses: the keypad does not act on it") \
-      /* detail: the decoder's errc, COB-ID, dlc */ \
-    X(wrong_model, problem, "most keypad frames of the log are refused: the keypad is likely another model") \
-      /* detail: keypad frames refused, keypad frames, the model checked (at the first refused line) */ \
-    X(not_manual_form, warning, "a frame trimmed or padded: the keypads act on it, a strict reader refuses it") \
-      /* detail: COB-ID, dlc, form (frame_form: 1 trimmed, 2 padded) */ \
-    X(j1939_bad_header, problem, "a J1939 frame to the keypad without the 04 1B header, or with a command byte no keypad has") \
-      /* detail: identifier, bytes 0..2, 0 (j1939_checks.hpp) */ \
-    X(j1939_multiple_leds_off, problem, "a J1939 multiple-LED command while LED management (37h) is single LED only") \
-      /* detail: identifier, line of the 37h (0: the default), 0 */ \
-    X(j1939_no_keypad, problem, "a J1939 command to an address no keypad holds") \
-      /* detail: identifier, destination, the keypad's address */
+    X(sdo_overlap, problem, "a request while another is outstanding: the keypad drops it", \
+      "SDO request sent while the request of line {0} ({1:at}) is unanswered: the keypad drops it (one request at a time)") \
+    X(sdo_no_reply, problem, "a request never answered within the SDO timeout", \
+      "SDO request {0:at} never answered ({2} ms without a reply)") \
+    X(sdo_abort, problem, "the keypad aborted a request", \
+      "the keypad aborted {1:at} with {0:x8}h: {0:abort}") \
+    X(pdo_not_operational, problem, "an RPDO to a keypad that is not operational: it ignores it", \
+      "PDO {0:x3}h sent while the keypad is {1:nmt}: it ignores PDOs until an NMT start") \
+    X(heartbeat_silence, problem, "no heartbeat for longer than the configured period allows", \
+      "no heartbeat for {0} ms since line {2}, the configured period is {1} ms") \
+    X(key_state_silence, problem, "no key state for longer than the periodic transmission allows", \
+      "no key state for {0} ms since line {2}, the configured period is {1} ms") \
+    X(old_node_traffic, problem, "a frame to the node id the keypad left", \
+      "frame {0:x3}h to the old node id {1:x2}h: the keypad moved to {2:x2}h and does not answer it") \
+    X(segment_toggle, problem, "a segment request or response with the wrong toggle bit", \
+      "{2?segment request|segment response} with toggle bit {1}, expected {0}" \
+      "{2?: the keypad aborts with 05030000h|: the keypad repeated or skipped a segment}") \
+    X(segment_size, problem, "a segmented upload whose bytes do not match the size it announced", \
+      "segmented upload of {2:x4}h announced {0} bytes and sent {1}") \
+    X(refused_frame, problem, "a frame to the keypad that the decoder refuses: the keypad does not act on it", \
+      "{1:frame} refused ({0:errc}): the keypad does not act on it") \
+    X(wrong_model, problem, "most keypad frames of the log are refused: the keypad is likely another model", \
+      "{0} of {1} keypad frames refused as {2:model} frames: the keypad is likely another model") \
+    X(not_manual_form, warning, "a frame trimmed or padded: the keypads act on it, a strict reader refuses it", \
+      "{0:frame} is {2:form}, not the manual's form: read as the manual's form, as the keypads do") \
+    X(j1939_bad_header, problem, "a J1939 frame to the keypad without the 04 1B header, or with a command byte no keypad has", \
+      "") /* detail: identifier, bytes 0..2, 0 */ \
+    X(j1939_multiple_leds_off, problem, "a J1939 multiple-LED command while LED management (37h) is single LED only", \
+      "") /* detail: identifier, line of the 37h (0: the default), 0 */ \
+    X(j1939_no_keypad, problem, "a J1939 command to an address no keypad holds", \
+      "") /* detail: identifier, destination, the keypad's address */
 // clang-format on
 #define POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR(name, ...) name,
 enum class problem_kind : std::uint8_t {
@@ -101,7 +103,7 @@ struct problem_kind_info {
     std::string_view summary;
 };
 
-#define POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW(name, sev, text) \
+#define POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW(name, sev, text, ...) \
     problem_kind_info{problem_kind::name, severity::sev, text},
 inline constexpr problem_kind_info problem_kinds[] = {
     POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_ROW)};
@@ -307,18 +309,15 @@ private:
         if (why == errc::wrong_id && !canopen::concerns(e.cls, e.node))
             return;  // not the keypad's: another node's, or no keypad function
         count_refused();
-        switch (e.cls.fn) {
-            case canopen::function::nmt:
-            case canopen::function::sdo_rx:
-            case canopen::function::rpdo1:
-            case canopen::function::rpdo2:
-            case canopen::function::rpdo3:
-            case canopen::function::rpdo4:
-                report(line_, problem_kind::refused_frame, static_cast<std::uint32_t>(why),
-                       f.raw_id(), f.size());
-                break;
-            default: break;
-        }
+        if (from_host(e.cls.fn))
+            report(line_, problem_kind::refused_frame, static_cast<std::uint32_t>(why), f.raw_id(),
+                   f.size());
+    }
+    // What the host sends the keypad: NMT, its SDO requests and its RPDOs.
+    static constexpr bool from_host(canopen::function fn) noexcept {
+        using canopen::function;
+        return fn == function::nmt || fn == function::sdo_rx || fn == function::rpdo1 ||
+               fn == function::rpdo2 || fn == function::rpdo3 || fn == function::rpdo4;
     }
 
     constexpr void count_refused() noexcept {
@@ -357,17 +356,8 @@ private:
     constexpr void old_node(const can::frame& f, const canopen::cob_info& c) noexcept {
         if (!old_) return;
         const std::uint8_t o = old_->value();
-        bool to_old = false;
-        switch (c.fn) {
-            case canopen::function::sdo_rx:
-            case canopen::function::rpdo1:
-            case canopen::function::rpdo2:
-            case canopen::function::rpdo3:
-            case canopen::function::rpdo4: to_old = c.node == o; break;
-            case canopen::function::nmt: to_old = f.size() == 2 && f[1] == o; break;
-            default: break;
-        }
-        if (to_old)
+        if (c.fn == canopen::function::nmt ? f.size() == 2 && f[1] == o
+                                           : from_host(c.fn) && c.node == o)
             report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
@@ -459,18 +449,12 @@ private:
         const auto node = session_.node();
         if (const auto* n = std::get_if<canopen::nmt_message>(&msg)) {
             if (n->target.value() != 0 && n->target.value() != node.value()) return;
-            switch (n->command) {
-                case canopen::nmt_command::start: set_state(canopen::nmt_state::operational); break;
-                case canopen::nmt_command::stop:
-                case canopen::nmt_command::legacy_stop:
-                    set_state(canopen::nmt_state::stopped);
-                    break;
-                case canopen::nmt_command::enter_pre_operational:
-                case canopen::nmt_command::reset_node:
-                case canopen::nmt_command::reset_communication:
-                    set_state(canopen::nmt_state::pre_operational);
-                    break;
-            }
+            using cmd = canopen::nmt_command;
+            // A reset (node or communication) ends in pre-operational too.
+            set_state(n->command == cmd::start ? canopen::nmt_state::operational
+                      : n->command == cmd::stop || n->command == cmd::legacy_stop
+                          ? canopen::nmt_state::stopped
+                          : canopen::nmt_state::pre_operational);
             return;
         }
         if (c.node != node.value()) return;
@@ -634,130 +618,73 @@ inline constexpr abort_meaning abort_meanings[] = {
 }
 
 namespace detail {
-constexpr void put_address(text_writer& w, std::uint32_t index, std::uint32_t sub) noexcept {
-    w.put_hex(index, 4);
-    w.put("h/");
-    w.put_decimal(sub);
+#define POWERKEY_BEHAVIOUR_DETAIL_KIND_EXPLANATION(name, sev, text, explanation) explanation,
+inline constexpr std::string_view explanations[] = {
+    POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_EXPLANATION)};
+#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_EXPLANATION
+
+// A name, or what stands for a value without one.
+constexpr void put_name(text_writer& w, std::string_view name, std::string_view unknown) noexcept {
+    w.put(name.empty() ? unknown : name);
 }
-// "frame 615h of 6 bytes" (a 29-bit identifier with 8 digits)
-constexpr void put_frame(text_writer& w, std::uint32_t id, std::uint32_t dlc) noexcept {
-    w.put("frame ");
-    w.put_hex(id, id > 0x7FF ? 8 : 3);
-    w.put("h of ");
-    w.put_decimal(dlc);
-    w.put(dlc == 1 ? " byte" : " bytes");
-}
-constexpr void put_line(text_writer& w, std::uint32_t line) noexcept {
-    w.put("line ");
-    w.put_decimal(line);
+// One {...} of an explanation (POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST): "N", "N:spec" or "N?a|b".
+constexpr void put_field(text_writer& w, std::string_view f,
+                         const std::array<std::uint32_t, 3>& d) noexcept {
+    const auto n = static_cast<std::size_t>(f[0] - '0');
+    const std::uint32_t v = d[n];
+    const std::string_view spec = f.substr(f.size() > 1 ? 2 : 1);
+    if (f.size() == 1) {
+        w.put_decimal(v);
+    } else if (f[1] == '?') {
+        const auto bar = spec.find('|');
+        w.put(v == 0 ? spec.substr(0, bar) : spec.substr(bar + 1));
+    } else if (spec[0] == 'x') {
+        w.put_hex(v, spec[1] - '0');
+    } else if (spec == "at") {
+        w.put_hex(v, 4);
+        w.put("h/");
+        w.put_decimal(d[n + 1]);
+    } else if (spec == "frame") {  // a 29-bit identifier with 8 digits
+        w.put("frame ");
+        w.put_hex(v, v > 0x7FF ? 8 : 3);
+        w.put("h of ");
+        w.put_decimal(d[n + 1]);
+        w.put(d[n + 1] == 1 ? " byte" : " bytes");
+    } else if (spec == "abort") {
+        put_name(w, abort_meaning_of(v), "a code CiA 301 does not define");
+    } else if (spec == "nmt") {
+        put_name(w, to_string(static_cast<canopen::nmt_state>(v)), "not operational");
+    } else if (spec == "errc") {
+        put_name(w, to_string(static_cast<errc>(v)), "an unknown error");
+    } else if (spec == "model") {
+        put_name(w, to_string(static_cast<model>(v)), "this model's");
+    } else if (spec == "form") {
+        put_name(w, to_string(static_cast<frame_form>(v)), "not");
+    }
 }
 }  // namespace detail
 
 // The explanation of p, one sentence without the line number (the caller prints that first).
 constexpr void explain(const problem& p, text_writer& w) noexcept {
-    const auto& d = p.detail;
     switch (p.kind) {
-        case problem_kind::sdo_overlap:
-            w.put("SDO request sent while the request of ");
-            detail::put_line(w, d[0]);
-            w.put(" (");
-            detail::put_address(w, d[1], d[2]);
-            w.put(") is unanswered: the keypad drops it (one request at a time)");
-            break;
-        case problem_kind::sdo_no_reply:
-            w.put("SDO request ");
-            detail::put_address(w, d[0], d[1]);
-            w.put(" never answered (");
-            w.put_decimal(d[2]);
-            w.put(" ms without a reply)");
-            break;
-        case problem_kind::sdo_abort: {
-            w.put("the keypad aborted ");
-            detail::put_address(w, d[1], d[2]);
-            w.put(" with ");
-            w.put_hex(d[0], 8);
-            w.put("h: ");
-            const auto m = abort_meaning_of(d[0]);
-            w.put(m.empty() ? std::string_view{"a code CiA 301 does not define"} : m);
-            break;
-        }
-        case problem_kind::pdo_not_operational: {
-            w.put("PDO ");
-            w.put_hex(d[0], 3);
-            w.put("h sent while the keypad is ");
-            const auto s = to_string(static_cast<canopen::nmt_state>(d[1]));
-            w.put(s.empty() ? std::string_view{"not operational"} : s);
-            w.put(": it ignores PDOs until an NMT start");
-            break;
-        }
-        case problem_kind::heartbeat_silence:
-        case problem_kind::key_state_silence:
-            w.put(p.kind == problem_kind::heartbeat_silence ? "no heartbeat" : "no key state");
-            w.put(" for ");
-            w.put_decimal(d[0]);
-            w.put(" ms since ");
-            detail::put_line(w, d[2]);
-            w.put(", the configured period is ");
-            w.put_decimal(d[1]);
-            w.put(" ms");
-            break;
-        case problem_kind::old_node_traffic:
-            w.put("frame ");
-            w.put_hex(d[0], 3);
-            w.put("h to the old node id ");
-            w.put_hex(d[1], 2);
-            w.put("h: the keypad moved to ");
-            w.put_hex(d[2], 2);
-            w.put("h and does not answer it");
-            break;
-        case problem_kind::segment_toggle:
-            w.put(d[2] == 0 ? "segment request" : "segment response");
-            w.put(" with toggle bit ");
-            w.put_decimal(d[1]);
-            w.put(", expected ");
-            w.put_decimal(d[0]);
-            w.put(d[2] == 0 ? ": the keypad aborts with 05030000h"
-                            : ": the keypad repeated or skipped a segment");
-            break;
-        case problem_kind::segment_size:
-            w.put("segmented upload of ");
-            w.put_hex(d[2], 4);
-            w.put("h announced ");
-            w.put_decimal(d[0]);
-            w.put(" bytes and sent ");
-            w.put_decimal(d[1]);
-            break;
-        case problem_kind::refused_frame: {
-            detail::put_frame(w, d[1], d[2]);
-            w.put(" refused (");
-            const auto why = to_string(static_cast<errc>(d[0]));
-            w.put(why.empty() ? std::string_view{"an unknown error"} : why);
-            w.put("): the keypad does not act on it");
-            break;
-        }
-        case problem_kind::wrong_model: {
-            w.put_decimal(d[0]);
-            w.put(" of ");
-            w.put_decimal(d[1]);
-            w.put(" keypad frames refused as ");
-            const auto m = to_string(static_cast<model>(d[2]));
-            w.put(m.empty() ? std::string_view{"this model's"} : m);
-            w.put(" frames: the keypad is likely another model");
-            break;
-        }
-        case problem_kind::not_manual_form: {
-            detail::put_frame(w, d[0], d[1]);
-            w.put(" is ");
-            const auto how = to_string(static_cast<frame_form>(d[2]));
-            w.put(how.empty() ? std::string_view{"not"} : how);
-            w.put(", not the manual's form: read as the manual's form, as the keypads do");
-            break;
-        }
-        case problem_kind::j1939_bad_header: explain_j1939(j1939_fault::bad_header, d, w); break;
+        case problem_kind::j1939_bad_header:
+            return explain_j1939(j1939_fault::bad_header, p.detail, w);
         case problem_kind::j1939_multiple_leds_off:
-            explain_j1939(j1939_fault::multiple_leds_off, d, w);
-            break;
-        case problem_kind::j1939_no_keypad: explain_j1939(j1939_fault::no_keypad, d, w); break;
+            return explain_j1939(j1939_fault::multiple_leds_off, p.detail, w);
+        case problem_kind::j1939_no_keypad:
+            return explain_j1939(j1939_fault::no_keypad, p.detail, w);
+        default: break;
+    }
+    if (static_cast<std::size_t>(p.kind) >= problem_kind_count) return;
+    const std::string_view text = detail::explanations[static_cast<std::size_t>(p.kind)];
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '{') {
+            w.put(text[i]);
+            continue;
+        }
+        const std::size_t end = text.find('}', i);
+        detail::put_field(w, text.substr(i + 1, end - i - 1), p.detail);
+        i = end;
     }
 }
 
@@ -773,19 +700,7 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
 
 }  // namespace powerkey::behaviour
 
-#define POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME(name, ...) {value_type::name, #name},
-template <>
-struct powerkey::enum_names<powerkey::behaviour::problem_kind> {
-    using value_type = powerkey::behaviour::problem_kind;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST(POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME)};
-};
-#undef POWERKEY_BEHAVIOUR_DETAIL_KIND_NAME
-template <>
-struct powerkey::enum_names<powerkey::behaviour::severity> {
-    using value_type = powerkey::behaviour::severity;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::problem_kind, POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::severity, POWERKEY_BEHAVIOUR_SEVERITY_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_CHECKER_HPP

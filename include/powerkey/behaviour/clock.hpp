@@ -1,6 +1,5 @@
-// powerkey: what every behaviour role (virtual keypad, controller, checker) is stepped with.
-// Roles own no clock and do no I/O: the caller passes the current time to each call and drains
-// the frames a role wants to send from its fixed-capacity outbox.
+// powerkey: what every behaviour role is stepped with. Roles own no clock and do no I/O: the caller
+// passes the time to each call and drains the frames a role sends from its fixed-capacity outbox.
 #ifndef POWERKEY_BEHAVIOUR_CLOCK_HPP
 #define POWERKEY_BEHAVIOUR_CLOCK_HPP
 
@@ -18,14 +17,12 @@ namespace powerkey::behaviour {
 // elapsed(), which are right across the wrap as long as the two points are < 2^31 ms apart.
 struct millis {
     std::uint32_t value = 0;
-
     friend constexpr bool operator==(millis, millis) noexcept = default;
 };
 
 // A span of time in milliseconds.
 struct duration_ms {
     std::uint32_t value = 0;
-
     friend constexpr bool operator==(duration_ms, duration_ms) noexcept = default;
 };
 
@@ -47,32 +44,32 @@ struct duration_ms {
     return !before(now, deadline);
 }
 
-// A fixed-capacity FIFO of frames: a role's outbox. No heap; push() on a full queue refuses
-// (returns false) and counts the frame in dropped(), so a caller that drains too slowly sees it.
-template <std::size_t N>
-class frame_queue {
-    static_assert(N > 0, "a frame_queue holds at least one frame");
+// A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
+// false) and counts the item in dropped(), so a caller that drains too slowly sees it.
+template <class T, std::size_t N>
+class fixed_queue {
+    static_assert(N > 0, "a fixed_queue holds at least one item");
 
 public:
-    [[nodiscard]] constexpr bool push(const can::frame& f) noexcept {
+    [[nodiscard]] constexpr bool push(const T& x) noexcept {
         if (full()) {
             ++dropped_;
             return false;
         }
-        items_[(head_ + size_) % N] = f;
+        items_[(head_ + size_) % N] = x;
         ++size_;
         return true;
     }
-    // The oldest frame, removed; nullopt when empty.
-    [[nodiscard]] constexpr std::optional<can::frame> pop() noexcept {
+    // The oldest item, removed; nullopt when empty.
+    [[nodiscard]] constexpr std::optional<T> pop() noexcept {
         if (size_ == 0) return std::nullopt;
-        const can::frame f = items_[head_];
+        const T f = items_[head_];
         head_ = (head_ + 1) % N;
         --size_;
         return f;
     }
-    // The oldest frame, left in place.
-    [[nodiscard]] constexpr std::optional<can::frame> front() const noexcept {
+    // The oldest item, left in place.
+    [[nodiscard]] constexpr std::optional<T> front() const noexcept {
         if (size_ == 0) return std::nullopt;
         return items_[head_];
     }
@@ -82,15 +79,17 @@ public:
     [[nodiscard]] constexpr bool empty() const noexcept { return size_ == 0; }
     [[nodiscard]] constexpr bool full() const noexcept { return size_ == N; }
     [[nodiscard]] static constexpr std::size_t capacity() noexcept { return N; }
-    // Frames refused by push() because the queue was full, since construction.
+    // Items refused by push() because the queue was full, since construction.
     [[nodiscard]] constexpr std::size_t dropped() const noexcept { return dropped_; }
 
 private:
-    std::array<can::frame, N> items_{};
+    std::array<T, N> items_{};
     std::size_t head_ = 0;
     std::size_t size_ = 0;
     std::size_t dropped_ = 0;
 };
+template <std::size_t N>
+using frame_queue = fixed_queue<can::frame, N>;
 
 }  // namespace powerkey::behaviour
 

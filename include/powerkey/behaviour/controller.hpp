@@ -10,32 +10,15 @@
 //       c.set_led(3, colour::green);                  // sent when it changes, refreshed, resent
 //   }
 //
-// What it does, and where the manuals say so (docs/controller.md has the whole list):
-//   - finds the keypad by its boot-up or heartbeat (PK1000 8, 9, 29; PKP 8, 9, 17), or by probing
-//     its SDO server when it booted before the host did;
-//   - reads the model id 100Bh (PK1000 35 "PK1000", PKP 22 "PKU2400") and takes the model it
-//     names (model_from_report), else keeps the configured one;
-//   - runs the setup and the caller's configuration list through the SDO server one request at a
-//     time (a keypad drops a request that arrives while it still owes a reply), with a timeout,
-//     retries and the keypad's abort reported;
-//   - starts the keypad with NMT start (PK1000 4, PKP 4), optionally also setting it active on
-//     startup (PK1000 2012h section 22, PKP command 10h 13 d), and starts it again whenever its
-//     heartbeat says it is not operational (PK1000 28 note 2: a keypad whose consumer heartbeat
-//     timed out turns its LEDs off and waits in pre-operational for a new NMT start);
-//   - keeps a shadow of the LEDs (RPDO1/2: PK1000 12, 13; PKP 11, 12), the LED brightness and the
-//     backlight (PK1000 RPDO3/4 sections 14, 15; PKP 6201h section 30 and command 04h 13 c),
-//     sends it when it changes, refreshes the LED PDOs periodically, and sends everything again
-//     after the keypad rebooted or was started again (a rebooted keypad shows its defaults);
-//   - reports a lost keypad when it heard nothing from it (heartbeat, key state, SDO reply) for
-//     longer than configured, so that the application can go to a safe state;
-//   - turns key-state PDOs (PK1000 11, PKP 10) into key events: press, release, long press and
-//     repeat, with the caller's times;
-//   - follows a node-id change it is asked for: the reply from the new id (PK1000 2013h section
-//     23) or from the old id and a boot-up from the new one (PKP command 70h, 13 h).
+// It finds the keypad (boot-up, heartbeat, or an SDO probe), identifies it (100Bh), runs the setup
+// and the caller's configuration one SDO request at a time, starts it, keeps a shadow of its LEDs,
+// brightness and backlight, reports it lost, turns its key states into key events and follows a
+// node-id change: docs/controller.md lists each behaviour with the manual section it comes from.
 #ifndef POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 #define POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 
 #include <powerkey/behaviour/clock.hpp>
+#include <powerkey/behaviour/key_timing.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/canopen/cob_id.hpp>
 #include <powerkey/canopen/heartbeat.hpp>
@@ -152,13 +135,9 @@ enum class controller_state : std::uint8_t {
 };
 
 // The most events one call (step() or tick()) reports for a keypad with `keys` keys: each key
-// at most twice (pressed or released; or, held, its long press and a repeat), and at most 13
-// others: found, rebooted or lost; ready; node_changed; 3 answers to SDO requests (one the frame
-// brings, one timeout in setup and one after it); 3 refused setup requests (identify, heartbeat,
-// active on startup) and 4 refused running ones (node change, brightness, backlight level and
-// colour). A refused configuration entry, and the ready that ends the setup, are reported only
-// when the queue has room: the setup waits for the next call otherwise. An application that polls
-// after every call loses no event when EventCapacity is at least this for the model it runs.
+// twice and 13 others (docs/controller.md, "Events"). A queue of at least this many loses no event
+// when the application polls after every call; a refused configuration entry and the ready that
+// ends the setup wait for room rather than being dropped.
 [[nodiscard]] constexpr std::size_t events_per_call(std::size_t keys) noexcept {
     return 2 * keys + 13;
 }
@@ -200,15 +179,13 @@ public:
     [[nodiscard]] constexpr frame_queue<OutboxCapacity>& outbox() noexcept { return outbox_; }
     // The next event, oldest first.
     [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
-        if (events_size_ == 0) return std::nullopt;
-        const controller_event e = events_[events_head_];
-        events_head_ = (events_head_ + 1) % EventCapacity;
-        --events_size_;
-        return e;
+        return events_.pop();
     }
     // Events refused because the queue was full: the application polled too slowly, or one call
     // reported more than EventCapacity (see events_per_call).
-    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept { return events_dropped_; }
+    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept {
+        return events_.dropped();
+    }
     [[nodiscard]] static constexpr std::size_t event_capacity() noexcept { return EventCapacity; }
 
     // --- what the application shows ---------------------------------------------------------
@@ -274,7 +251,7 @@ public:
     [[nodiscard]] constexpr std::optional<canopen::nmt_state> keypad_state() const noexcept {
         return keypad_state_;
     }
-    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
+    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_.held(); }
     [[nodiscard]] constexpr const leds& led_on() const noexcept { return on_; }
     [[nodiscard]] constexpr const leds& led_blink() const noexcept { return blink_; }
     // The text of the last string read (100Bh ...), up to 16 bytes.
@@ -300,14 +277,10 @@ private:
 
     // --- events -----------------------------------------------------------------------------
 
+    // A full queue refuses the event and counts it (events_dropped).
     constexpr void emit(controller_event e) noexcept {
-        if (events_size_ == EventCapacity) {
-            ++events_dropped_;
-            return;
-        }
-        e.node = node_;
-        events_[(events_head_ + events_size_) % EventCapacity] = e;
-        ++events_size_;
+        if (!events_.full()) e.node = node_;  // (stamped only when kept: smaller firmware)
+        (void)events_.push(e);
     }
     constexpr void emit(event_kind k) noexcept { emit(controller_event{k}); }
     constexpr void emit_key(event_kind k, unsigned key) noexcept {
@@ -481,37 +454,12 @@ private:
     // --- keys -------------------------------------------------------------------------------
 
     constexpr void on_keys(key_set now_pressed) noexcept {
-        for (unsigned k = 1; k <= info_->keys; ++k) {
-            const bool was = keys_.contains(k), is = now_pressed.contains(k);
-            if (is && !was) {
-                pressed_at_[k - 1] = now_;
-                next_repeat_[k - 1] = now_ + cfg_.repeat_delay;
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ & ~(1u << (k - 1)));
-                emit_key(event_kind::key_pressed, k);
-            } else if (was && !is) {
-                emit_key(event_kind::key_released, k);
-            }
-        }
-        keys_ = now_pressed;
+        keys_.update(now_pressed, info_->keys, now_, cfg_,
+                     [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
-
     constexpr void key_timers() noexcept {
-        for (unsigned k : keys_) {
-            if (k > info_->keys) continue;
-            const auto bit = static_cast<std::uint16_t>(1u << (k - 1));
-            if (cfg_.long_press.value != 0 && (long_sent_ & bit) == 0 &&
-                reached(pressed_at_[k - 1] + cfg_.long_press, now_)) {
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ | bit);
-                emit_key(event_kind::key_long_press, k);
-            }
-            if (cfg_.repeat_delay.value != 0 && reached(next_repeat_[k - 1], now_)) {
-                emit_key(event_kind::key_repeat, k);
-                const duration_ms p =
-                    cfg_.repeat_period.value != 0 ? cfg_.repeat_period : cfg_.repeat_delay;
-                next_repeat_[k - 1] = next_repeat_[k - 1] + p;
-                if (reached(next_repeat_[k - 1], now_)) next_repeat_[k - 1] = now_ + p;
-            }
-        }
+        keys_.tick(info_->keys, now_, cfg_,
+                   [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
 
     // Keys held when the keypad went away are released for the application.
@@ -596,14 +544,14 @@ private:
                                         : max_configuration;
         while (list_pos_ < entries) {
             // A refused entry is an event: with the queue full, the setup waits for a poll.
-            if (events_size_ == EventCapacity) return;
+            if (events_.full()) return;
             const auto i = list_pos_++;
             if (begin_job(cfg_.configuration[i], sdo_origin::configuration,
                           static_cast<std::uint16_t>(i)))
                 return;
         }
         if (cfg_.configuration.size() > max_configuration && !list_cut_said_) {
-            if (events_size_ == EventCapacity) return;
+            if (events_.full()) return;
             list_cut_said_ = true;
             controller_event e{event_kind::sdo_refused};
             e.step = static_cast<std::uint16_t>(max_configuration);
@@ -611,7 +559,7 @@ private:
             emit(e);
         }
         // Ready is an event too: it waits for room as the refusals do.
-        if (events_size_ == EventCapacity) return;
+        if (events_.full()) return;
         // Set up: start it and show the picture.
         done_setup_once_ = true;
         state_ = controller_state::running;
@@ -812,46 +760,18 @@ private:
     std::uint8_t dirty_ = dirty_all;
 
     // Keys.
-    key_set keys_{};
-    std::array<millis, key_set::max> pressed_at_{};
-    std::array<millis, key_set::max> next_repeat_{};
-    std::uint16_t long_sent_ = 0;
+    key_timing<event_kind> keys_{};
 
     frame_queue<OutboxCapacity> outbox_{};
-    std::array<controller_event, EventCapacity> events_{};
-    std::size_t events_head_ = 0;
-    std::size_t events_size_ = 0;
-    std::size_t events_dropped_ = 0;
+    fixed_queue<controller_event, EventCapacity> events_{};
 };
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::event_kind> {
-    using value_type = powerkey::behaviour::event_kind;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_EVENT_KIND_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::sdo_origin> {
-    using value_type = powerkey::behaviour::sdo_origin;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::controller_state> {
-    using value_type = powerkey::behaviour::controller_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct powerkey::enum_names<powerkey::behaviour::start_mode> {
-    using value_type = powerkey::behaviour::start_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::event_kind, POWERKEY_BEHAVIOUR_EVENT_KIND_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::sdo_origin, POWERKEY_BEHAVIOUR_SDO_ORIGIN_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::controller_state,
+                           POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::start_mode, POWERKEY_BEHAVIOUR_START_MODE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_CONTROLLER_HPP

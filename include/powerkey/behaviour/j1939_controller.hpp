@@ -31,6 +31,7 @@
 
 #include <powerkey/behaviour/clock.hpp>
 #include <powerkey/behaviour/controller.hpp>
+#include <powerkey/behaviour/key_timing.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/keypad/j1939_messages.hpp>
@@ -89,13 +90,11 @@ public:
         return outbox_.pop();
     }
     [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
-        if (events_size_ == 0) return std::nullopt;
-        const controller_event e = events_[events_head_];
-        events_head_ = (events_head_ + 1) % EventCapacity;
-        --events_size_;
-        return e;
+        return events_.pop();
     }
-    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept { return events_dropped_; }
+    [[nodiscard]] constexpr std::size_t events_dropped() const noexcept {
+        return events_.dropped();
+    }
 
     // --- what the application shows ---------------------------------------------------------
 
@@ -136,7 +135,7 @@ public:
     [[nodiscard]] constexpr controller_state state() const noexcept { return state_; }
     [[nodiscard]] constexpr std::uint8_t address() const noexcept { return address_; }
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return cfg_.keypad_model; }
-    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
+    [[nodiscard]] constexpr key_set keys() const noexcept { return keys_.held(); }
     [[nodiscard]] constexpr j1939::led_look led(unsigned k) const noexcept {
         return k >= 1 && k <= 16 ? wanted_[k - 1] : j1939::led_look{};
     }
@@ -148,14 +147,9 @@ private:
     }
 
     constexpr void emit(event_kind k, unsigned key = 0) noexcept {
-        if (events_size_ == EventCapacity) {
-            ++events_dropped_;
-            return;
-        }
         controller_event e{k};
         e.key = static_cast<std::uint8_t>(key);
-        events_[(events_head_ + events_size_) % EventCapacity] = e;
-        ++events_size_;
+        (void)events_.push(e);
     }
 
     // --- received frames --------------------------------------------------------------------
@@ -180,7 +174,7 @@ private:
             begin_setup();
         }
         if (contact != nullptr) {
-            key_set s = keys_;
+            key_set s = keys_.held();
             if (contact->pressed)
                 s.insert(contact->key);
             else
@@ -194,34 +188,11 @@ private:
     // --- keys (as the CANopen controller's) ------------------------------------------------
 
     constexpr void on_keys(key_set now_pressed) noexcept {
-        for (unsigned k = 1; k <= row_.keys; ++k) {
-            const bool was = keys_.contains(k), is = now_pressed.contains(k);
-            if (is && !was) {
-                pressed_at_[k - 1] = now_;
-                next_repeat_[k - 1] = now_ + cfg_.repeat_delay;
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ & ~bit(k));
-                emit(event_kind::key_pressed, k);
-            } else if (was && !is) {
-                emit(event_kind::key_released, k);
-            }
-        }
-        keys_ = key_set::from_mask(now_pressed.mask() & powerkey::detail::low_bits(row_.keys));
+        keys_.update(key_set::from_mask(now_pressed.mask() & powerkey::detail::low_bits(row_.keys)),
+                     row_.keys, now_, cfg_, [this](event_kind k, unsigned key) { emit(k, key); });
     }
     constexpr void key_timers() noexcept {
-        for (unsigned k : keys_) {
-            if (cfg_.long_press.value != 0 && (long_sent_ & bit(k)) == 0 &&
-                reached(pressed_at_[k - 1] + cfg_.long_press, now_)) {
-                long_sent_ = static_cast<std::uint16_t>(long_sent_ | bit(k));
-                emit(event_kind::key_long_press, k);
-            }
-            if (cfg_.repeat_delay.value != 0 && reached(next_repeat_[k - 1], now_)) {
-                emit(event_kind::key_repeat, k);
-                const duration_ms p =
-                    cfg_.repeat_period.value != 0 ? cfg_.repeat_period : cfg_.repeat_delay;
-                next_repeat_[k - 1] = next_repeat_[k - 1] + p;
-                if (reached(next_repeat_[k - 1], now_)) next_repeat_[k - 1] = now_ + p;
-            }
-        }
+        keys_.tick(row_.keys, now_, cfg_, [this](event_kind k, unsigned key) { emit(k, key); });
     }
     constexpr void release_all() noexcept { on_keys(key_set{}); }
 
@@ -329,31 +300,28 @@ private:
             dirty_leds_ = static_cast<std::uint16_t>(dirty_leds_ & ~bit(k));
         }
         using cc = j1939::command_code;
-        if ((dirty_ & dirty_brightness) != 0) {
-            if (brightness_) {
-                j1939::command c = to_keypad();
-                c.code = cc::set_led_brightness;
-                c.level = *brightness_;
-                if (!send(c)) return;
-            }
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
-        }
-        if ((dirty_ & dirty_level) != 0) {
-            if (backlight_) {
-                j1939::command c = to_keypad();
-                c.code = cc::set_backlight_level;
-                c.level = *backlight_;
-                if (!send(c)) return;
-            }
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_level);
-        }
-        if ((dirty_ & dirty_colour) != 0) {
+        if (!send_level(dirty_brightness, cc::set_led_brightness, brightness_) ||
+            !send_level(dirty_level, cc::set_backlight_level, backlight_) ||
+            (dirty_ & dirty_colour) == 0)
+            return;
+        j1939::command c = to_keypad();
+        c.code = cc::set_default_backlight_colour;
+        c.colour = colour_;
+        if (send(c)) dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_colour);
+    }
+    // A level whose dirty bit is set, sent by `code` when there is one; false when the outbox is
+    // full (the bit stays: sent at the next call).
+    constexpr bool send_level(std::uint8_t bit, j1939::command_code code,
+                              const std::optional<level>& l) noexcept {
+        if ((dirty_ & bit) == 0) return true;
+        if (l) {
             j1939::command c = to_keypad();
-            c.code = cc::set_default_backlight_colour;
-            c.colour = colour_;
-            if (!send(c)) return;
-            dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_colour);
+            c.code = code;
+            c.level = *l;
+            if (!send(c)) return false;
         }
+        dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
+        return true;
     }
 
     constexpr j1939::command to_keypad() const noexcept {
@@ -389,16 +357,10 @@ private:
     backlight_colour colour_ = backlight_colour::keep;
     std::uint8_t dirty_ = 0;
 
-    key_set keys_{};
-    std::array<millis, key_set::max> pressed_at_{};
-    std::array<millis, key_set::max> next_repeat_{};
-    std::uint16_t long_sent_ = 0;
+    key_timing<event_kind> keys_{};
 
     frame_queue<OutboxCapacity> outbox_{};
-    std::array<controller_event, EventCapacity> events_{};
-    std::size_t events_head_ = 0;
-    std::size_t events_size_ = 0;
-    std::size_t events_dropped_ = 0;
+    fixed_queue<controller_event, EventCapacity> events_{};
 };
 
 }  // namespace powerkey::behaviour

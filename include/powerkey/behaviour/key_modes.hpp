@@ -67,13 +67,10 @@ public:
         auto& s = state_[k - 1];
         const std::uint8_t before = s;
         if (e.kind == event_kind::key_pressed) {
-            switch (modes_[k - 1]) {
-                case key_mode::momentary: s = 1; break;
-                case key_mode::toggle: s = s == 0 ? 1 : 0; break;
-                case key_mode::cycle:
-                    s = static_cast<std::uint8_t>(s + 1u >= states_[k - 1] ? 0u : s + 1u);
-                    break;
-            }
+            // A toggle is a cycle of 2 states.
+            s = static_cast<std::uint8_t>(modes_[k - 1] == key_mode::momentary ? 1u
+                                          : s + 1u >= states_[k - 1]           ? 0u
+                                                                               : s + 1u);
         } else if (e.kind == event_kind::key_released && modes_[k - 1] == key_mode::momentary) {
             s = 0;
         }
@@ -89,11 +86,6 @@ private:
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::key_mode> {
-    using value_type = powerkey::behaviour::key_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_KEY_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::key_mode, POWERKEY_BEHAVIOUR_KEY_MODE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_KEY_MODES_HPP

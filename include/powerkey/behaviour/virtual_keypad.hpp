@@ -151,14 +151,9 @@ public:
         if (id == 0x080) return on_sync(f, t);
         if ((id & 0x780) == 0x700) return on_heartbeat(f, t);
         if ((id & 0x7F) != node_.value()) return;
-        switch (id & 0x780) {
-            case 0x200:
-            case 0x300:
-            case 0x400:
-            case 0x500: return on_rpdo(f, t);
-            case 0x600: return on_sdo(f, t);
-            default: return;
-        }
+        const std::uint32_t fn = id & 0x780;
+        if (fn >= 0x200 && fn <= 0x500) return on_rpdo(f, t);
+        if (fn == 0x600) return on_sdo(f, t);
     }
 
     // Runs the timers up to t: a due SDO reply, the heartbeat producer (1017h), the heartbeat
@@ -370,8 +365,6 @@ private:
             factory_defaults();
             restore_pending_ = false;
         }
-        node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
-        baud_ = effective_baud();
         on_ = {};
         blink_ = {};
         brightness_ = powerkey::level::make(value(object::default_led_brightness))
@@ -380,28 +373,20 @@ private:
                                .value_or(powerkey::level{0});
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         // keys_ stay: a key held through a reboot is still held
-        rpdo_buffer_ = {};
-        sync_count_ = 0;
-        monitoring_ = false;
-        pending_.reset();
-        upload_ = {};
         boot_time_ = t;
         if (value(object::protocol_j1939) != 0 && info_->j1939) {
-            state_ = run_state::j1939;
+            reset_communication(t, run_state::j1939);
             j1939_.boot(t, keys_, false, sink());
             return;
         }
-        state_ = value(object::active_on_startup) != 0 ? run_state::operational
-                                                       : run_state::pre_operational;
-        restart_timers(t);
-        // "If a CANopen device starts with a heartbeat producer time unequal to 0 the boot-up
-        // message is regarded as first heartbeat message" (PK1000 29, PKP 9).
-        if (value(object::boot_up) != 0) send_heartbeat(0x00);
+        reset_communication(t, value(object::active_on_startup) != 0 ? run_state::operational
+                                                                     : run_state::pre_operational);
     }
-    // Reset communication (CiA 301 7.3.2.2.1): the pending node id and baud rate take effect and
-    // the boot-up goes out; the application (LEDs, levels) keeps its state (inferred: the manuals
-    // do not print 82h).
-    constexpr void reset_communication(millis t) noexcept {
+    // Reset communication (CiA 301 7.3.2.2.1), alone or as part of a boot: the pending node id
+    // and baud rate take effect and the boot-up goes out; the application (LEDs, levels) keeps
+    // its state (inferred: the manuals do not print 82h).
+    constexpr void reset_communication(millis t,
+                                       run_state to = run_state::pre_operational) noexcept {
         node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
         baud_ = effective_baud();
         rpdo_buffer_ = {};
@@ -409,8 +394,11 @@ private:
         monitoring_ = false;
         pending_.reset();
         upload_ = {};
-        state_ = run_state::pre_operational;
+        state_ = to;
+        if (to == run_state::j1939) return;
         restart_timers(t);
+        // "If a CANopen device starts with a heartbeat producer time unequal to 0 the boot-up
+        // message is regarded as first heartbeat message" (PK1000 29, PKP 9).
         if (value(object::boot_up) != 0) send_heartbeat(0x00);
     }
     // 2010h codes 01h and 05h are "Reserved (force to 125k)" (PK1000 20).
@@ -451,11 +439,7 @@ private:
         }
     }
     constexpr std::uint8_t nmt_byte() const noexcept {
-        switch (state_) {
-            case run_state::operational: return 0x05;
-            case run_state::stopped: return 0x04;
-            default: return 0x7F;
-        }
+        return state_ == run_state::operational ? 0x05 : state_ == run_state::stopped ? 0x04 : 0x7F;
     }
 
     // Heartbeat consumer (PK1000 28): 1016h sub 1 = period (bits 0..15) and producer (16..23).
@@ -590,9 +574,7 @@ private:
         if (info(row->id).kind == value_kind::none)
             return abort(a, canopen::sdo_abort_code::object_does_not_exist, t);
         if (!row->readable()) return abort(a, canopen::sdo_abort_code::write_only, t);
-        can::payload p{};
-        powerkey::detail::store_le<2>(p, 1, a.index);
-        p[3] = a.subindex;
+        can::payload p = sdo_payload(0, a);
         const unsigned size = size_of(*row);
         if (size == 0) {
             const auto s = info_->string_of(row->id);
@@ -651,30 +633,23 @@ private:
             static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
         after_reply then = after_reply::none;
         if (const auto code = check_and_apply(*row, f, v, then, t)) return abort(a, *code, t);
-        can::payload p{};
-        p[0] = 0x60;
-        p[1] = f[1];
-        p[2] = f[2];
-        p[3] = f[3];
         if (row->id == object::node_id && info_->replies_from_new_id) {
             // PK1000 23: the acknowledgement already comes from the new id
             node_ = canopen::node_id::make(v).value();
         }
-        reply(p, t, then);
+        reply(sdo_payload(0x60, a), t, then);
     }
 
     // Checks a written value against its row as the codec does (its kind's check,
     // value_kinds.hpp) and applies it; the abort code when refused. An LED object's value is
     // merged into its map (the LEDs its kind covers); the command module runs its command.
-    constexpr std::optional<canopen::sdo_abort_code> check_and_apply(const object_row& r,
-                                                                     const can::frame& f,
-                                                                     std::uint32_t v,
-                                                                     after_reply& then,
-                                                                     millis t) noexcept {
+    using refusal = std::optional<canopen::sdo_abort_code>;
+    constexpr refusal check_and_apply(const object_row& r, const can::frame& f, std::uint32_t v,
+                                      after_reply& then, millis t) noexcept {
         const value_kind kind = info(r.id).kind;
-        if (kind == value_kind::commands) return command(f, then, t);
+        if (kind == value_kind::commands) return command(f, then);
         const auto& c = codec_row_of(r);
-        std::optional<canopen::sdo_abort_code> refused;
+        refusal refused;
         const bool led = visit_kind(kind, [&](auto k) {
             using K = decltype(k);
             const auto size = static_cast<std::uint8_t>(size_of(r));
@@ -718,49 +693,42 @@ private:
     }
 
     // The PKP command module, 6500h sub 1 (PKP 13 a-m).
-    constexpr std::optional<canopen::sdo_abort_code> command(const can::frame& f, after_reply& then,
-                                                             millis) noexcept {
+    constexpr refusal command(const can::frame& f, after_reply& then) noexcept {
         const auto m = powerkey::decode(f, node_, model_);
         const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
         if (c == nullptr) return canopen::sdo_abort_code::invalid_value;
+        using cc = command_code;
+        const auto stored = [&](object o, std::uint32_t v) { value_[idx(o)] = v; };
         switch (c->code) {
-            case command_code::set_led_state: set_led_state(c->key, c->state); break;
-            case command_code::set_led_brightness: brightness_ = c->level; break;
-            case command_code::set_backlight_level: backlight_.level = c->level; break;
-            case command_code::set_backlight_colour: backlight_.colour = c->colour; break;
-            case command_code::set_active_on_startup:
-                value_[idx(object::active_on_startup)] = c->enabled ? 1 : 0;
+            case cc::set_led_state: set_led_state(c->key, c->state); break;
+            case cc::set_led_brightness: brightness_ = c->level; break;
+            case cc::set_backlight_level: backlight_.level = c->level; break;
+            case cc::set_backlight_colour: backlight_.colour = c->colour; break;
+            case cc::set_active_on_startup: stored(object::active_on_startup, c->enabled); break;
+            case cc::set_baud_rate:
+                stored(object::baud_rate, static_cast<unsigned>(c->baud));
                 break;
-            case command_code::set_baud_rate:
-                value_[idx(object::baud_rate)] = static_cast<std::uint32_t>(c->baud);
-                break;
-            case command_code::set_periodic_transmission:  // PKP 13 f: period x 10 ms
-                value_[idx(object::tpdo1_event_timer)] =
-                    c->enabled ? std::uint32_t{c->period_10ms} * 10u : 0u;
+            case cc::set_periodic_transmission:  // PKP 13 f: period x 10 ms
+                stored(object::tpdo1_event_timer, c->enabled ? c->period_10ms * 10u : 0u);
                 next_periodic_ = now_ + duration_ms{periodic_ms()};
                 break;
-            case command_code::set_boot_up:
-                value_[idx(object::boot_up)] = c->enabled ? 1 : 0;
+            case cc::set_boot_up: stored(object::boot_up, c->enabled); break;
+            case cc::set_startup_show:
+                stored(object::startup_show, static_cast<unsigned>(c->show));
                 break;
-            case command_code::set_startup_show:
-                value_[idx(object::startup_show)] = static_cast<std::uint32_t>(c->show);
-                break;
-            case command_code::set_node_id:  // PKP 13 h: reply from the old id, then boot-up
-                value_[idx(object::node_id)] = c->node_id.value();
+            case cc::set_node_id:  // PKP 13 h: reply from the old id, then boot-up
+                stored(object::node_id, c->node_id.value());
                 then = after_reply::reboot;
                 break;
-            case command_code::set_demo_mode:
-                value_[idx(object::demo_mode)] = c->enabled ? 1 : 0;
+            case cc::set_demo_mode: stored(object::demo_mode, c->enabled); break;
+            case cc::set_default_backlight_level:
+                stored(object::default_backlight_level, c->level.value());
                 break;
-            case command_code::set_default_backlight_level:
-                value_[idx(object::default_backlight_level)] = c->level.value();
+            case cc::set_default_led_brightness:
+                stored(object::default_led_brightness, c->level.value());
                 break;
-            case command_code::set_default_led_brightness:
-                value_[idx(object::default_led_brightness)] = c->level.value();
-                break;
-            case command_code::set_default_backlight_colour:
-                value_[idx(object::default_backlight_colour)] =
-                    static_cast<std::uint32_t>(c->colour);
+            case cc::set_default_backlight_colour:
+                stored(object::default_backlight_colour, static_cast<unsigned>(c->colour));
                 break;
         }
         return std::nullopt;
@@ -793,11 +761,15 @@ private:
 
     // --- sending ------------------------------------------------------------------------------
 
-    constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
-        can::payload p{};
-        p[0] = 0x80;
+    // An SDO reply's first four bytes: the command specifier and the object's address.
+    static constexpr can::payload sdo_payload(std::uint8_t cs, canopen::sdo_address a) noexcept {
+        can::payload p{cs};
         powerkey::detail::store_le<2>(p, 1, a.index);
         p[3] = a.subindex;
+        return p;
+    }
+    constexpr void abort(canopen::sdo_address a, canopen::sdo_abort_code c, millis t) noexcept {
+        can::payload p = sdo_payload(0x80, a);
         powerkey::detail::store_le<4>(p, 4, static_cast<std::uint32_t>(c));
         reply(p, t);
     }
@@ -894,11 +866,6 @@ private:
 
 }  // namespace powerkey::behaviour
 
-template <>
-struct powerkey::enum_names<powerkey::behaviour::run_state> {
-    using value_type = powerkey::behaviour::run_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BEHAVIOUR_RUN_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::run_state, POWERKEY_BEHAVIOUR_RUN_STATE_LIST);
 
 #endif  // POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
