@@ -18,10 +18,12 @@
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
 #define POWERKEY_DETAIL_SIZE true
+#define POWERKEY_DETAIL_SIZE_SHARED [[gnu::noinline]]
 #else
 #define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
 #define POWERKEY_DETAIL_COLD [[gnu::noinline]]
 #define POWERKEY_DETAIL_SIZE false
+#define POWERKEY_DETAIL_SIZE_SHARED
 #endif
 #else
 #define POWERKEY_DETAIL_INLINE
@@ -29,6 +31,16 @@
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
 #define POWERKEY_DETAIL_SIZE false
+#define POWERKEY_DETAIL_SIZE_SHARED
+#endif
+
+// POWERKEY_DETAIL_FLATTEN: an entry point whose model is a template argument (j1939::decode<M>)
+// inlines the whole engine it calls, so that every read of the model's row is a constant and the
+// paths the model never takes drop out, at every optimisation level (-Os included).
+#if defined(__GNUC__)
+#define POWERKEY_DETAIL_FLATTEN [[gnu::flatten]]
+#else
+#define POWERKEY_DETAIL_FLATTEN
 #endif
 
 // Tells g++ and clang that `condition` is false here (a row number a key matched is never the

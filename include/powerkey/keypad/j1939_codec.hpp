@@ -436,7 +436,9 @@ constexpr result<M> address_claimed_of(const model_row& r, const route& at, std:
 
 constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t destination,
                               std::uint8_t source, std::uint64_t data) noexcept {
-    // Every PGN here is PDU1 with a zero low byte: make_id cannot fail.
+    // Every PGN here is PDU1 with a zero low byte and a priority is 0..7: make_id cannot fail (said
+    // to the compiler, so that no error path is built).
+    POWERKEY_DETAIL_ASSUME_NOT(priority.value() > 7);
     const auto id = make_id({priority, p, destination, source}).value();
     can::payload bytes{};
     powerkey::detail::store_le<8>(bytes, 0, data);
@@ -521,19 +523,19 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
 // with building the frame and reading it back, over every model and many values of every field.
 
 // decode's first test of a frame's identifier when narrowed: from the keypad or to it.
-constexpr errc front(const route& at, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc front(const route& at, keypad_address keypad) noexcept {
     return keypad && at.source != *keypad && at.destination != *keypad ? errc::wrong_id : errc{};
 }
 template <class T>
-constexpr route route_of(const T& v) noexcept {
+POWERKEY_DETAIL_INLINE constexpr route route_of(const T& v) noexcept {
     return {v.priority, v.destination, v.source};
 }
 
 // A command 01h frame w up to its fields: the route, the direction decode reads it in (`led`),
 // the model's word on that direction and the reserved bytes of that layout (command_01_of,
 // key_contact_of, set_led_of).
-constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w, keypad_address keypad,
-                        bool& led) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w,
+                                               keypad_address keypad, bool& led) noexcept {
     if (const errc e = front(at, keypad); e != errc{}) return e;
     led = is_led_command(r, at, w, keypad);
     if (led) {
@@ -545,37 +547,41 @@ constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w, ke
     return ff_from(w, 6) ? errc{} : errc::reserved_not_ff;
 }
 // The fields of each layout of 01h, as decode checks them.
-constexpr bool key_contact_fits(const key_contact& v) noexcept {
+POWERKEY_DETAIL_INLINE constexpr bool key_contact_fits(const key_contact& v) noexcept {
     return v.key >= 1 && v.key <= 16 && v.identifier != 0xFF;
 }
-constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
+POWERKEY_DETAIL_INLINE constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
     return has_led(r, v.key) && is_colour(raw(v.colour)) && raw(v.mode) <= 3 &&
            is_secondary(raw(v.secondary));
 }
 
-constexpr errc own_check(const model_row& r, const key_contact& v, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const key_contact& v,
+                                                keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return !led && key_contact_fits(v) ? errc{} : errc::value_out_of_range;
 }
-constexpr errc own_check(const model_row& r, const set_led& v, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const set_led& v,
+                                                keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return led && r.form == led_form::si && set_led_fits(r, v) ? errc{} : errc::value_out_of_range;
 }
-constexpr errc own_check(const model_row& r, const set_led_code& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const set_led_code& v,
+                                                keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return led && r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
 }
 
 // The heartbeat: key bits above the model's keys are reserved (0); a key above 16 has no bit.
-constexpr errc heartbeat_keys(const model_row& r, std::uint64_t keys) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc heartbeat_keys(const model_row& r,
+                                                     std::uint64_t keys) noexcept {
     if (((keys & 0xFFFF) >> r.keys) != 0) return errc::reserved_not_zero;
     return keys > 0xFFFF ? errc::value_out_of_range : errc{};
 }
-constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const heartbeat& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
@@ -583,8 +589,8 @@ constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address 
 }
 
 // The answer to 2Ah; all five bytes FFh is the request's frame.
-constexpr errc own_check(const model_row& r, const software_revision& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const software_revision& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     bool request = true;
@@ -605,7 +611,8 @@ constexpr errc own_check(const model_row& r, const software_revision& v,
 }
 
 // The LED acknowledgement: the model's form decides how its bytes read.
-constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ack& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
@@ -616,8 +623,8 @@ constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address ke
                       is_secondary(raw(v.secondary));
     return fits ? errc{} : errc::value_out_of_range;
 }
-constexpr errc own_check(const model_row& r, const led_ack_code& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ack_code& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
@@ -625,16 +632,16 @@ constexpr errc own_check(const model_row& r, const led_ack_code& v,
 }
 
 // The NAME: every value of its fields has its bits (bit 48 stays 0).
-constexpr errc own_check(const model_row& r, const address_claimed& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const address_claimed& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     return sent(r, feature::address_claim, at, keypad);
 }
 
 // A multiple-LED frame: codes Ah..Eh are not used; LEDs past the model's have no nibble.
-constexpr errc own_check(const model_row& r, const multiple_leds& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const multiple_leds& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
@@ -650,7 +657,8 @@ constexpr errc own_check(const model_row& r, const multiple_leds& v,
 // A configuration command: its code byte as decode dispatches it (01h, F9h and 80h are other
 // frames: build's bytes after them are FFh), then its parameters through decode's own reader and
 // the members its row does not name at their defaults.
-constexpr errc own_check(const model_row& r, const command& v, keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const command& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     const std::uint8_t code = raw(v.code);
@@ -677,8 +685,8 @@ constexpr errc own_check(const model_row& r, const command& v, keypad_address ke
     return c == v ? errc{} : errc::value_out_of_range;
 }
 
-constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
-                         keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
+                                                keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{}) return e;
@@ -776,8 +784,8 @@ concept message_alternative = []<class... A>(std::type_identity<std::variant<A..
 
 namespace detail {
 template <class T>
-constexpr result<can::frame> encode_on(const model_row& r, const T& msg,
-                                       keypad_address keypad) noexcept {
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_on(const model_row& r, const T& msg,
+                                                              keypad_address keypad) noexcept {
     if (const errc e = own_check(r, msg, keypad); e != errc{}) return e;
     return build(r, msg);
 }
@@ -793,6 +801,41 @@ template <message_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(model m, const message& msg,
                                                   keypad_address keypad = std::nullopt) noexcept {
     return std::visit([m, keypad](const auto& v) { return encode(m, v, keypad); }, msg);
+}
+
+// --- a keypad known when the program is built ----------------------------------------------------
+// decode, decode_key_or_led and encode with the model a template argument: decode<model::pkp2600si>
+// (f, keypad). The same engine as the calls above, with the same results for every frame and
+// message (tests/test_keypad_j1939_codec.cpp runs every manual row through both), inlined whole
+// into the call, so that the model's row is a constant: the other models' rows and the paths this
+// model never takes (another LED form, frames its manual does not have) are not in the program.
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<message> decode(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return decode(f, M, keypad);
+}
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_or_led> decode_key_or_led(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return decode_key_or_led(f, M, keypad);
+}
+
+template <model M, message_alternative T>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode(
+    const T& msg, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return detail::encode_on(detail::j1939_row_of(M), msg, keypad);
+}
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> encode(
+    const message& msg, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return encode(M, msg, keypad);
 }
 
 }  // namespace powerkey::j1939
