@@ -1,7 +1,7 @@
 // keypad/j1939_codec.hpp with the model a template argument (decode<M>, decode_key_or_led<M>,
-// encode<M>): every manual row and every refusal of tests/j1939_rows.hpp through both the
-// compile-time and the run-time calls, for every model (not only the row's), with any keypad and
-// narrowed; the same answer each time.
+// decode_key_contact<M>, encode<M>): every manual row and every refusal of tests/j1939_rows.hpp
+// through both the compile-time and the run-time calls, for every model (not only the row's), with
+// any keypad and narrowed; the same answer each time.
 #include <doctest/doctest.h>
 
 #include <powerkey/can/candump.hpp>
@@ -19,9 +19,31 @@ using namespace j1939_rows;
 using namespace powerkey_tests;
 namespace can = powerkey::can;
 
+// decode_key_contact<M> against decode_key_or_led: the same key contact state, or the same
+// error; wrong_id for a frame read as an LED command. Narrowed to k the direction is the source
+// (from k: a key contact state), so the answer is exact; not narrowed, only where decode reads a
+// key contact state, or refuses a frame decode_key_contact does not call an LED command.
+template <model M>
+constexpr bool key_contact_agrees(const can::frame& f, keypad_address k) {
+    const auto kc = decode_key_contact<M>(f, k);
+    const auto d = decode_key_or_led(f, M, k);
+    const key_contact* v = d ? std::get_if<key_contact>(&*d) : nullptr;
+    if (k) {
+        const bool command_01 = f.is_extended() && ((f.raw_id() >> 16) & 0x3FF) == 0xEF &&
+                                f.size() == 8 && f[0] == 0x04 && f[1] == 0x1B && f[2] == 0x01 &&
+                                ((f.raw_id() & 0xFF) == *k || ((f.raw_id() >> 8) & 0xFF) == *k);
+        if (command_01 && (f.raw_id() & 0xFF) != *k) return kc == errc::wrong_id;
+    }
+    if (v != nullptr) return kc && *kc == *v;
+    if (kc) return false;
+    if (!k && kc.error() == errc::wrong_id) return true;
+    return !d && d.error() == kc.error();
+}
+
 // Frame f and message msg through the compile-time calls of model M and the run-time ones.
 template <model M>
 constexpr bool same_for(const can::frame& f, const message& msg, keypad_address k) {
+    if (!key_contact_agrees<M>(f, k)) return false;
     if (!(decode<M>(f, k) == decode(f, M, k))) return false;
     if (!(decode_key_or_led<M>(f, k) == decode_key_or_led(f, M, k))) return false;
     if (!(encode<M>(msg, k) == encode(M, msg, k))) return false;
@@ -58,7 +80,9 @@ static_assert(all_rows_pass<first_failing(pkp2600si_rows, typed_row), std::size(
 static_assert(all_rows_pass<first_failing(pkp1600si_rows, typed_row), std::size(pkp1600si_rows)>);
 }  // namespace
 
-TEST_CASE("j1939: decode<M>, decode_key_or_led<M> and encode<M> answer as the run-time calls") {
+TEST_CASE(
+    "j1939: decode<M>, decode_key_or_led<M>, decode_key_contact<M> and encode<M> answer as the "
+    "run-time calls") {
     check_rows(pkp1600si_rows, typed_row);
     check_rows(pkp2600si_rows, typed_row);
     check_rows(other_rows, typed_row);

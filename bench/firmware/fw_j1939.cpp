@@ -19,11 +19,17 @@ constexpr std::uint8_t keypad_address = pj::keypad_default_address;
 }  // namespace
 
 namespace calls {
-[[gnu::noinline]] powerkey::result<pj::key_or_led> read_key(const pc::frame& f) {
-    return pj::decode_key_or_led<keypad_model>(f, keypad_address);
+[[gnu::noinline]] powerkey::result<pj::key_contact> read_key(const pc::frame& f) {
+    return pj::decode_key_contact<keypad_model>(f, keypad_address);
 }
-[[gnu::noinline]] powerkey::result<pc::frame> build_led(const pj::set_led& m) {
-    return pj::encode<keypad_model>(m, keypad_address);
+// LED `key` green and on, or off: the single-LED command from the controller (00h) to the keypad.
+[[gnu::noinline]] powerkey::result<pc::frame> build_led(std::uint8_t key, bool on) {
+    pj::set_led led;
+    led.destination = keypad_address;
+    led.key = key;
+    led.colour = on ? pj::led_colour::green : pj::led_colour::off;
+    led.mode = on ? powerkey::led_mode::on : powerkey::led_mode::off;
+    return pj::encode<keypad_model>(led, keypad_address);
 }
 }  // namespace calls
 
@@ -31,15 +37,8 @@ namespace calls {
     for (;;) {
         const auto f = firmware::receive();
         if (!f) continue;
-        const auto r = calls::read_key(*f);
-        if (!r) continue;
-        const auto* key = std::get_if<pj::key_contact>(&*r);
-        if (key == nullptr) continue;
-        pj::set_led led;
-        led.destination = keypad_address;
-        led.key = key->key;
-        led.colour = key->pressed ? pj::led_colour::green : pj::led_colour::off;
-        led.mode = key->pressed ? powerkey::led_mode::on : powerkey::led_mode::off;
-        if (const auto out = calls::build_led(led)) firmware::transmit(*out);
+        const auto key = calls::read_key(*f);
+        if (!key) continue;
+        if (const auto out = calls::build_led(key->key, key->pressed)) firmware::transmit(*out);
     }
 }

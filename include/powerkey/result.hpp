@@ -4,7 +4,6 @@
 #ifndef POWERKEY_RESULT_HPP
 #define POWERKEY_RESULT_HPP
 
-#include <powerkey/detail/inline.hpp>
 #include <powerkey/error.hpp>
 
 #include <type_traits>
@@ -29,12 +28,7 @@ public:
     constexpr result(const T& v) noexcept(std::is_nothrow_copy_constructible_v<T>) : value_(v) {}
     constexpr result(T&& v) noexcept(std::is_nothrow_move_constructible_v<T>)
         : value_(std::move(v)) {}
-    // Under -Os an error of a result larger than a word is built by one shared constructor
-    // (POWERKEY_DETAIL_SIZE_SHARED): inlined, each error path would write a default T.
-    constexpr result(errc e) noexcept requires(sizeof(T) <= sizeof(void*)) : error_(e) {}
-    POWERKEY_DETAIL_SIZE_SHARED constexpr result(errc e) noexcept
-        requires(sizeof(T) > sizeof(void*))
-        : error_(e) {}
+    constexpr result(errc e) noexcept : error_(e) {}
     // The value built in place from args (for result<variant>: std::in_place_type<A>, args of A),
     // so that a decoder writes its answer straight into the caller's result instead of building
     // a T and moving it in (docs/performance.md).

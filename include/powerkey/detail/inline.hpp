@@ -18,12 +18,10 @@
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
 #define POWERKEY_DETAIL_SIZE true
-#define POWERKEY_DETAIL_SIZE_SHARED [[gnu::noinline]]
 #else
 #define POWERKEY_DETAIL_HOT [[gnu::always_inline]]
 #define POWERKEY_DETAIL_COLD [[gnu::noinline]]
 #define POWERKEY_DETAIL_SIZE false
-#define POWERKEY_DETAIL_SIZE_SHARED
 #endif
 #else
 #define POWERKEY_DETAIL_INLINE
@@ -31,7 +29,6 @@
 #define POWERKEY_DETAIL_HOT
 #define POWERKEY_DETAIL_COLD
 #define POWERKEY_DETAIL_SIZE false
-#define POWERKEY_DETAIL_SIZE_SHARED
 #endif
 
 // POWERKEY_DETAIL_FLATTEN: an entry point whose model is a template argument (j1939::decode<M>)

@@ -115,7 +115,10 @@ namespace detail {
 // one variant to the other.
 template <class M, class T>
 constexpr result<M> answer(const T& v) noexcept {
-    return result<M>(std::in_place, std::in_place_type<T>, v);
+    if constexpr (std::is_same_v<M, T>)
+        return v;  // a reader of one message (decode_key_contact)
+    else
+        return result<M>(std::in_place, std::in_place_type<T>, v);
 }
 
 // Bytes [from, 8) of the data word w are FFh.
@@ -444,6 +447,12 @@ constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t dest
     powerkey::detail::store_le<8>(bytes, 0, data);
     return can::frame(id, can::dlc::make(8).value(), bytes);
 }
+constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t destination,
+                              std::uint8_t source, const can::payload& bytes) noexcept {
+    POWERKEY_DETAIL_ASSUME_NOT(priority.value() > 7);
+    const auto id = make_id({priority, p, destination, source}).value();
+    return can::frame(id, can::dlc::make(8).value(), bytes);
+}
 
 constexpr std::uint64_t header(std::uint8_t code) noexcept {
     return header_0 | (std::uint64_t{header_1} << 8) | (std::uint64_t{code} << 16);
@@ -479,10 +488,13 @@ constexpr std::uint64_t data_01(const set_led_code& v) noexcept {
 // The frame of one message, field by field (encode checks the message first: own_check).
 template <class T>
 constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noexcept {
-    const auto ef = [&v](std::uint64_t data) {
+    const auto ef = [&v](const auto& data) {
         return frame_of(proprietary_a_pgn, v.priority, v.destination, v.source, data);
     };
-    if constexpr (is_command_01<T>) {
+    if constexpr (std::is_same_v<T, set_led>) {
+        return ef(can::payload{header_0, header_1, 0x01, v.key, raw(v.colour), raw(v.mode),
+                               raw(v.secondary), 0xFF});
+    } else if constexpr (is_command_01<T>) {
         return ef(data_01(v));
     } else if constexpr (std::is_same_v<T, heartbeat>) {
         const auto keys = static_cast<std::uint16_t>(v.keys.mask());
@@ -523,19 +535,19 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
 // with building the frame and reading it back, over every model and many values of every field.
 
 // decode's first test of a frame's identifier when narrowed: from the keypad or to it.
-POWERKEY_DETAIL_INLINE constexpr errc front(const route& at, keypad_address keypad) noexcept {
+constexpr errc front(const route& at, keypad_address keypad) noexcept {
     return keypad && at.source != *keypad && at.destination != *keypad ? errc::wrong_id : errc{};
 }
 template <class T>
-POWERKEY_DETAIL_INLINE constexpr route route_of(const T& v) noexcept {
+constexpr route route_of(const T& v) noexcept {
     return {v.priority, v.destination, v.source};
 }
 
 // A command 01h frame w up to its fields: the route, the direction decode reads it in (`led`),
 // the model's word on that direction and the reserved bytes of that layout (command_01_of,
 // key_contact_of, set_led_of).
-POWERKEY_DETAIL_INLINE constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w,
-                                               keypad_address keypad, bool& led) noexcept {
+constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w, keypad_address keypad,
+                        bool& led) noexcept {
     if (const errc e = front(at, keypad); e != errc{}) return e;
     led = is_led_command(r, at, w, keypad);
     if (led) {
@@ -547,41 +559,37 @@ POWERKEY_DETAIL_INLINE constexpr errc check_01(const model_row& r, const route& 
     return ff_from(w, 6) ? errc{} : errc::reserved_not_ff;
 }
 // The fields of each layout of 01h, as decode checks them.
-POWERKEY_DETAIL_INLINE constexpr bool key_contact_fits(const key_contact& v) noexcept {
+constexpr bool key_contact_fits(const key_contact& v) noexcept {
     return v.key >= 1 && v.key <= 16 && v.identifier != 0xFF;
 }
-POWERKEY_DETAIL_INLINE constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
+constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
     return has_led(r, v.key) && is_colour(raw(v.colour)) && raw(v.mode) <= 3 &&
            is_secondary(raw(v.secondary));
 }
 
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const key_contact& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const key_contact& v, keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return !led && key_contact_fits(v) ? errc{} : errc::value_out_of_range;
 }
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const set_led& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const set_led& v, keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return led && r.form == led_form::si && set_led_fits(r, v) ? errc{} : errc::value_out_of_range;
 }
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const set_led_code& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const set_led_code& v,
+                         keypad_address keypad) noexcept {
     bool led = false;
     if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
     return led && r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
 }
 
 // The heartbeat: key bits above the model's keys are reserved (0); a key above 16 has no bit.
-POWERKEY_DETAIL_INLINE constexpr errc heartbeat_keys(const model_row& r,
-                                                     std::uint64_t keys) noexcept {
+constexpr errc heartbeat_keys(const model_row& r, std::uint64_t keys) noexcept {
     if (((keys & 0xFFFF) >> r.keys) != 0) return errc::reserved_not_zero;
     return keys > 0xFFFF ? errc::value_out_of_range : errc{};
 }
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const heartbeat& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
@@ -589,8 +597,8 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const heartb
 }
 
 // The answer to 2Ah; all five bytes FFh is the request's frame.
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const software_revision& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const software_revision& v,
+                         keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     bool request = true;
@@ -611,8 +619,7 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const softwa
 }
 
 // The LED acknowledgement: the model's form decides how its bytes read.
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ack& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
@@ -623,8 +630,8 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ac
                       is_secondary(raw(v.secondary));
     return fits ? errc{} : errc::value_out_of_range;
 }
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ack_code& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const led_ack_code& v,
+                         keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
@@ -632,16 +639,16 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const led_ac
 }
 
 // The NAME: every value of its fields has its bits (bit 48 stays 0).
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const address_claimed& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const address_claimed& v,
+                         keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     return sent(r, feature::address_claim, at, keypad);
 }
 
 // A multiple-LED frame: codes Ah..Eh are not used; LEDs past the model's have no nibble.
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const multiple_leds& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const multiple_leds& v,
+                         keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
@@ -657,8 +664,7 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const multip
 // A configuration command: its code byte as decode dispatches it (01h, F9h and 80h are other
 // frames: build's bytes after them are FFh), then its parameters through decode's own reader and
 // the members its row does not name at their defaults.
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const command& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const command& v, keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     const std::uint8_t code = raw(v.code);
@@ -685,8 +691,8 @@ POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const comman
     return c == v ? errc{} : errc::value_out_of_range;
 }
 
-POWERKEY_DETAIL_INLINE constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
-                                                keypad_address keypad) noexcept {
+constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
+                         keypad_address keypad) noexcept {
     const route at = route_of(v);
     if (const errc e = front(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{}) return e;
@@ -804,11 +810,14 @@ template <message_alternative T>
 }
 
 // --- a keypad known when the program is built ----------------------------------------------------
-// decode, decode_key_or_led and encode with the model a template argument: decode<model::pkp2600si>
-// (f, keypad). The same engine as the calls above, with the same results for every frame and
-// message (tests/test_keypad_j1939_codec.cpp runs every manual row through both), inlined whole
-// into the call, so that the model's row is a constant: the other models' rows and the paths this
-// model never takes (another LED form, frames its manual does not have) are not in the program.
+// decode, decode_key_or_led, decode_key_contact and encode with the model a template argument:
+// decode<model::pkp2600si>(f, keypad). The same engine as the calls above, with the same results
+// for every frame and message (tests/test_keypad_j1939_typed.cpp runs every manual row through
+// both, for every model). A reader inlines the engine whole (POWERKEY_DETAIL_FLATTEN) and encode<M>
+// of one message type is inlined into its caller with the message's own check, so that the
+// model's row is a constant: no model table, and not the paths this model never takes (another
+// LED form, frames its manual does not have). Where the caller's keypad address and fields are
+// constants, they fold too.
 
 template <model M>
 [[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<message> decode(
@@ -838,6 +847,36 @@ template <model M>
     return encode(M, msg, keypad);
 }
 
+namespace detail {
+// decode_key_contact up to the key contact state's own fields: one errc, so that the caller builds
+// one error result (each error path of a result<key_contact> writes a default message).
+constexpr errc key_contact_front(const can::frame& f, const model_row& r,
+                                 keypad_address keypad) noexcept {
+    if (!f.is_extended()) return errc::wrong_id_format;
+    if (((f.raw_id() >> 16) & 0x3FF) != 0xEF) return errc::wrong_id;
+    const route at = route_of(f.raw_id());
+    if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = f.data_le();
+    if ((w & 0xFF'FFFF) != header(0x01)) return errc::wrong_id;
+    if (is_led_command(r, at, w, keypad)) return errc::wrong_id;  // an LED command to the keypad
+    return sent(r, feature::key_contact, at, keypad);
+}
+}  // namespace detail
+
+// The key contact state alone, for a controller that reads nothing else from its keypad (the J1939
+// firmware of docs/performance.md): decode's answer when f is a key contact state (command 01h
+// read in the keypad's direction, as decode reads it), decode's error when f is one it refuses,
+// wrong_id for any other frame (an LED command to the keypad included). Only the model's key
+// contact path is in the program.
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_contact> decode_key_contact(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    const errc e = detail::key_contact_front(f, detail::j1939_row_of(M), keypad);
+    if (e != errc{}) return e;
+    return detail::key_contact_of<key_contact>(detail::route_of(f.raw_id()), f.data_le());
+}
 }  // namespace powerkey::j1939
 
 #endif  // POWERKEY_KEYPAD_J1939_CODEC_HPP
