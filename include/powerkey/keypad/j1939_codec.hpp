@@ -535,11 +535,11 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
 // with building the frame and reading it back, over every model and many values of every field.
 
 // decode's first test of a frame's identifier when narrowed: from the keypad or to it.
-constexpr errc front(const route& at, keypad_address keypad) noexcept {
+constexpr errc narrowed(const route& at, keypad_address keypad) noexcept {
     return keypad && at.source != *keypad && at.destination != *keypad ? errc::wrong_id : errc{};
 }
 template <class T>
-constexpr route route_of(const T& v) noexcept {
+constexpr route message_route(const T& v) noexcept {
     return {v.priority, v.destination, v.source};
 }
 
@@ -548,7 +548,7 @@ constexpr route route_of(const T& v) noexcept {
 // key_contact_of, set_led_of).
 constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w, keypad_address keypad,
                         bool& led) noexcept {
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     led = is_led_command(r, at, w, keypad);
     if (led) {
         if (const errc e = received(r, feature::led_command, at, keypad); e != errc{}) return e;
@@ -569,18 +569,21 @@ constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
 
 constexpr errc own_check(const model_row& r, const key_contact& v, keypad_address keypad) noexcept {
     bool led = false;
-    if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
     return !led && key_contact_fits(v) ? errc{} : errc::value_out_of_range;
 }
 constexpr errc own_check(const model_row& r, const set_led& v, keypad_address keypad) noexcept {
     bool led = false;
-    if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
     return led && r.form == led_form::si && set_led_fits(r, v) ? errc{} : errc::value_out_of_range;
 }
 constexpr errc own_check(const model_row& r, const set_led_code& v,
                          keypad_address keypad) noexcept {
     bool led = false;
-    if (const errc e = check_01(r, route_of(v), data_01(v), keypad, led); e != errc{}) return e;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
     return led && r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
 }
 
@@ -590,8 +593,8 @@ constexpr errc heartbeat_keys(const model_row& r, std::uint64_t keys) noexcept {
     return keys > 0xFFFF ? errc::value_out_of_range : errc{};
 }
 constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
     return heartbeat_keys(r, v.keys.mask());
 }
@@ -599,8 +602,8 @@ constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address 
 // The answer to 2Ah; all five bytes FFh is the request's frame.
 constexpr errc own_check(const model_row& r, const software_revision& v,
                          keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     bool request = true;
     for (const std::uint8_t b : v.bytes) request = request && b == 0xFF;
     if (request) {
@@ -612,7 +615,7 @@ constexpr errc own_check(const model_row& r, const software_revision& v,
     for (const std::uint8_t b : v.bytes) {
         if (b == 0)
             ended = true;
-        else if (ended || b < 0x20 || b > 0x7E)
+        else if (ended || !(b >= 0x20 && b <= 0x7E))  // ASCII, and nothing after a 00h
             return errc::value_out_of_range;
     }
     return errc{};
@@ -620,8 +623,8 @@ constexpr errc own_check(const model_row& r, const software_revision& v,
 
 // The LED acknowledgement: the model's form decides how its bytes read.
 constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
     if (r.form == led_form::code)
         return raw(v.mode) != 0xFF || raw(v.secondary) != 0xFF ? errc::reserved_not_ff
@@ -632,8 +635,8 @@ constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address ke
 }
 constexpr errc own_check(const model_row& r, const led_ack_code& v,
                          keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
     return r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
 }
@@ -641,21 +644,21 @@ constexpr errc own_check(const model_row& r, const led_ack_code& v,
 // The NAME: every value of its fields has its bits (bit 48 stays 0).
 constexpr errc own_check(const model_row& r, const address_claimed& v,
                          keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     return sent(r, feature::address_claim, at, keypad);
 }
 
 // A multiple-LED frame: codes Ah..Eh are not used; LEDs past the model's have no nibble.
 constexpr errc own_check(const model_row& r, const multiple_leds& v,
                          keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
     const std::uint64_t w = v.word();
     for (unsigned k = 0; k < r.plane_leds; ++k) {
         const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
-        if (c >= 0xA && c <= 0xE) return errc::value_out_of_range;
+        if (c > 9 && c < 0xF) return errc::value_out_of_range;  // Ah..Eh
     }
     return (w & ~powerkey::detail::low_bits(4u * r.plane_leds)) != 0 ? errc::value_out_of_range
                                                                      : errc{};
@@ -665,8 +668,8 @@ constexpr errc own_check(const model_row& r, const multiple_leds& v,
 // frames: build's bytes after them are FFh), then its parameters through decode's own reader and
 // the members its row does not name at their defaults.
 constexpr errc own_check(const model_row& r, const command& v, keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     const std::uint8_t code = raw(v.code);
     const auto other = [](errc e) { return e != errc{} ? e : errc::value_out_of_range; };
     if (code == 0x01) {
@@ -693,8 +696,8 @@ constexpr errc own_check(const model_row& r, const command& v, keypad_address ke
 
 constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
                          keypad_address keypad) noexcept {
-    const route at = route_of(v);
-    if (const errc e = front(at, keypad); e != errc{}) return e;
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
     if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{}) return e;
     return v.form == frame_form::manual ? errc{} : errc::value_out_of_range;
 }
