@@ -112,11 +112,11 @@ namespace detail {
 
 // The decoders below build the message variant M: j1939::message for j1939::decode, or
 // powerkey::message for the any-frame decoder (keypad/codec.hpp), which then needs no copy from
-// one variant to the other.
+// one variant to the other; or the one message a reader of one kind returns (decode_key_contact).
 template <class M, class T>
 constexpr result<M> answer(const T& v) noexcept {
     if constexpr (std::is_same_v<M, T>)
-        return v;  // a reader of one message (decode_key_contact)
+        return v;
     else
         return result<M>(std::in_place, std::in_place_type<T>, v);
 }
