@@ -111,10 +111,32 @@ inline void j1939_set_led_encode(std::size_t calls) {
     });
 }
 
+// The same with the model a template argument (issue 24): the whole reader, the key contact
+// state alone (fw_j1939's reader, narrowed to the keypad), and the set_led encode, which checks
+// its own fields.
+inline void one_j1939_decode_mixed_log(std::size_t calls) {
+    cycle(j1939_mixed_log, calls,
+          [](const pc::frame& f) BENCH_INLINE { return powerkey::j1939::decode<j1939_model>(f); });
+}
+inline void one_j1939_key_contact_decode(std::size_t calls) {
+    const auto keypad = opaque(powerkey::j1939::keypad_default_address);
+    cycle(j1939_key_frames, calls, [keypad](const pc::frame& f) BENCH_INLINE {
+        return powerkey::j1939::decode_key_contact<j1939_model>(f, keypad);
+    });
+}
+inline void one_j1939_set_led_encode(std::size_t calls) {
+    cycle(j1939_set_leds, calls, [](const powerkey::j1939::set_led& v) BENCH_INLINE {
+        return powerkey::j1939::encode<j1939_model>(v);
+    });
+}
+
 inline constexpr op j1939_ops[] = {
     {"pkp2600si/j1939/key_contact/decode", j1939_key_contact_decode},
     {"pkp2600si/j1939/set_led/encode", j1939_set_led_encode},
     {"pkp2600si/j1939/decode_mixed_log", j1939_decode_mixed_log},
+    {"pkp2600si/j1939/one/key_contact/decode_key_contact", one_j1939_key_contact_decode},
+    {"pkp2600si/j1939/one/set_led/encode", one_j1939_set_led_encode},
+    {"pkp2600si/j1939/one/decode_mixed_log", one_j1939_decode_mixed_log},
     {"any/pkp2600si/decode_j1939_mixed_log", any_decode_j1939_mixed_log},
     {"any/pkp2600si/encode_j1939_mixed_log", any_encode_j1939_mixed_log,
      "frame (keypad frames only)"},

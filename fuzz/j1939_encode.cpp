@@ -1,8 +1,9 @@
-// The J1939 encoder j1939::encode(model, message, keypad) fed every kind of j1939::message with
-// arbitrary raw field values (fuzz.hpp: any enum value, any key and LED bits, any command code
-// and members, raw multiple-LED nibbles), for every model (and a value that is no model), with
-// any keypad or narrowed to one. Property: the message is refused with a listed errc, or it
-// encodes to a frame that decodes back to exactly the same message.
+// The J1939 encoder j1939::encode(model, message, keypad), which checks each message's own fields
+// rather than reading its frame back, fed every kind of j1939::message with arbitrary raw field
+// values (fuzz.hpp: any enum value, any key and LED bits, any command code and members, raw
+// multiple-LED nibbles), for every model (and a value that is no model), with any keypad or
+// narrowed to one. Property: the message is refused with a listed errc, or it encodes to a frame
+// that decodes back to exactly the same message.
 // g++ 12 reports the keypad_address optional below as maybe uninitialised once the J1939 codec is
 // inlined into this function (a false positive: its value is read only when it holds one; which
 // file it hits changes with what the headers inline).

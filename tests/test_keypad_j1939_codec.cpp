@@ -194,8 +194,8 @@ constexpr bool encodes_back(model m, const j1939_rows::message& msg, keypad_addr
     return d && *d == msg;
 }
 
-// encode of a command 01h message checks its frame with decode_key_or_led: the same answer as
-// building the frame and reading it back with the whole decoder (the frame, or decode's error,
+// encode checks the message's own fields (detail::own_check): the same answer as building the
+// frame field by field and reading it back with the whole decoder (the frame, or decode's error,
 // or value_out_of_range when it reads as another message).
 template <class T>
 constexpr powerkey::result<can::frame> encode_by_decode(model m, const T& msg, keypad_address k) {
@@ -210,8 +210,11 @@ constexpr powerkey::result<can::frame> encode_by_decode(model m, const T& msg, k
 }
 template <class T>
 bool encodes_as_by_decode(model m, const T& msg) {
-    for (const keypad_address k : {keypad_address{}, keypad_address{0x21}, keypad_address{0x00}})
+    for (const keypad_address k :
+         {keypad_address{}, keypad_address{0x21}, keypad_address{0x00}, keypad_address{0xFF}}) {
         if (!(encode(m, msg, k) == encode_by_decode(m, msg, k))) return false;
+        if (!(encode(m, j1939_rows::message(msg), k) == encode_by_decode(m, msg, k))) return false;
+    }
     return true;
 }
 
@@ -285,6 +288,99 @@ TEST_CASE("j1939: encode of a command 01h message answers as reading its frame b
                     CHECK(encodes_as_by_decode(
                         m, set_led_code{6, to, 0x00, k8, static_cast<std::uint8_t>(c)}));
                 }
+            }
+        }
+    }
+}
+
+TEST_CASE("j1939: encode of every other message answers as reading its frame back with decode") {
+    const std::uint8_t addresses[] = {0x21, 0xFF, 0x00, 0x05};
+    for (std::size_t i = 0; i < model_row_count; ++i) {
+        const auto m = static_cast<model>(i);
+        CAPTURE(i);
+        for (const std::uint8_t to : addresses) {
+            for (const std::uint8_t from : addresses) {
+                CAPTURE(unsigned{to});
+                CAPTURE(unsigned{from});
+                for (unsigned bit = 0; bit <= 17; ++bit) {
+                    const key_set keys = key_set::from_mask((std::uint64_t{1} << bit) >> 1);
+                    CHECK(encodes_as_by_decode(m, heartbeat{5, to, from, 7, keys, 0x21}));
+                }
+                CHECK(encodes_as_by_decode(
+                    m, heartbeat{6, to, from, 0, key_set::from_mask(0x1'0001), 0xFF}));
+                for (const std::string_view text :
+                     {"V2.10", "V2.1", "", "\x1F", "\x7F", "ab\0c", "\xFF\xFF\xFF\xFF\xFF",
+                      "\xFF\xFF\xFF\xFF\xFE"}) {
+                    software_revision v{6, to, from, {}};
+                    for (std::size_t b = 0; b < text.size() && b < 5; ++b)
+                        v.bytes[b] = static_cast<std::uint8_t>(text[b]);
+                    CHECK(encodes_as_by_decode(m, v));
+                }
+                for (unsigned key = 0; key <= 17; key += 1) {
+                    const auto k8 = static_cast<std::uint8_t>(key);
+                    for (unsigned mode : {0u, 1u, 3u, 4u, 0xFFu}) {
+                        const auto md = static_cast<led_mode>(mode);
+                        for (const lc c : {lc::off, lc::red, lc::yellow_green,
+                                           static_cast<lc>(0x0A), lc::not_used}) {
+                            CHECK(encodes_as_by_decode(m, led_ack{6, to, from, k8, md, c, c}));
+                            CHECK(encodes_as_by_decode(
+                                m, led_ack{6, to, from, k8, md, lc::blue, lc::not_used}));
+                        }
+                    }
+                    for (const unsigned code : {0x00u, 0x05u, 0xFFu})
+                        CHECK(encodes_as_by_decode(
+                            m, led_ack_code{6, to, from, k8, static_cast<std::uint8_t>(code)}));
+                }
+                address_claimed claim{6, to, from, {}};
+                claim.name.function = 0x81;
+                claim.name.arbitrary_address_capable = true;
+                CHECK(encodes_as_by_decode(m, claim));
+                switch_to_canopen back{6, to, from};
+                CHECK(encodes_as_by_decode(m, back));
+                back.form = powerkey::frame_form::trimmed;
+                CHECK(encodes_as_by_decode(m, back));
+                for (std::uint64_t n = 0; n < 0x1'0000'0000; n += 0x1234'5679) {
+                    multiple_leds l{6, to, from, 1, multiple_leds::halves(n * 0x1'0001)};
+                    CHECK(encodes_as_by_decode(m, l));
+                    l.frame = 2;
+                    l.nibbles[1] = 0;
+                    CHECK(encodes_as_by_decode(m, l));
+                }
+            }
+        }
+        // The commands over four routes (to the keypad, to every address, from the keypad to
+        // another, from it to itself): every code byte, every fifth parameter value, and a member
+        // the command's row may not carry set.
+        const std::uint8_t routes[][2] = {{0x21, 0x00}, {0xFF, 0x00}, {0x05, 0x21}, {0x21, 0x21}};
+        for (const auto& route : routes) {
+            for (unsigned code = 0; code < 0x100; ++code) {
+                CAPTURE(unsigned{route[0]});
+                CAPTURE(unsigned{route[1]});
+                CAPTURE(code);
+                bool same = true;
+                for (unsigned v = 0; v < 0x100; v += 5) {
+                    command c = cmd(static_cast<cc>(code));
+                    c.destination = route[0];
+                    c.source = route[1];
+                    command::fields(c, [&](std::string_view name, auto& field) {
+                        using T = std::remove_cvref_t<decltype(field)>;
+                        if (name == "command" || name == "priority" || name == "destination" ||
+                            name == "source")
+                            return;
+                        if constexpr (std::is_same_v<T, bool>)
+                            field = (v & 1) != 0;
+                        else if constexpr (std::is_same_v<T, std::uint8_t>)
+                            field = static_cast<std::uint8_t>(v);
+                        else if constexpr (std::is_enum_v<T>)
+                            field = static_cast<T>(v & 0xF);
+                        else
+                            field = T::make(v & 0x3F).value();
+                    });
+                    same = same && encodes_as_by_decode(m, c);
+                    c.identifier = static_cast<std::uint8_t>(v ^ 0x40);  // maybe not its own
+                    same = same && encodes_as_by_decode(m, c);
+                }
+                CHECK(same);
             }
         }
     }

@@ -31,6 +31,15 @@
 #define POWERKEY_DETAIL_SIZE false
 #endif
 
+// POWERKEY_DETAIL_FLATTEN: an entry point whose model is a template argument (j1939::decode<M>)
+// inlines the whole engine it calls, so that every read of the model's row is a constant and the
+// paths the model never takes drop out, at every optimisation level (-Os included).
+#if defined(__GNUC__)
+#define POWERKEY_DETAIL_FLATTEN [[gnu::flatten]]
+#else
+#define POWERKEY_DETAIL_FLATTEN
+#endif
+
 // Tells g++ and clang that `condition` is false here (a row number a key matched is never the
 // sentinel): the callers' tests of it drop out. Nothing elsewhere.
 #if defined(__GNUC__)

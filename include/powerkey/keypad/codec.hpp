@@ -552,9 +552,8 @@ constexpr bool j1939_alternatives_in_place() noexcept {
 }
 static_assert(j1939_alternatives_in_place());
 
-// A J1939 message's frame as j1939::encode builds and checks it (narrowed to `address` when
-// given), read back into message (one J1939 decoder in the program). Out of line: no CANopen
-// message comes here.
+// A J1939 message's frame as j1939::encode checks and builds it (narrowed to `address` when
+// given). Out of line: no CANopen message comes here.
 POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
     model m, const message& msg, j1939::keypad_address address) noexcept {
     return std::visit(
@@ -563,7 +562,7 @@ POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
             if constexpr (is_j1939_alternative<T>) {
                 T manual = v;  // whatever `form` says, the manual's form is built
                 if constexpr (requires { manual.form; }) manual.form = frame_form::manual;
-                return j1939::detail::encode_as<message, false>(m, manual, address);
+                return j1939::encode(m, manual, address);
             } else {
                 return errc::wrong_id_format;  // not reached: encode chose this path by the index
             }

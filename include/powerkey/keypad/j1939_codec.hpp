@@ -9,8 +9,9 @@
 // keypads do not use (anything but EF00h, A700h, A600h, EE00h) is not a keypad frame
 // (errc::wrong_id). The same PGN and command byte carry both directions (01h is a key contact
 // state from the keypad and an LED command to it; 2Ah a request and its answer): the direction
-// comes from the data and the identifier, as docs/j1939.md says. encode builds the frame, decodes
-// it back with the same arguments and returns it only when the meaning comes back unchanged.
+// comes from the data and the identifier, as docs/j1939.md says. encode checks the message's
+// fields as decode would check its frame, then builds the frame: it never returns a frame decode
+// refuses or reads as another meaning (tests and fuzz/j1939_encode.cpp prove it).
 #ifndef POWERKEY_KEYPAD_J1939_CODEC_HPP
 #define POWERKEY_KEYPAD_J1939_CODEC_HPP
 
@@ -111,10 +112,13 @@ namespace detail {
 
 // The decoders below build the message variant M: j1939::message for j1939::decode, or
 // powerkey::message for the any-frame decoder (keypad/codec.hpp), which then needs no copy from
-// one variant to the other.
+// one variant to the other; or the one message a reader of one kind returns (decode_key_contact).
 template <class M, class T>
 constexpr result<M> answer(const T& v) noexcept {
-    return result<M>(std::in_place, std::in_place_type<T>, v);
+    if constexpr (std::is_same_v<M, T>)
+        return v;
+    else
+        return result<M>(std::in_place, std::in_place_type<T>, v);
 }
 
 // Bytes [from, 8) of the data word w are FFh.
@@ -449,10 +453,18 @@ constexpr result<M> address_claimed_of(const model_row& r, const route& at, std:
 
 constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t destination,
                               std::uint8_t source, std::uint64_t data) noexcept {
-    // Every PGN here is PDU1 with a zero low byte: make_id cannot fail.
+    // Every PGN here is PDU1 with a zero low byte and a priority is 0..7: make_id cannot fail (said
+    // to the compiler, so that no error path is built).
+    POWERKEY_DETAIL_ASSUME_NOT(priority.value() > 7);
     const auto id = make_id({priority, p, destination, source}).value();
     can::payload bytes{};
     powerkey::detail::store_le<8>(bytes, 0, data);
+    return can::frame(id, can::dlc::make(8).value(), bytes);
+}
+constexpr can::frame frame_of(pgn p, j1939::priority priority, std::uint8_t destination,
+                              std::uint8_t source, const can::payload& bytes) noexcept {
+    POWERKEY_DETAIL_ASSUME_NOT(priority.value() > 7);
+    const auto id = make_id({priority, p, destination, source}).value();
     return can::frame(id, can::dlc::make(8).value(), bytes);
 }
 
@@ -471,15 +483,33 @@ constexpr std::uint8_t raw(E e) noexcept {
     return static_cast<std::uint8_t>(e);
 }
 
-// The frame of one message, field by field (encode checks it by decoding).
+template <class T>
+inline constexpr bool is_command_01 =
+    std::is_same_v<T, key_contact> || std::is_same_v<T, set_led> || std::is_same_v<T, set_led_code>;
+// The data word of a command 01h message (build's and the direction test's).
+constexpr std::uint64_t data_01(const key_contact& v) noexcept {
+    return header(0x01) | at_byte(v.key, 3) | at_byte(v.pressed ? 1 : 0, 4) |
+           at_byte(v.identifier, 5) | ff_past(6);
+}
+constexpr std::uint64_t data_01(const set_led& v) noexcept {
+    return header(0x01) | at_byte(v.key, 3) | at_byte(raw(v.colour), 4) | at_byte(raw(v.mode), 5) |
+           at_byte(raw(v.secondary), 6) | ff_past(7);
+}
+constexpr std::uint64_t data_01(const set_led_code& v) noexcept {
+    return header(0x01) | at_byte(v.key, 3) | at_byte(v.code, 4) | ff_past(5);
+}
+
+// The frame of one message, field by field (encode checks the message first: own_check).
 template <class T>
 constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noexcept {
-    const auto ef = [&v](std::uint64_t data) {
+    const auto ef = [&v](const auto& data) {
         return frame_of(proprietary_a_pgn, v.priority, v.destination, v.source, data);
     };
-    if constexpr (std::is_same_v<T, key_contact>) {
-        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(v.pressed ? 1 : 0, 4) |
-                  at_byte(v.identifier, 5) | ff_past(6));
+    if constexpr (std::is_same_v<T, set_led>) {
+        return ef(can::payload{header_0, header_1, 0x01, v.key, raw(v.colour), raw(v.mode),
+                               raw(v.secondary), 0xFF});
+    } else if constexpr (is_command_01<T>) {
+        return ef(data_01(v));
     } else if constexpr (std::is_same_v<T, heartbeat>) {
         const auto keys = static_cast<std::uint16_t>(v.keys.mask());
         return ef(header(0xF9) | at_byte(v.counter, 3) | (std::uint64_t{keys} << 32) |
@@ -495,11 +525,6 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
         return ef(at_byte(0xFF, 1) | at_byte(v.key, 2) | at_byte(v.code, 3) | ff_past(4));
     } else if constexpr (std::is_same_v<T, address_claimed>) {
         return frame_of(address_claim_pgn, v.priority, v.destination, v.source, pack_name(v.name));
-    } else if constexpr (std::is_same_v<T, set_led>) {
-        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(raw(v.colour), 4) |
-                  at_byte(raw(v.mode), 5) | at_byte(raw(v.secondary), 6) | ff_past(7));
-    } else if constexpr (std::is_same_v<T, set_led_code>) {
-        return ef(header(0x01) | at_byte(v.key, 3) | at_byte(v.code, 4) | ff_past(5));
     } else if constexpr (std::is_same_v<T, multiple_leds>) {
         const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
         return frame_of(v.frame.value() == 1 ? multiple_leds_1_pgn : multiple_leds_2_pgn,
@@ -513,6 +538,182 @@ constexpr can::frame build([[maybe_unused]] const model_row& r, const T& v) noex
         static_assert(std::is_same_v<T, switch_to_canopen>);
         return encode(v);
     }
+}
+
+// --- the checks of encode, made on the message (issue 24) ----------------------------------------
+// Each is what decode finds in the frame build makes of the message, in decode's order, so that
+// encode needs no decoder: decode's error for that frame, or value_out_of_range when the frame
+// reads back as another message (another kind, or a member the frame cannot carry). The small
+// tests decode makes (the route, the model's word, the direction of 01h, a command's parameter
+// bytes) are the decoder's own functions. tests/test_keypad_j1939_codec.cpp compares every check
+// with building the frame and reading it back, over every model and many values of every field.
+
+// decode's first test of a frame's identifier when narrowed: from the keypad or to it.
+constexpr errc narrowed(const route& at, keypad_address keypad) noexcept {
+    return keypad && at.source != *keypad && at.destination != *keypad ? errc::wrong_id : errc{};
+}
+template <class T>
+constexpr route message_route(const T& v) noexcept {
+    return {v.priority, v.destination, v.source};
+}
+
+// A command 01h frame w up to its fields: the route, the direction decode reads it in (`led`),
+// the model's word on that direction and the reserved bytes of that layout (command_01_of,
+// key_contact_of, set_led_of).
+constexpr errc check_01(const model_row& r, const route& at, std::uint64_t w, keypad_address keypad,
+                        bool& led) noexcept {
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    led = is_led_command(r, at, w, keypad);
+    if (led) {
+        if (const errc e = received(r, feature::led_command, at, keypad); e != errc{}) return e;
+        const bool reserved_ff = r.form == led_form::code ? ff_from(w, 5) : byte_of(w, 7) == 0xFF;
+        return reserved_ff ? errc{} : errc::reserved_not_ff;
+    }
+    if (const errc e = sent(r, feature::key_contact, at, keypad); e != errc{}) return e;
+    return ff_from(w, 6) ? errc{} : errc::reserved_not_ff;
+}
+// The fields of each layout of 01h, as decode checks them.
+constexpr bool key_contact_fits(const key_contact& v) noexcept {
+    return v.key >= 1 && v.key <= 16 && v.identifier != 0xFF;
+}
+constexpr bool set_led_fits(const model_row& r, const set_led& v) noexcept {
+    return has_led(r, v.key) && is_colour(raw(v.colour)) && raw(v.mode) <= 3 &&
+           is_secondary(raw(v.secondary));
+}
+
+constexpr errc own_check(const model_row& r, const key_contact& v, keypad_address keypad) noexcept {
+    bool led = false;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
+    return !led && key_contact_fits(v) ? errc{} : errc::value_out_of_range;
+}
+constexpr errc own_check(const model_row& r, const set_led& v, keypad_address keypad) noexcept {
+    bool led = false;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
+    return led && r.form == led_form::si && set_led_fits(r, v) ? errc{} : errc::value_out_of_range;
+}
+constexpr errc own_check(const model_row& r, const set_led_code& v,
+                         keypad_address keypad) noexcept {
+    bool led = false;
+    if (const errc e = check_01(r, message_route(v), data_01(v), keypad, led); e != errc{})
+        return e;
+    return led && r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
+}
+
+// The heartbeat: key bits above the model's keys are reserved (0); a key above 16 has no bit.
+constexpr errc heartbeat_keys(const model_row& r, std::uint64_t keys) noexcept {
+    if (((keys & 0xFFFF) >> r.keys) != 0) return errc::reserved_not_zero;
+    return keys > 0xFFFF ? errc::value_out_of_range : errc{};
+}
+constexpr errc own_check(const model_row& r, const heartbeat& v, keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
+    return heartbeat_keys(r, v.keys.mask());
+}
+
+// The answer to 2Ah; all five bytes FFh is the request's frame.
+constexpr errc own_check(const model_row& r, const software_revision& v,
+                         keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    bool request = true;
+    for (const std::uint8_t b : v.bytes) request = request && b == 0xFF;
+    if (request) {
+        const errc e = received(r, feature::software_revision, at, keypad);
+        return e != errc{} ? e : errc::value_out_of_range;
+    }
+    if (const errc e = sent(r, feature::software_revision, at, keypad); e != errc{}) return e;
+    bool ended = false;
+    for (const std::uint8_t b : v.bytes) {
+        if (b == 0)
+            ended = true;
+        else if (ended || !(b >= 0x20 && b <= 0x7E))  // ASCII, and nothing after a 00h
+            return errc::value_out_of_range;
+    }
+    return errc{};
+}
+
+// The LED acknowledgement: the model's form decides how its bytes read.
+constexpr errc own_check(const model_row& r, const led_ack& v, keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
+    if (r.form == led_form::code)
+        return raw(v.mode) != 0xFF || raw(v.secondary) != 0xFF ? errc::reserved_not_ff
+                                                               : errc::value_out_of_range;
+    const bool fits = raw(v.mode) <= 3 && has_led(r, v.key) && is_colour(raw(v.colour)) &&
+                      is_secondary(raw(v.secondary));
+    return fits ? errc{} : errc::value_out_of_range;
+}
+constexpr errc own_check(const model_row& r, const led_ack_code& v,
+                         keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    if (const errc e = sent(r, feature::led_ack, at, keypad); e != errc{}) return e;
+    return r.form == led_form::code && has_led(r, v.key) ? errc{} : errc::value_out_of_range;
+}
+
+// The NAME: every value of its fields has its bits (bit 48 stays 0).
+constexpr errc own_check(const model_row& r, const address_claimed& v,
+                         keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    return sent(r, feature::address_claim, at, keypad);
+}
+
+// A multiple-LED frame: codes Ah..Eh are not used; LEDs past the model's have no nibble.
+constexpr errc own_check(const model_row& r, const multiple_leds& v,
+                         keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    if (const errc e = received(r, feature::multiple_leds, at, keypad); e != errc{}) return e;
+    const std::uint64_t w = v.word();
+    for (unsigned k = 0; k < r.plane_leds; ++k) {
+        const auto c = static_cast<unsigned>((w >> (4 * k)) & 0xF);
+        if (c > 9 && c < 0xF) return errc::value_out_of_range;  // Ah..Eh
+    }
+    return (w & ~powerkey::detail::low_bits(4u * r.plane_leds)) != 0 ? errc::value_out_of_range
+                                                                     : errc{};
+}
+
+// A configuration command: its code byte as decode dispatches it (01h, F9h and 80h are other
+// frames: build's bytes after them are FFh), then its parameters through decode's own reader and
+// the members its row does not name at their defaults.
+constexpr errc own_check(const model_row& r, const command& v, keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    const std::uint8_t code = raw(v.code);
+    const auto other = [](errc e) { return e != errc{} ? e : errc::value_out_of_range; };
+    if (code == 0x01) {
+        bool led = false;
+        return other(check_01(r, at, header(0x01) | ff_past(3), keypad, led));
+    }
+    if (code == 0xF9) {
+        if (const errc e = sent(r, feature::heartbeat, at, keypad); e != errc{}) return e;
+        return other(heartbeat_keys(r, 0xFFFF));
+    }
+    if (code == 0x80) return other(received(r, feature::switch_to_canopen, at, keypad));
+    const command_row* row = find_command(code);
+    if (row == nullptr) return errc::unknown_command;
+    if (const errc e = received(r, row->what, at, keypad); e != errc{}) return e;
+    command c{};
+    c.priority = v.priority;
+    c.destination = v.destination;
+    c.source = v.source;
+    c.code = row->code;
+    if (const errc e = read_param(row->p1, write_param(row->p1, v), c); e != errc{}) return e;
+    if (const errc e = read_param(row->p2, write_param(row->p2, v), c); e != errc{}) return e;
+    return c == v ? errc{} : errc::value_out_of_range;
+}
+
+constexpr errc own_check(const model_row& r, const switch_to_canopen& v,
+                         keypad_address keypad) noexcept {
+    const route at = message_route(v);
+    if (const errc e = narrowed(at, keypad); e != errc{}) return e;
+    if (const errc e = received(r, feature::switch_to_canopen, at, keypad); e != errc{}) return e;
+    return v.form == frame_form::manual ? errc{} : errc::value_out_of_range;
 }
 
 }  // namespace detail
@@ -728,7 +929,8 @@ using key_or_led = std::variant<key_contact, set_led, set_led_code>;
 // decode could never return is refused with the error decode gives its frame, or with
 // value_out_of_range when the frame decodes to another meaning (a member the command does not
 // use set, an LED past the model's multiple-LED frame, an addressed key state whose bytes read
-// as an LED command: narrow to the keypad to send it).
+// as an LED command: narrow to the keypad to send it). The message checks its own fields
+// (detail::own_check): no decoder is in a program that only encodes.
 // One alternative of j1939::message: encode(m, set_led{...}) needs no visit of the variant.
 template <class T>
 concept message_alternative = []<class... A>(std::type_identity<std::variant<A...>>) {
@@ -736,35 +938,19 @@ concept message_alternative = []<class... A>(std::type_identity<std::variant<A..
 }(std::type_identity<message>{});
 
 namespace detail {
-// encode, its frame read back into the variant M (decode_as<M>: keypad/codec.hpp reads it back
-// into powerkey::message, so that a program holds one J1939 decoder).
-// With `narrow`, the messages of command 01h are read back by decode_key_or_led (the same checks
-// as decode's for their frames): a program that sends LED commands holds no more of the decoder.
-// keypad/codec.hpp, whose programs hold the whole decoder anyway, reads every frame back with it.
 template <class T>
-inline constexpr bool is_command_01 =
-    std::is_same_v<T, key_contact> || std::is_same_v<T, set_led> || std::is_same_v<T, set_led_code>;
-template <class M, bool narrow, class T>
-constexpr result<can::frame> encode_as(model m, const T& msg, keypad_address keypad) noexcept {
-    if (!is_j1939_model(m)) return errc::value_out_of_range;
-    const can::frame f = build(j1939_row_of(m), msg);
-    const auto back = [&f, m, keypad] {
-        if constexpr (narrow && is_command_01<T>)
-            return decode_key_or_led(f, m, keypad);
-        else
-            return decode_as<M>(f, m, keypad);
-    }();
-    if (!back) return back.error();
-    const T* same = std::get_if<T>(&*back);
-    if (same == nullptr || !(*same == msg)) return errc::value_out_of_range;
-    return f;
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_on(const model_row& r, const T& msg,
+                                                              keypad_address keypad) noexcept {
+    if (const errc e = own_check(r, msg, keypad); e != errc{}) return e;
+    return build(r, msg);
 }
 }  // namespace detail
 
 template <message_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(model m, const T& msg,
                                                   keypad_address keypad = std::nullopt) noexcept {
-    return detail::encode_as<message, true>(m, msg, keypad);
+    if (!detail::is_j1939_model(m)) return errc::value_out_of_range;
+    return detail::encode_on(detail::j1939_row_of(m), msg, keypad);
 }
 
 [[nodiscard]] constexpr result<can::frame> encode(model m, const message& msg,
@@ -772,6 +958,74 @@ template <message_alternative T>
     return std::visit([m, keypad](const auto& v) { return encode(m, v, keypad); }, msg);
 }
 
+// --- a keypad known when the program is built ----------------------------------------------------
+// decode, decode_key_or_led, decode_key_contact and encode with the model a template argument:
+// decode<model::pkp2600si>(f, keypad). The same engine as the calls above, with the same results
+// for every frame and message (tests/test_keypad_j1939_typed.cpp runs every manual row through
+// both, for every model). A reader inlines the engine whole (POWERKEY_DETAIL_FLATTEN) and encode<M>
+// of one message type is inlined into its caller with the message's own check, so that the
+// model's row is a constant: no model table, and not the paths this model never takes (another
+// LED form, frames its manual does not have). Where the caller's keypad address and fields are
+// constants, they fold too.
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<message> decode(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return decode(f, M, keypad);
+}
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_or_led> decode_key_or_led(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return decode_key_or_led(f, M, keypad);
+}
+
+template <model M, message_alternative T>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode(
+    const T& msg, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return detail::encode_on(detail::j1939_row_of(M), msg, keypad);
+}
+
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> encode(
+    const message& msg, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    return encode(M, msg, keypad);
+}
+
+namespace detail {
+// decode_key_contact up to the key contact state's own fields: one errc, so that the caller builds
+// one error result (each error path of a result<key_contact> writes a default message).
+constexpr errc key_contact_front(const can::frame& f, const model_row& r,
+                                 keypad_address keypad) noexcept {
+    if (!f.is_extended()) return errc::wrong_id_format;
+    if (((f.raw_id() >> 16) & 0x3FF) != 0xEF) return errc::wrong_id;
+    const route at = route_of(f.raw_id());
+    if (keypad && at.source != *keypad && at.destination != *keypad) return errc::wrong_id;
+    if (f.size() != 8) return errc::wrong_length;
+    const std::uint64_t w = f.data_le();
+    if ((w & 0xFF'FFFF) != header(0x01)) return errc::wrong_id;
+    if (is_led_command(r, at, w, keypad)) return errc::wrong_id;  // an LED command to the keypad
+    return sent(r, feature::key_contact, at, keypad);
+}
+}  // namespace detail
+
+// The key contact state alone, for a controller that reads nothing else from its keypad (the J1939
+// firmware of docs/performance.md): decode's answer when f is a key contact state (command 01h
+// read in the keypad's direction, as decode reads it), decode's error when f is one it refuses,
+// wrong_id for any other frame (an LED command to the keypad included). Only the model's key
+// contact path is in the program.
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_contact> decode_key_contact(
+    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+    static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
+    const errc e = detail::key_contact_front(f, detail::j1939_row_of(M), keypad);
+    if (e != errc{}) return e;
+    return detail::key_contact_of<key_contact>(detail::route_of(f.raw_id()), f.data_le());
+}
 }  // namespace powerkey::j1939
 
 #endif  // POWERKEY_KEYPAD_J1939_CODEC_HPP
