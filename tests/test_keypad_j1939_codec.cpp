@@ -258,6 +258,24 @@ static_assert(
                                   std::size(pkp2600si_rows)>);
 }  // namespace
 
+// Every member a command's row names (fields()), but its code and route, set from v: a bool to
+// v's low bit, a byte to v, an enum to its low nibble, a checked level to its low 6 bits.
+static void set_row_members(command& c, unsigned v) {
+    command::fields(c, [&](std::string_view name, auto& field) {
+        using T = std::remove_cvref_t<decltype(field)>;
+        if (name == "command" || name == "priority" || name == "destination" || name == "source")
+            return;
+        if constexpr (std::is_same_v<T, bool>)
+            field = (v & 1) != 0;
+        else if constexpr (std::is_same_v<T, std::uint8_t>)
+            field = static_cast<std::uint8_t>(v);
+        else if constexpr (std::is_enum_v<T>)
+            field = static_cast<T>(v & 0xF);
+        else
+            field = T::make(v & 0x3F).value();
+    });
+}
+
 TEST_CASE("j1939: decode_key_or_led answers as decode on every row, wrong_id off command 01h") {
     check_rows(pkp1600si_rows, key_or_led_row<j1939_rows::row>);
     check_rows(pkp2600si_rows, key_or_led_row<j1939_rows::row>);
@@ -362,20 +380,7 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                     command c = cmd(static_cast<cc>(code));
                     c.destination = route[0];
                     c.source = route[1];
-                    command::fields(c, [&](std::string_view name, auto& field) {
-                        using T = std::remove_cvref_t<decltype(field)>;
-                        if (name == "command" || name == "priority" || name == "destination" ||
-                            name == "source")
-                            return;
-                        if constexpr (std::is_same_v<T, bool>)
-                            field = (v & 1) != 0;
-                        else if constexpr (std::is_same_v<T, std::uint8_t>)
-                            field = static_cast<std::uint8_t>(v);
-                        else if constexpr (std::is_enum_v<T>)
-                            field = static_cast<T>(v & 0xF);
-                        else
-                            field = T::make(v & 0x3F).value();
-                    });
+                    set_row_members(c, v);
                     same = same && encodes_as_by_decode(m, c);
                     c.identifier = static_cast<std::uint8_t>(v ^ 0x40);  // maybe not its own
                     same = same && encodes_as_by_decode(m, c);
@@ -478,20 +483,7 @@ TEST_CASE("j1939: encode refuses or round-trips, over raw field values") {
                 CHECK(encodes_back(m, c));
                 // Only the members the command's row names.
                 command only = cmd(static_cast<cc>(code));
-                command::fields(only, [&](std::string_view name, auto& field) {
-                    using T = std::remove_cvref_t<decltype(field)>;
-                    if (name == "command" || name == "priority" || name == "destination" ||
-                        name == "source")
-                        return;
-                    if constexpr (std::is_same_v<T, bool>)
-                        field = (v & 1) != 0;
-                    else if constexpr (std::is_same_v<T, std::uint8_t>)
-                        field = static_cast<std::uint8_t>(v);
-                    else if constexpr (std::is_enum_v<T>)
-                        field = static_cast<T>(v & 0xF);
-                    else
-                        field = T::make(v & 0x3F).value();
-                });
+                set_row_members(only, v);
                 CHECK(encodes_back(m, only));
             }
         }

@@ -795,21 +795,19 @@ constexpr result<can::frame> checked_sdo(const model_layout& keypad, canopen::no
     });
 }
 
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
-                                       const sdo_read& v) noexcept {
-    return checked_sdo(keypad, node, v.object, sdo_verb::read, {});
-}
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
-                                       const sdo_write& v) noexcept {
-    return checked_sdo(keypad, node, v.object, sdo_verb::write, v.value);
-}
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
-                                       const sdo_write_reply& v) noexcept {
-    return checked_sdo(keypad, node, v.object, sdo_verb::write_reply, {});
-}
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
-                                       const sdo_read_reply& v) noexcept {
-    return checked_sdo(keypad, node, v.object, sdo_verb::read_reply, v.value);
+// An SDO read, write or reply as its own type: its verb, and its value when it carries one.
+template <class T>
+inline constexpr sdo_verb verb_of = std::is_same_v<T, sdo_read>          ? sdo_verb::read
+                                    : std::is_same_v<T, sdo_write>       ? sdo_verb::write
+                                    : std::is_same_v<T, sdo_write_reply> ? sdo_verb::write_reply
+                                                                         : sdo_verb::read_reply;
+template <class T>
+requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame> own_frame(
+    const model_layout& keypad, canopen::node_id node, const T& v) noexcept {
+    if constexpr (requires { v.value; })
+        return checked_sdo(keypad, node, v.object, verb_of<T>, v.value);
+    else
+        return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
 // A command: its bytes read back by read_command, the decoder's reading.
 constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
