@@ -744,10 +744,10 @@ constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node
 }
 
 // The SDO alternatives check themselves too: the row found by object once, the access decode
-// tests (unknown_command), and the value read back by value_message or read_command, the
-// decoder's own reading of the bytes built (no frame is decoded): a value that would come back as
-// another is value_out_of_range. Same answers as the frame read back (a test runs every manual
-// row and every object over many values through both).
+// tests (unknown_command), and the value read back from the bytes built with the checks and
+// reader value_message uses (read_command for a command): no frame is decoded; a value that would
+// come back as another is value_out_of_range. Same answers as the frame read back (a test runs
+// every object of every model over many values through both).
 template <class T>
 concept own_sdo = std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
     std::is_same_v<T, sdo_read_reply> || std::is_same_v<T, sdo_write_reply> ||
