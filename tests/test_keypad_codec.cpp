@@ -236,6 +236,16 @@ TEST_CASE("encode of a PDO that checks itself answers as the frame read back") {
     }
 }
 
+// The same at compile time, with the PKP manual's bytes (PKP section 13 a: LED 8 red; 1017h).
+static_assert(encode(keypad, model::pkp2400,
+                     command{
+                         .code = command_code::set_led_state, .key = 8, .state = led_state::red_on})
+                  .value() == frame_of("615#2300650101080100"));
+static_assert(encode(keypad, model::pkp2400, sdo_write{object::heartbeat_time, number_value(50)})
+                  .value() == frame_of("615#2B17100032000000"));
+static_assert(encode(keypad, model::pkp2400, message(led_on{leds{}.set(2, colour::red)})).value() ==
+              encode(keypad, model::pkp2400, led_on{leds{}.set(2, colour::red)}).value());
+
 // The SDO reads, writes, replies and commands as their own types check themselves the same way
 // (the row, its access, the value read back from the bytes built): the same answer as the frame
 // read back, for every

@@ -819,7 +819,9 @@ constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node
     if (!back) return back.error();
     command want = v;
     want.form = frame_form::manual;
-    if (const auto* c = std::get_if<command>(&*back); c == nullptr || !(*c == want))
+    // (holds_alternative and get, not get_if: g++ 12 refuses a null test of the address in a
+    // constant expression)
+    if (!std::holds_alternative<command>(*back) || !(std::get<command>(*back) == want))
         return errc::value_out_of_range;
     return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_rows[i], data);
 }
@@ -938,9 +940,12 @@ namespace detail {
 template <bool j1939>
 constexpr result<can::frame> encode_canopen(canopen::node_id node, model m,
                                             const message& msg) noexcept {
-    if (const auto* v = std::get_if<key_state>(&msg)) return own_frame(layout(m), node, *v);
-    if (const auto* v = std::get_if<led_on>(&msg)) return own_frame(layout(m), node, *v);
-    if (const auto* v = std::get_if<led_blink>(&msg)) return own_frame(layout(m), node, *v);
+    if (std::holds_alternative<key_state>(msg))
+        return own_frame(layout(m), node, std::get<key_state>(msg));
+    if (std::holds_alternative<led_on>(msg))
+        return own_frame(layout(m), node, std::get<led_on>(msg));
+    if (std::holds_alternative<led_blink>(msg))
+        return own_frame(layout(m), node, std::get<led_blink>(msg));
     const auto f = build(layout(m), node, msg);
     if (!f) return f.error();
     const auto back = decode_at<reading::strict, j1939>(*f, node, layout(m));
