@@ -1166,3 +1166,67 @@ TEST_CASE("controller, scripted: every timer the millisecond before and at its d
         CHECK(s.sent() == std::vector<std::string>{"215#0000000000000000", "315#0000000000000000"});
     }
 }
+
+// --- the model known when the program is built ------------------------------------------------
+
+namespace {
+// One session of every behaviour the controller has (setup with a configuration list and active
+// on startup, LEDs, levels, keys held, a node change, a reboot, a silence), as the bus and the
+// events show it, for controller<16, 64, Keypad>.
+template <class Keypad>
+std::pair<std::vector<std::string>, std::vector<controller_event>> whole_session(model m) {
+    const message config[] = {sdo_read{object::device_type}, sdo_read{object::heartbeat_time},
+                              sdo_write{object::led_brightness, level_value(lv(0x21))},
+                              sdo_read{object::model_name}};
+    controller_config cfg;
+    cfg.configuration = config;
+    cfg.start = start_mode::active_on_startup;
+    powerkey_tests::closed_loop<controller<16, 64, Keypad>> b(m, cfg, canopen::default_node_id);
+    b.keypad.power_on(b.at());
+    b.run(200);
+    b.ctl.set_led(some_led, colour::red);
+    b.ctl.set_led(3, colour::green, true);
+    b.ctl.set_brightness(lv(0x10));
+    b.ctl.set_backlight(lv(0x20), backlight_colour::red);
+    b.run(50);
+    b.keypad.press(1, b.at());
+    b.run(1000);
+    b.keypad.release(1, b.at());
+    b.ctl.change_node(node_id::make(0x3A).value());
+    b.run(300);
+    b.keypad.power_off();
+    b.keypad.power_on(b.at());
+    b.run(300);
+    b.keypad.silence(b.at(), duration_ms{1000});
+    b.run(1500);
+    return {b.candump(), b.events};
+}
+
+template <std::size_t... I>
+void compile_time_controllers_agree(std::index_sequence<I...>) {
+    (
+        [] {
+            constexpr model m = static_cast<model>(I);
+            INFO("model " << std::string(to_string(m)));
+            const auto run_time = whole_session<any_model>(m);
+            const auto compile_time = whole_session<model_constant<m>>(m);
+            CHECK(run_time.first == compile_time.first);
+            CHECK(run_time.second == compile_time.second);
+            // The session ran: set up twice (the reboot), a long press, lost once.
+            const auto count = [&](event_kind k) {
+                return std::count_if(compile_time.second.begin(), compile_time.second.end(),
+                                     [k](const controller_event& e) { return e.kind == k; });
+            };
+            CHECK(count(event_kind::ready) >= 2);
+            CHECK(count(event_kind::key_long_press) == 1);
+            CHECK(count(event_kind::lost) == 1);
+        }(),
+        ...);
+}
+}  // namespace
+
+// controller<..., model_constant<M>> (M's rows alone: firmware (c)) sends the same frames and
+// reports the same events as the run-time controller of M, for every model.
+TEST_CASE("controller: a model known at compile time behaves as the same model at run time") {
+    compile_time_controllers_agree(std::make_index_sequence<model_count>{});
+}

@@ -79,7 +79,27 @@ constexpr bool both_model_apis_agree(const Row& r) {
     return compile_time_model_agrees(frame_of(r.frame), node_of(r.node),
                                      std::make_index_sequence<model_count>{});
 }
+// ... and so do decode_canopen<M> and encode<M> of each message read (M's dictionary alone).
+template <model M>
+constexpr bool compile_time_canopen_agrees(const can::frame& f, canopen::node_id n) {
+    if (!(decode_canopen<M>(f, n) == decode_canopen(f, n, M))) return false;
+    const auto m = decode(f, n, M);
+    if (!m || f.is_extended()) return true;
+    return encode<M>(n, *m) == encode(n, M, *m);
+}
+template <std::size_t... I>
+constexpr bool compile_time_canopen_agrees(const can::frame& f, canopen::node_id n,
+                                           std::index_sequence<I...>) {
+    return (compile_time_canopen_agrees<static_cast<model>(I)>(f, n) && ...);
+}
+template <class Row>
+constexpr bool compile_time_canopen_rows_agree(const Row& r) {
+    return compile_time_canopen_agrees(frame_of(r.frame), node_of(r.node),
+                                       std::make_index_sequence<model_count>{});
+}
 static_assert(first_failing(core_rows, both_model_apis_agree<row>) == std::size(core_rows));
+static_assert(first_failing(core_rows, compile_time_canopen_rows_agree<row>) ==
+              std::size(core_rows));
 static_assert(first_failing(core_error_rows, both_model_apis_agree<error_row>) ==
               std::size(core_error_rows));
 
@@ -164,7 +184,9 @@ TEST_CASE("the codec's compile-time check of the command module, again at run ti
     CHECK(opaque(&detail::commands_writable)());
 }
 
-TEST_CASE("decode<M> with the model known at compile time answers as decode(f, node, M)") {
+TEST_CASE(
+    "decode<M>, decode_canopen<M> and encode<M> with the model known at compile time answer as the "
+    "run-time calls") {
     // Every manual row and every refusal row, through every model, read tolerantly and strictly.
     check_rows(core_rows, both_model_apis_agree<row>);
     check_rows(core_error_rows, both_model_apis_agree<error_row>);
@@ -176,6 +198,15 @@ TEST_CASE("decode<M> with the model known at compile time answers as decode(f, n
     check_rows(si_rows::error_rows, both_model_apis_agree<error_row>);
     check_rows(si_rows::errata_rows, both_model_apis_agree<error_row>);
     check_rows(si_reference_rows::rows, both_model_apis_agree<row>);
+    check_rows(core_rows, compile_time_canopen_rows_agree<row>);
+    check_rows(core_error_rows, compile_time_canopen_rows_agree<error_row>);
+    check_rows(pk1000_rows::rows, compile_time_canopen_rows_agree<row>);
+    check_rows(pk1000_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
+    check_rows(pkp_rows::rows, compile_time_canopen_rows_agree<row>);
+    check_rows(pkp_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
+    check_rows(si_rows::rows, compile_time_canopen_rows_agree<row>);
+    check_rows(si_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
+    check_rows(si_reference_rows::rows, compile_time_canopen_rows_agree<row>);
 }
 
 TEST_CASE("decode_canopen answers as decode on 11-bit frames and refuses 29-bit ones") {
@@ -207,9 +238,10 @@ result<can::frame> encode_by_reading_back(canopen::node_id node, model m, const 
     return *f;
 }
 
-// encode of key_state, led_on and led_blink, as their own types and as messages, checks the
-// fields itself (no decoder): the same answer as the frame read back, for every model over key
-// maps and LED maps with each bit alone and in blocks, and ticks.
+// encode of key_state, led_on, led_blink, led_brightness and backlight, as their own types and as
+// messages, checks the fields itself (no decoder): the same answer as the frame read back, for
+// every model over key maps and LED maps with each bit alone and in blocks, ticks, every level and
+// every colour byte.
 TEST_CASE("encode of a PDO that checks itself answers as the frame read back") {
     std::vector<std::uint32_t> masks{0, 0xFFFF'FFFF, 0x0000'FFFF, 0xFFFF'0000, 0x0FFF'FFFF};
     for (unsigned b = 0; b < 32; ++b) masks.push_back(std::uint32_t{1} << b);
@@ -232,6 +264,17 @@ TEST_CASE("encode of a PDO that checks itself answers as the frame read back") {
                 same(led_blink{l});
                 same(led_on{leds{{}, {}, led_set::from_mask(k)}});
             }
+        }
+        for (unsigned v = 0; v <= 0xFF; ++v) {  // every level (brightness) and colour byte
+            CAPTURE(v);
+            const auto same = [&](const auto& msg) {
+                const auto want = encode_by_reading_back(keypad, m, message(msg));
+                CHECK(encode(keypad, m, msg) == want);
+                CHECK(encode(keypad, m, message(msg)) == want);
+            };
+            const level l = level::make(v & 0x3F).value();
+            if (v <= 0x3F) same(led_brightness{l});
+            same(backlight{l, static_cast<backlight_colour>(v)});
         }
     }
 }

@@ -26,7 +26,7 @@ board_registers& board() { return *reinterpret_cast<board_registers*>(0x4000'646
 // Frames ready in the receive mailbox, without waiting (the loop also runs the timers).
 bool frame_waiting() { return firmware::rx().status != 0; }
 
-using keypad_controller = pb::controller<4, 8>;
+using keypad_controller = pb::controller<4, 8, pk::model_constant<pk::model::pkp2400>>;
 
 constexpr pk::message configuration[] = {
     pk::sdo_write{pk::object::led_brightness, pk::level_value(pk::level{0x30})},

@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <variant>
 
 namespace powerkey::behaviour {
@@ -149,13 +150,19 @@ inline constexpr std::size_t default_event_capacity = events_per_call(key_set::m
 // sdo_refused event with step max_configuration and value value_out_of_range says so.
 inline constexpr std::size_t max_configuration = 65535;
 
-template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = default_event_capacity>
+// Keypad: any_model, the model a value (cfg.keypad_model, or what 100Bh reports), or
+// model_constant<M>, a controller of model M alone that links M's rows only (firmware (c) of
+// docs/performance.md); it keeps M whatever 100Bh reports, and cfg.keypad_model is not read.
+template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = default_event_capacity,
+          class Keypad = any_model>
 class controller {
+    static constexpr bool fixed = !std::is_same_v<Keypad, any_model>;
+
 public:
     constexpr explicit controller(const controller_config& c) noexcept
         : cfg_(c),
-          model_(c.keypad_model),
-          info_(&powerkey::detail::row_or_none(c.keypad_model)),
+          model_(model_of(c)),
+          layout_(fixed ? nullptr : &powerkey::detail::layout_or_none(c.keypad_model)),
           node_(c.node),
           upload_(c.node) {}
 
@@ -194,7 +201,7 @@ public:
     // an LED it lacks, or a colour its planes cannot show (blue, cyan, magenta and white on a
     // keypad of red and green, or a value that is no colour).
     constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
-        if (k < 1 || k > info_->leds || ((info_->led_mask >> (k - 1)) & 1u) == 0) return false;
+        if (k < 1 || k > keypad().leds || ((keypad().led_mask >> (k - 1)) & 1u) == 0) return false;
         if (!shows(c)) return false;
         leds on = on_, bl = blink_;
         on.set(k, blink ? colour::off : c);
@@ -229,7 +236,7 @@ public:
     [[nodiscard]] constexpr bool fits(const leds& l) const noexcept {
         for (unsigned p = 0; p < 3; ++p) {
             const std::uint64_t mask = l.of(static_cast<plane>(p)).mask();
-            const std::uint64_t has = p < info_->planes ? info_->led_mask : 0u;
+            const std::uint64_t has = p < keypad().planes ? keypad().led_mask : 0u;
             if ((mask & ~has) != 0) return false;
         }
         return true;
@@ -237,7 +244,7 @@ public:
     // Whether the keypad can show colour c: a named colour within its colour planes.
     [[nodiscard]] constexpr bool shows(colour c) const noexcept {
         const auto planes = powerkey::detail::planes_of(c);
-        return is_named(c) && (planes >> info_->planes) == 0;
+        return is_named(c) && (planes >> keypad().planes) == 0;
     }
     // Move the keypad to node id n (PK1000 2013h, PKP command 70h), after the requests before it.
     constexpr void change_node(canopen::node_id n) noexcept { pending_node_change_ = n; }
@@ -307,7 +314,7 @@ private:
             on_sdo_reply(f, c.node);
         } else if (c.fn == canopen::function::tpdo1 && c.node == node_.value() &&
                    state_ != controller_state::searching) {
-            const auto m = decode(f, node_, model_);
+            const auto m = read(f);
             if (!m) return;
             heard();
             if (const auto k = powerkey::pressed_keys(*m)) {
@@ -422,8 +429,10 @@ private:
             std::uint32_t v = 0;
             const auto b = upload_.bytes();
             for (std::size_t i = 0; i < b.size() && i < 4; ++i) v |= std::uint32_t{b[i]} << (8 * i);
-            if (job_->origin == sdo_origin::identify) {
-                if (const auto m = model_from_report(upload_.text())) set_model(*m);
+            if constexpr (!fixed) {  // a model_constant keeps its model
+                if (job_->origin == sdo_origin::identify) {
+                    if (const auto m = model_from_report(upload_.text())) set_model(*m);
+                }
             }
             emit_sdo(event_kind::sdo_done, *job_, v);
             finish_job(true);
@@ -437,7 +446,7 @@ private:
                 node_ = *n;
                 upload_ = canopen::segmented_upload<16>(node_);
                 // PKP 13 h: a boot-up from the new id follows; it is not a reboot to report.
-                awaiting_boot_from_new_ = !info_->replies_from_new_id;
+                awaiting_boot_from_new_ = !replies_from_new_id();
                 emit(event_kind::node_changed);
             }
         }
@@ -447,18 +456,20 @@ private:
 
     constexpr void set_model(powerkey::model m) noexcept {
         if (!powerkey::detail::is_model(m)) return;
-        model_ = m;
-        info_ = &powerkey::detail::row_of(m);
+        if constexpr (!fixed) {
+            model_ = m;
+            layout_ = &powerkey::detail::layout(m);
+        }
     }
 
     // --- keys -------------------------------------------------------------------------------
 
     constexpr void on_keys(key_set now_pressed) noexcept {
-        keys_.update(now_pressed, info_->keys, now_, cfg_,
+        keys_.update(now_pressed, keypad().keys, now_, cfg_,
                      [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
     constexpr void key_timers() noexcept {
-        keys_.tick(info_->keys, now_, cfg_,
+        keys_.tick(keypad().keys, now_, cfg_,
                    [this](event_kind k, unsigned key) { emit_key(k, key); });
     }
 
@@ -495,8 +506,8 @@ private:
     constexpr void probe() noexcept {
         if (cfg_.probe_period.value == 0 || !reached(next_probe_, now_)) return;
         next_probe_ = now_ + cfg_.probe_period;
-        const auto row = find_row(info_->dictionary, object::device_type);
-        if (row) send_frame(canopen::encode(node_, canopen::sdo_upload_request{row->address}));
+        if (const auto a = address_of(object::device_type))
+            send_frame(canopen::encode(node_, canopen::sdo_upload_request{*a}));
     }
 
     constexpr void sdo_timer() noexcept {
@@ -569,7 +580,7 @@ private:
     }
 
     constexpr message active_message() const noexcept {
-        if (info_->dictionary == dictionary::pkp_li) {
+        if (keypad().dictionary == dictionary::pkp_li) {
             command c;
             c.code = command_code::set_active_on_startup;
             c.enabled = true;
@@ -593,35 +604,35 @@ private:
             const auto n = *pending_node_change_;
             pending_node_change_.reset();
             message m = sdo_write{object::node_id, node_value(n)};
-            if (info_->dictionary == dictionary::pkp_li) {
+            if (keypad().dictionary == dictionary::pkp_li) {
                 command c;
                 c.code = command_code::set_node_id;
                 c.node_id = n;
                 m = c;
             }
             if (begin_job(m, sdo_origin::node_change, 0)) {
-                if (info_->replies_from_new_id) job_->reply_node = n;  // PK1000 23
+                if (replies_from_new_id()) job_->reply_node = n;  // PK1000 23
                 return;
             }
         }
         // The shadow values this model takes by SDO only (no RPDO3/RPDO4 for them).
-        if (take(dirty_brightness, !info_->brightness_pdo && has_brightness_)) {
+        if (take(dirty_brightness, !keypad().brightness_pdo && has_brightness_)) {
             // By SDO write of the object. (The command module 6500h could set it too, but the one
             // dictionary with the module, the PKP's, also has the objects: 6201h sub 1 and 2.)
-            if (find_row(info_->dictionary, object::led_brightness) &&
+            if (has(object::led_brightness) &&
                 begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
                           sdo_origin::shadow, 0))
                 return;
         }
-        if (take(dirty_level, !info_->backlight_pdo && has_backlight_)) {
-            if (find_row(info_->dictionary, object::backlight_level) &&
+        if (take(dirty_level, !keypad().backlight_pdo && has_backlight_)) {
+            if (has(object::backlight_level) &&
                 begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
                           sdo_origin::shadow, 0))
                 return;
         }
         if (take(dirty_colour, !colour_by_pdo() && has_backlight_ &&
                                    backlight_colour_ != backlight_colour::keep)) {
-            if (find_row(info_->dictionary, object::backlight_colour)) {
+            if (has(object::backlight_colour)) {
                 if (begin_job(sdo_write{object::backlight_colour, colour_value(backlight_colour_)},
                               sdo_origin::shadow, 0))
                     return;
@@ -637,18 +648,25 @@ private:
     // Clears dirty bit `bit` when `mine` (the SDO path owns it) or there is nothing to send.
     constexpr bool take(std::uint8_t bit, bool mine) noexcept {
         if ((dirty_ & bit) == 0) return false;
-        const bool pdo_owned = (bit == dirty_brightness && info_->brightness_pdo) ||
-                               (bit == dirty_level && info_->backlight_pdo) ||
+        const bool pdo_owned = (bit == dirty_brightness && keypad().brightness_pdo) ||
+                               (bit == dirty_level && keypad().backlight_pdo) ||
                                (bit == dirty_colour && colour_by_pdo());
         if (pdo_owned) return false;  // send_shadow's
         dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
         return mine;
     }
-    constexpr bool has_commands() const noexcept {
-        return find_row(info_->dictionary, object::command_module).has_value();
+    constexpr bool has_commands() const noexcept { return has(object::command_module); }
+    // Whether the model's dictionary has object o, and its address.
+    constexpr bool has(object o) const noexcept {
+        return powerkey::detail::find_codec_row(keypad(), o) != 0;
+    }
+    constexpr std::optional<canopen::sdo_address> address_of(object o) const noexcept {
+        const std::uint8_t i = powerkey::detail::find_codec_row(keypad(), o);
+        if (i == 0) return std::nullopt;
+        return powerkey::detail::codec_row_at(keypad(), i).address();
     }
     constexpr bool colour_by_pdo() const noexcept {
-        return info_->backlight_pdo && info_->backlight_colour;
+        return keypad().backlight_pdo && keypad().backlight_colour;
     }
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
@@ -668,14 +686,14 @@ private:
             return false;  // not an SDO request: skipped
         }
         j.what = o;
-        const auto row = find_row(info_->dictionary, o);
-        const auto f = encode(node_, model_, msg);
-        if (!row || !f) {
+        const auto address = address_of(o);
+        const auto f = frame_of(msg);
+        if (!address || !f) {
             emit_sdo(event_kind::sdo_refused, j,
                      static_cast<std::uint32_t>(f ? errc::unknown_object : f.error()));
             return false;
         }
-        j.address = row->address;
+        j.address = *address;
         job_ = j;
         attempts_ = 0;
         sent_ = false;
@@ -685,7 +703,7 @@ private:
 
     constexpr void send_job() noexcept {
         if (!job_) return;
-        const auto f = encode(node_, model_, job_->request);
+        const auto f = frame_of(job_->request);
         if (!f) return;
         if (job_->read) (void)upload_.start(job_->address);
         if (!send_frame(*f)) return;
@@ -705,28 +723,72 @@ private:
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_on);
         if ((dirty_ & dirty_blink) != 0 && send_message(powerkey::led_blink{blink_}))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_blink);
-        if (info_->brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
+        if (keypad().brightness_pdo && (dirty_ & dirty_brightness) != 0 &&
             (!has_brightness_ || send_message(led_brightness{brightness_})))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~dirty_brightness);
         const std::uint8_t pdo_bits =
             static_cast<std::uint8_t>(dirty_level | (colour_by_pdo() ? dirty_colour : 0));
-        if (info_->backlight_pdo && (dirty_ & pdo_bits) != 0 &&
+        if (keypad().backlight_pdo && (dirty_ & pdo_bits) != 0 &&
             (!has_backlight_ ||
              send_message(backlight{backlight_level_,
                                     colour_by_pdo() ? backlight_colour_ : backlight_colour::keep})))
             dirty_ = static_cast<std::uint8_t>(dirty_ & ~pdo_bits);
     }
 
-    constexpr bool send_message(const message& msg) noexcept {
-        const auto f = encode(node_, model_, msg);
+    template <class T>
+    constexpr bool send_message(const T& msg) noexcept {
+        const auto f = frame_of(msg);
         if (!f) return true;  // nothing this model can carry: not retried
         return send_frame(*f);
     }
     constexpr bool send_frame(const can::frame& f) noexcept { return outbox_.push(f); }
 
     controller_config cfg_;
+    // The model's layout (the codec's part of its row) and dictionary lookups: M's alone for a
+    // model_constant, every model's for any_model.
+    constexpr const auto& keypad() const noexcept {
+        if constexpr (fixed)
+            return powerkey::detail::fixed_layout_v<Keypad::value>;
+        else
+            return *layout_;
+    }
+    // After a node-id change the keypad answers from the new id (model_info::replies_from_new_id).
+    constexpr bool replies_from_new_id() const noexcept {
+        if constexpr (fixed)
+            return powerkey::detail::row_of(Keypad::value).replies_from_new_id;
+        else
+            return powerkey::detail::row_or_none(model_).replies_from_new_id;
+    }
+    static constexpr powerkey::model model_of(const controller_config& c) noexcept {
+        if constexpr (fixed)
+            return Keypad::value;
+        else
+            return c.keypad_model;
+    }
+    // The keypad's frames read and built (CANopen only: the controller speaks no J1939).
+    constexpr result<message> read(const can::frame& f) const noexcept {
+        if constexpr (fixed)
+            return decode_canopen<Keypad::value>(f, node_);
+        else
+            return decode_canopen(f, node_, model_);
+    }
+    // Every message it sends checks its own fields (encode's own checks): no decoder is needed
+    // to build them.
+    template <class T>
+    constexpr result<can::frame> frame_of(const T& msg) const noexcept {
+        if (!fixed && !powerkey::detail::is_model(model_)) return errc::value_out_of_range;
+        return powerkey::detail::own_frame(keypad(), node_, msg);
+    }
+    // An SDO request: sdo_read, sdo_write or command (begin_job takes no other).
+    constexpr result<can::frame> frame_of(const message& msg) const noexcept {
+        if (std::holds_alternative<sdo_read>(msg)) return frame_of(std::get<sdo_read>(msg));
+        if (std::holds_alternative<sdo_write>(msg)) return frame_of(std::get<sdo_write>(msg));
+        if (std::holds_alternative<command>(msg)) return frame_of(std::get<command>(msg));
+        return errc::unknown_command;
+    }
+
     powerkey::model model_;
-    const model_info* info_;  // the model's row (detail::row_or_none)
+    const powerkey::detail::model_layout* layout_;  // any_model: detail::layout_or_none
     canopen::node_id node_;
     controller_state state_ = controller_state::searching;
     std::optional<canopen::nmt_state> keypad_state_;

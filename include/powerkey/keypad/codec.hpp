@@ -57,10 +57,10 @@ constexpr result<message> answer(const T& v) noexcept {
 // pays nothing for the tolerance. Defined here, before any use (clang evaluates a constant
 // expression only through functions defined where it is used); reread, defined after the front
 // it calls, is declared here.
-template <bool j1939>
-constexpr result<message> reread(const can::frame& f, const model_layout& keypad) noexcept;
-template <reading how, class Frame>
-constexpr result<message> misfit(const Frame& f, const model_layout& keypad) noexcept {
+template <bool j1939, class Layout>
+constexpr result<message> reread(const can::frame& f, const Layout& keypad) noexcept;
+template <reading how, class Frame, class Layout>
+constexpr result<message> misfit(const Frame& f, const Layout& keypad) noexcept {
     if constexpr (how == reading::strict)
         return errc::wrong_length;
     else
@@ -69,9 +69,9 @@ constexpr result<message> misfit(const Frame& f, const model_layout& keypad) noe
 
 // The answer of a decoder of the CiA 301 or J1939 layer (NMT, SYNC, the switch back), its
 // wrong_length read again as every other frame's.
-template <reading how, class T>
+template <reading how, class T, class Layout>
 constexpr result<message> lift(const result<T>& r, const can::frame& f,
-                               const model_layout& keypad) noexcept {
+                               const Layout& keypad) noexcept {
     if (!r) return r.error() == errc::wrong_length ? misfit<how>(f, keypad) : r.error();
     return answer(*r);
 }
@@ -361,25 +361,25 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_request(canopen::sdo_word w
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address); unknown_command (an access the row lacks); then value_message's or
 // read_command's.
-template <reading how>
-constexpr result<message> decode_request(const model_layout& keypad, const can::frame& f) noexcept {
+template <reading how, class Layout>
+constexpr result<message> decode_request(const Layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return misfit<how>(f, keypad);
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_request<result<message>>(
         w,
         [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // an expedited write
-            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
+            const std::uint8_t i = find_codec_row(keypad, w.key());
             if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i];
+            const codec_row& r = codec_row_at(keypad, i);
             if (r.kind == value_kind::commands)  // writable (commands_writable): tested first
                 return read_command(keypad, w.size(), w.data());
             if (!r.writable()) return errc::unknown_command;
             return value_message(keypad, r, w.size(), w.data(), true);
         },
         [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a read
-            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
+            const std::uint8_t i = find_codec_row(keypad, w.key());
             if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i];
+            const codec_row& r = codec_row_at(keypad, i);
             if (!r.readable()) return errc::unknown_command;
             return answer(sdo_read{r.id});
         },
@@ -388,15 +388,16 @@ constexpr result<message> decode_request(const model_layout& keypad, const can::
 
 // A segment, the initiation of a segmented upload (of a string object only) or an abort from the
 // keypad, or a refusal.
-POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& keypad,
+template <class Layout>
+POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const Layout& keypad,
                                                            canopen::sdo_word w) noexcept {
     const auto op = canopen::other_response_op(w);
     if (!op) return op.error();
     if (*op == canopen::sdo_op::segment) return message{w.segment()};
     if (*op == canopen::sdo_op::upload_initiate) {
-        const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
+        const std::uint8_t i = find_codec_row(keypad, w.key());
         if (i == 0) return errc::unknown_object;
-        if (codec_rows[i].kind != value_kind::string) return errc::unknown_object;
+        if (codec_row_at(keypad, i).kind != value_kind::string) return errc::unknown_object;
         return message{w.upload_initiate()};
     }
     return message{canopen::sdo_abort_response{w.abort()}};
@@ -405,23 +406,23 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const model_layout& k
 // Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
 // such address, or a segmented upload of an object that is not a string); unknown_command (an
 // access the row lacks); then value_message's.
-template <reading how>
-constexpr result<message> decode_reply(const model_layout& keypad, const can::frame& f) noexcept {
+template <reading how, class Layout>
+constexpr result<message> decode_reply(const Layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return misfit<how>(f, keypad);
     const auto w = canopen::sdo_word::of(f);
     return canopen::visit_sdo_response<result<message>>(
         w,
         [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // a write acknowledged
-            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
+            const std::uint8_t i = find_codec_row(keypad, w.key());
             if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i];
+            const codec_row& r = codec_row_at(keypad, i);
             if (!r.writable()) return errc::unknown_command;
             return answer(sdo_write_reply{r.id});
         },
         [&keypad, w]() POWERKEY_DETAIL_INLINE_LAMBDA -> result<message> {  // the value read
-            const std::uint8_t i = find_codec_row(keypad.dictionary, w.key());
+            const std::uint8_t i = find_codec_row(keypad, w.key());
             if (i == 0) return errc::unknown_object;
-            const codec_row& r = codec_rows[i];
+            const codec_row& r = codec_row_at(keypad, i);
             if (!r.readable()) return errc::unknown_command;
             return value_message(keypad, r, w.size(), w.data(), false);
         },
@@ -583,7 +584,8 @@ constexpr std::uint8_t bytes_of(std::uint64_t mask) noexcept {
 // high bytes of a value whose range never reaches them, the bytes past an SDO's size). A frame
 // cut after them says all that its manual form says. `printed` is msg's frame in the manual's
 // form: an SDO value's row and a command's parameters are looked up as the decoder found them.
-constexpr std::uint8_t used_length(const model_layout& keypad, const message& msg,
+template <class Layout>
+constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
                                    const can::frame& printed) noexcept {
     return std::visit(
         [&keypad, &printed](const auto& v) -> std::uint8_t {
@@ -610,10 +612,10 @@ constexpr std::uint8_t used_length(const model_layout& keypad, const message& ms
             } else if constexpr (std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply>) {
                 const auto key = canopen::sdo_word::of(printed).key();
-                const codec_row& r = codec_rows[find_codec_row(keypad.dictionary, key)];
+                const codec_row& r = codec_row_at(keypad, find_codec_row(keypad, key));
                 const std::uint8_t size = row_size(keypad, r, v.value.size);
-                const std::uint32_t bits =
-                    visit_kind(r.kind, [&](auto k) { return decltype(k)::used_bits(keypad, r); });
+                const std::uint32_t bits = visit_row_kind(
+                    keypad, r.kind, [&](auto k) { return decltype(k)::used_bits(keypad, r); });
                 return static_cast<std::uint8_t>(4 + bytes_of(bits & largest_of_size[size & 7u]));
             } else if constexpr (std::is_same_v<T, command>) {
                 const std::uint8_t pair = command_shape_index[static_cast<std::uint8_t>(v.code)];
@@ -649,8 +651,8 @@ POWERKEY_DETAIL_INLINE constexpr can::frame word_frame(canopen::function fn, can
 }
 
 // The frame of one alternative v (not checked: encode reads it back, or checks v first).
-template <class T>
-constexpr result<can::frame> build_of(const model_layout& keypad, canopen::node_id node,
+template <class T, class Layout>
+constexpr result<can::frame> build_of(const Layout& keypad, canopen::node_id node,
                                       const T& v) noexcept {
     using canopen::function;
     if constexpr (std::is_same_v<T, canopen::nmt_message> ||
@@ -684,9 +686,9 @@ constexpr result<can::frame> build_of(const model_layout& keypad, canopen::node_
             v.level.value() | (std::uint64_t{static_cast<std::uint8_t>(v.colour)} << 8));
     } else if constexpr (std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
                          std::is_same_v<T, sdo_read_reply> || std::is_same_v<T, sdo_write_reply>) {
-        const std::uint8_t i = find_codec_row(keypad.dictionary, v.object);
+        const std::uint8_t i = find_codec_row(keypad, v.object);
         if (i == 0) return errc::unknown_object;
-        const codec_row& row = codec_rows[i];
+        const codec_row& row = codec_row_at(keypad, i);
         if constexpr (std::is_same_v<T, sdo_read>) {
             return canopen::encode(node, canopen::sdo_upload_request{row.address()});
         } else if constexpr (std::is_same_v<T, sdo_write_reply>) {
@@ -701,15 +703,16 @@ constexpr result<can::frame> build_of(const model_layout& keypad, canopen::node_
                                              row.address(), write_value(keypad, row, v.value)});
         }
     } else if constexpr (std::is_same_v<T, command>) {
-        const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
+        const std::uint8_t i = find_codec_row(keypad, object::command_module);
         if (i == 0) return errc::unknown_object;
-        return canopen::encode(
-            node, canopen::sdo_download_request{codec_rows[i].address(), write_command(v)});
+        return canopen::encode(node, canopen::sdo_download_request{
+                                         codec_row_at(keypad, i).address(), write_command(v)});
     } else {
         return canopen::encode(node, v);  // heartbeat, segments, initiate, aborts
     }
 }
-constexpr result<can::frame> build(const model_layout& keypad, canopen::node_id node,
+template <class Layout>
+constexpr result<can::frame> build(const Layout& keypad, canopen::node_id node,
                                    const message& msg) noexcept {
     return std::visit([&keypad, node](const auto& v) { return build_of(keypad, node, v); }, msg);
 }
@@ -724,6 +727,19 @@ constexpr errc own_check(const model_layout& keypad, const key_state& v) noexcep
     if ((k & 0xFFFF & keypad.not_keys) != 0) return errc::reserved_not_zero;
     return k > 0xFFFF ? errc::value_out_of_range : errc{};
 }
+// RPDO3 brightness: a model whose RPDO3 is the encoder rings reads the frame as them; one without
+// the PDO refuses the identifier. (The level is in range by its type.)
+constexpr errc own_check(const model_layout& keypad, const led_brightness&) noexcept {
+    if (keypad.encoder_leds_pdo) return errc::value_out_of_range;
+    return keypad.brightness_pdo ? errc{} : errc::wrong_id;
+}
+// RPDO4 backlight: a colour byte on a level-only keypad is reserved, a colour past 09h none.
+constexpr errc own_check(const model_layout& keypad, const backlight& v) noexcept {
+    if (!keypad.backlight_pdo) return errc::wrong_id;
+    const auto colour = static_cast<std::uint8_t>(v.colour);
+    if (!keypad.backlight_colour && colour != 0) return errc::reserved_not_zero;
+    return colour > 0x09 ? errc::value_out_of_range : errc{};
+}
 template <class T>
 requires(std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) constexpr errc
     own_check(const model_layout& keypad, const T& v) noexcept {
@@ -735,9 +751,9 @@ requires(std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>) constexpr er
 }
 
 // The frame of a PDO that checks itself, checked.
-template <class T>
+template <class T, class Layout>
 requires requires(const model_layout& k, const T& v) { own_check(k, v); }
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
                                        const T& v) noexcept {
     if (const errc e = own_check(keypad, v); e != errc{}) return e;
     return build_of(keypad, node, v);
@@ -764,12 +780,13 @@ POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, cano
 // object `id` (value `v` for the two that carry one), checked. One function for the four: one
 // copy in a program.
 enum class sdo_verb : std::uint8_t { read, write, write_reply, read_reply };
-constexpr result<can::frame> checked_sdo(const model_layout& keypad, canopen::node_id node,
-                                         object id, sdo_verb verb, const object_value& v) noexcept {
+template <class Layout>
+constexpr result<can::frame> checked_sdo(const Layout& keypad, canopen::node_id node, object id,
+                                         sdo_verb verb, const object_value& v) noexcept {
     using canopen::function;
-    const std::uint8_t i = find_codec_row(keypad.dictionary, id);
+    const std::uint8_t i = find_codec_row(keypad, id);
     if (i == 0) return errc::unknown_object;
-    const codec_row& row = codec_rows[i];
+    const codec_row& row = codec_row_at(keypad, i);
     const bool write = verb == sdo_verb::write || verb == sdo_verb::write_reply;
     if (verb == sdo_verb::write && row.kind == value_kind::commands)
         return errc::unknown_object;  // a `command`
@@ -777,7 +794,7 @@ constexpr result<can::frame> checked_sdo(const model_layout& keypad, canopen::no
     if (verb == sdo_verb::read) return sdo_frame(function::sdo_rx, node, 0x40, row, 0);
     if (verb == sdo_verb::write_reply) return sdo_frame(function::sdo_tx, node, 0x60, row, 0);
     // What write_value builds and value_message reads, in one visit of the row's kind.
-    return visit_kind(row.kind, [&](auto k) -> result<can::frame> {
+    return visit_row_kind(keypad, row.kind, [&](auto k) -> result<can::frame> {
         using K = decltype(k);
         const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
         const auto sent = canopen::expedited_size::make(
@@ -801,18 +818,19 @@ inline constexpr sdo_verb verb_of = std::is_same_v<T, sdo_read>          ? sdo_v
                                     : std::is_same_v<T, sdo_write>       ? sdo_verb::write
                                     : std::is_same_v<T, sdo_write_reply> ? sdo_verb::write_reply
                                                                          : sdo_verb::read_reply;
-template <class T>
+template <class T, class Layout>
 requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame> own_frame(
-    const model_layout& keypad, canopen::node_id node, const T& v) noexcept {
+    const Layout& keypad, canopen::node_id node, const T& v) noexcept {
     if constexpr (requires { v.value; })
         return checked_sdo(keypad, node, v.object, verb_of<T>, v.value);
     else
         return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
 // A command: its bytes read back by read_command, the decoder's reading.
-constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node_id node,
+template <class Layout>
+constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
                                        const command& v) noexcept {
-    const std::uint8_t i = find_codec_row(keypad.dictionary, object::command_module);
+    const std::uint8_t i = find_codec_row(keypad, object::command_module);
     if (i == 0) return errc::unknown_object;
     const auto data = static_cast<std::uint32_t>(load_le<4>(write_command(v).bytes, 0));
     const auto back = read_command(keypad, 4, data);
@@ -823,16 +841,16 @@ constexpr result<can::frame> own_frame(const model_layout& keypad, canopen::node
     // constant expression)
     if (!std::holds_alternative<command>(*back) || !(std::get<command>(*back) == want))
         return errc::value_out_of_range;
-    return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_rows[i], data);
+    return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_row_at(keypad, i), data);
 }
 
 // The front. Every length test sends a frame of another length to misfit. With `j1939` false a
 // 29-bit frame is wrong_id and no J1939 code is in the program (decode_canopen). Testing for
 // 29-bit frames after the front instead (one copy of the front for both) cost every CANopen
 // frame 7 instructions.
-template <reading how, bool j1939 = true>
+template <reading how, bool j1939 = true, class Layout = model_layout>
 POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, canopen::node_id node,
-                                                        const model_layout& keypad) noexcept {
+                                                        const Layout& keypad) noexcept {
     // The same classification as canopen::classify, written into the dispatch (every frame
     // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
     // function code: rotated right by 7, the function code alone. Any other frame rotates past
@@ -886,9 +904,9 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
 // length never come here. It reads with the strict decoder, so nothing here recurses. The node is
 // the frame's own: a PDO, SDO or heartbeat comes with this node's COB-ID, and NMT and SYNC read
 // the same for every node.
-template <bool j1939>
+template <bool j1939, class Layout>
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
-                                                      const model_layout& keypad) noexcept {
+                                                      const Layout& keypad) noexcept {
     const std::uint32_t own = f.id_word() & 0x7F;
     const auto node = *canopen::node_id::make(own == 0 ? 1 : own);
     const std::uint8_t n = f.size();
@@ -937,21 +955,29 @@ namespace detail {
 // copy of it; false: decode_canopen's). The SDO messages check themselves too (checked_sdo), but
 // here they are read back: a program that encodes a `message` holds the decoder anyway, and the
 // value checks written twice cost firmware (c) 4 KB (docs/performance.md).
-template <bool j1939>
-constexpr result<can::frame> encode_canopen(canopen::node_id node, model m,
+template <bool j1939, class Layout>
+constexpr result<can::frame> encode_canopen(canopen::node_id node, const Layout& keypad,
                                             const message& msg) noexcept {
     if (std::holds_alternative<key_state>(msg))
-        return own_frame(layout(m), node, std::get<key_state>(msg));
-    if (std::holds_alternative<led_on>(msg))
-        return own_frame(layout(m), node, std::get<led_on>(msg));
+        return own_frame(keypad, node, std::get<key_state>(msg));
+    if (std::holds_alternative<led_on>(msg)) return own_frame(keypad, node, std::get<led_on>(msg));
     if (std::holds_alternative<led_blink>(msg))
-        return own_frame(layout(m), node, std::get<led_blink>(msg));
-    const auto f = build(layout(m), node, msg);
+        return own_frame(keypad, node, std::get<led_blink>(msg));
+    if (std::holds_alternative<led_brightness>(msg))
+        return own_frame(keypad, node, std::get<led_brightness>(msg));
+    if (std::holds_alternative<backlight>(msg))
+        return own_frame(keypad, node, std::get<backlight>(msg));
+    const auto f = build(keypad, node, msg);
     if (!f) return f.error();
-    const auto back = decode_at<reading::strict, j1939>(*f, node, layout(m));
+    const auto back = decode_at<reading::strict, j1939>(*f, node, keypad);
     if (!back) return back.error();
     if (!(*back == with_form(msg, frame_form::manual))) return errc::value_out_of_range;
     return *f;
+}
+template <bool j1939>
+constexpr result<can::frame> encode_canopen(canopen::node_id node, model m,
+                                            const message& msg) noexcept {
+    return encode_canopen<j1939>(node, layout(m), msg);
 }
 
 // An alternative of message that is not J1939's.
@@ -960,12 +986,11 @@ concept canopen_alternative = !is_j1939_alternative<T> && requires(const T& v) {
     {message(std::in_place_type<T>, v)};
 };
 
-template <bool j1939>
+template <bool j1939, class Layout>
 POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
-                                                           canopen::node_id node, model m,
+                                                           canopen::node_id node,
+                                                           const Layout& keypad,
                                                            reading how) noexcept {
-    if (!is_model(m)) return errc::value_out_of_range;
-    const model_layout& keypad = layout(m);
     if (how == reading::strict || POWERKEY_DETAIL_SIZE) {
         // Under -Os one decoder, the strict one, serves both readings (the tolerant one would be a
         // second copy): a frame of the manual's length then pays one test of its result.
@@ -974,6 +999,13 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
         return reread<j1939>(f, keypad);
     }
     return decode_at<reading::tolerant, j1939>(f, node, keypad);
+}
+template <bool j1939>
+POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
+                                                           canopen::node_id node, model m,
+                                                           reading how) noexcept {
+    if (!is_model(m)) return errc::value_out_of_range;
+    return decode_on<j1939>(f, node, layout(m), how);
 }
 }  // namespace detail
 
@@ -991,14 +1023,22 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
 }
 
 // decode for a keypad whose model is known when the program is built: decode<model::pk1000>(f,
-// node). The model is a constant, so every test of its row folds away and the cases it never
-// has (another model's PDOs and objects) are not in the program. Same results as decode(f, node,
-// M, how) for every frame.
+// node). The model is a constant, so every test of its row folds away, the cases it never has
+// (another model's PDOs and objects) are not in the program, and its objects are looked up in its
+// own dictionary's tables (detail::one_dictionary), not every dictionary's. Same results as
+// decode(f, node, M, how) for every frame.
 template <model M>
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
     const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
     static_assert(detail::is_model(M), "M is a row of the model table");
-    return decode(f, node, M, how);
+    return detail::decode_on<true>(f, node, detail::fixed_layout_v<M>, how);
+}
+// decode_canopen for a keypad whose model is known when the program is built.
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode_canopen(
+    const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    return detail::decode_on<false>(f, node, detail::fixed_layout_v<M>, how);
 }
 
 // decode with the J1939 frames narrowed to the keypad at `address` (j1939::decode's `keypad`: its
@@ -1030,8 +1070,9 @@ template <model M>
 
 // The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
 // is in the program.
-// A message that checks itself (key_state, led_on, led_blink: detail::own_check; the SDO reads,
-// writes, replies and commands: detail::own_frame) links no decoder.
+// A message that checks itself (key_state, led_on, led_blink, led_brightness, backlight:
+// detail::own_check; the SDO reads, writes, replies and commands: detail::own_frame) links no
+// decoder.
 template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {
@@ -1044,6 +1085,29 @@ template <detail::canopen_alternative T>
         return detail::encode_canopen<false>(node, m, message(msg));
     }
 }
+
+// encode of a CANopen message for a keypad whose model is known when the program is built:
+// encode<model::pkp2400>(node, msg), the same frame or error as encode(node, M, msg), with M's
+// dictionary alone in the program. A J1939 message is refused (wrong_id_format): its encoder is
+// j1939::encode<M>.
+template <model M>
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
+                                                  const message& msg) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    if (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index)
+        return errc::wrong_id_format;
+    return detail::encode_canopen<false>(node, detail::fixed_layout_v<M>, msg);
+}
+
+// The model of a behaviour class (behaviour::controller's Keypad): any_model, a value chosen at
+// run time (every model's tables in the program), or model_constant<M>, known when the program is
+// built (M's rows alone).
+struct any_model {};
+template <model M>
+struct model_constant {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    static constexpr model value = M;
+};
 
 // The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,
 // model, address) reads it (a key contact state to an address needs it: otherwise its bytes

@@ -12,6 +12,7 @@
 #include <powerkey/detail/inline.hpp>
 #include <powerkey/detail/lookup.hpp>
 #include <powerkey/keypad/dictionaries.hpp>
+#include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 
 #include <array>
@@ -229,6 +230,98 @@ constexpr std::uint8_t find_codec_row(dictionary d, object o) noexcept {
     const auto i = static_cast<std::size_t>(o);
     if (i >= object_count) return 0;
     return codec_rows_by_object[static_cast<std::size_t>(d)][i];
+}
+
+// --- one dictionary, known when the program is built ---------------------------------------------
+// The same lookups over dictionary D's rows alone (numbered 1.. in their order, 0 the sentinel),
+// with the same hash and probes: a program whose model is a template argument (model_constant)
+// links these and not the tables of every dictionary.
+template <dictionary D>
+struct one_dictionary {
+    static constexpr std::span<const object_row> full =
+        dictionary_rows[static_cast<std::size_t>(D)];
+    static constexpr auto rows = [] {
+        std::array<codec_row, full.size() + 1> t{};
+        t[0] = no_codec_row;
+        for (std::size_t i = 0; i < full.size(); ++i) t[i + 1] = codec_row_of(full[i]);
+        return t;
+    }();
+    static constexpr auto slots = [] {
+        std::array<std::uint8_t, slots_per_dictionary> t{};
+        for (std::size_t i = 0; i < full.size(); ++i) {
+            std::size_t s = home_slot(wire_key(full[i].address), hash_multiplier, 32 - slot_bits);
+            while (t[s] != 0) s = (s + 1) % slots_per_dictionary;
+            t[s] = static_cast<std::uint8_t>(i + 1);
+        }
+        return t;
+    }();
+    static constexpr auto by_object = [] {
+        std::array<std::uint8_t, object_count> t{};
+        for (std::size_t i = 0; i < full.size(); ++i)
+            t[static_cast<std::size_t>(full[i].id)] = static_cast<std::uint8_t>(i + 1);
+        return t;
+    }();
+    static constexpr std::uint8_t find(std::uint32_t key) noexcept {
+        key &= 0xFF'FFFF;
+        const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
+        const std::uint8_t s = slots[home];
+        if (rows[s].key == key) return matched_row(s);
+        const std::uint8_t t = slots[(home + 1) % slots_per_dictionary];
+        if (rows[t].key == key) return matched_row(t);
+        return 0;
+    }
+    static constexpr std::uint8_t find(object o) noexcept {
+        const auto i = static_cast<std::size_t>(o);
+        return i < object_count ? by_object[i] : std::uint8_t{0};
+    }
+};
+
+// A model's layout as a type (its dictionary's lookups chosen by overload): what the codec reads
+// for a keypad whose model is a template argument. A codec function that looks rows up takes
+// its keypad as `const Layout&`, so that the static type chooses the tables; every other one takes
+// the model_layout inside.
+template <model M>
+struct fixed_layout : model_layout {
+    static constexpr powerkey::dictionary dictionary_value = row_of(M).dictionary;
+};
+template <model M>
+inline constexpr fixed_layout<M> fixed_layout_v{layout_of(row_of(M))};
+template <class Layout>
+inline constexpr bool is_fixed_layout = false;
+template <model M>
+inline constexpr bool is_fixed_layout<fixed_layout<M>> = true;
+
+// The value kinds of dictionary d's rows, bit k for kind k (every kind has a bit).
+static_assert(std::size(enum_names<value_kind>::entries) <= 64);
+constexpr std::uint64_t kinds_of(dictionary d) noexcept {
+    std::uint64_t has = 0;
+    for (const auto& r : dictionary_rows[static_cast<std::size_t>(d)])
+        has |= std::uint64_t{1} << static_cast<unsigned>(
+                   object_infos[static_cast<std::size_t>(r.id)].kind);
+    return has;
+}
+
+// The codec row number of a key or an object in keypad's dictionary (0: none), and the row.
+constexpr std::uint8_t find_codec_row(const model_layout& keypad, std::uint32_t key) noexcept {
+    return find_codec_row(keypad.dictionary, key);
+}
+constexpr std::uint8_t find_codec_row(const model_layout& keypad, object o) noexcept {
+    return find_codec_row(keypad.dictionary, o);
+}
+constexpr const codec_row& codec_row_at(const model_layout&, std::uint8_t i) noexcept {
+    return codec_rows[i];
+}
+template <model M>
+constexpr std::uint8_t find_codec_row(const fixed_layout<M>&, std::uint32_t key) noexcept {
+    return one_dictionary<row_of(M).dictionary>::find(key);
+}
+template <model M>
+constexpr std::uint8_t find_codec_row(const fixed_layout<M>&, object o) noexcept {
+    return one_dictionary<row_of(M).dictionary>::find(o);
+}
+template <model M>
+constexpr const codec_row& codec_row_at(const fixed_layout<M>&, std::uint8_t i) noexcept {
+    return one_dictionary<row_of(M).dictionary>::rows[i];
 }
 }  // namespace detail
 

@@ -334,6 +334,11 @@ inline constexpr auto model_layouts = [] {
 constexpr const model_layout& layout(model m) noexcept {
     return model_layouts[static_cast<std::size_t>(m)];
 }
+// The layout of a model; for a value that is not one, zeros (as row_or_none).
+inline constexpr model_layout no_model_layout{};
+constexpr const model_layout& layout_or_none(model m) noexcept {
+    return is_model(m) ? layout(m) : no_model_layout;
+}
 }  // namespace detail
 
 // A set of models, of any size the table has: the models a test row or a string applies to.

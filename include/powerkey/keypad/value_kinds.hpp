@@ -528,6 +528,28 @@ POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_kind(value_kind k, F&& f) 
     return f(value_kinds::none{});
 }
 
+// visit_kind of a row of keypad's dictionary: for a model known when the program is built
+// (detail::fixed_layout), only the kinds its dictionary has are in the program (any other k, which
+// no row of it has, is none's).
+template <class Layout, class F>
+POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_row_kind(const Layout&, value_kind k, F&& f) {
+    if constexpr (detail::is_fixed_layout<Layout>) {
+        constexpr std::uint64_t has = detail::kinds_of(Layout::dictionary_value);
+        switch (k) {
+#define POWERKEY_DETAIL_KIND_CASE(name)                                           \
+    case value_kind::name:                                                        \
+        if constexpr ((has >> static_cast<unsigned>(value_kind::name) & 1u) != 0) \
+            return f(value_kinds::name{});                                        \
+        break;
+            POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_KIND_CASE)
+#undef POWERKEY_DETAIL_KIND_CASE
+        }
+        return f(value_kinds::none{});
+    } else {
+        return visit_kind(k, static_cast<F&&>(f));
+    }
+}
+
 // The fields of v as the kind of object `id` shows them.
 template <class V, class F>
 constexpr void value_fields(object id, V& v, F& f) {
