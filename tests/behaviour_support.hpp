@@ -32,7 +32,7 @@ void switch_to_j1939(powerkey::behaviour::virtual_keypad<N>& k, powerkey::behavi
 }
 
 // A controller and a virtual keypad on one bus, stepped every millisecond.
-template <class Controller>
+template <class Controller, class Keypad = powerkey::behaviour::virtual_keypad<32>>
 struct closed_loop {
     struct logged {
         powerkey::can::frame frame;
@@ -93,7 +93,7 @@ struct closed_loop {
         return out;
     }
 
-    powerkey::behaviour::virtual_keypad<32> keypad;
+    Keypad keypad;
     Controller ctl;
     std::uint32_t now = 0;
     std::vector<logged> log;

@@ -1172,8 +1172,8 @@ TEST_CASE("controller, scripted: every timer the millisecond before and at its d
 namespace {
 // One session of every behaviour the controller has (setup with a configuration list and active
 // on startup, LEDs, levels, keys held, a node change, a reboot, a silence), as the bus and the
-// events show it, for controller<16, 64, Keypad>.
-template <class Keypad>
+// events show it, for controller<16, 64, Keypad> and virtual_keypad<32, KeypadOfKeypad>.
+template <class Keypad, class KeypadOfKeypad = any_model>
 std::pair<std::vector<std::string>, std::vector<controller_event>> whole_session(model m) {
     const message config[] = {sdo_read{object::device_type}, sdo_read{object::heartbeat_time},
                               sdo_write{object::led_brightness, level_value(lv(0x21))},
@@ -1181,7 +1181,8 @@ std::pair<std::vector<std::string>, std::vector<controller_event>> whole_session
     controller_config cfg;
     cfg.configuration = config;
     cfg.start = start_mode::active_on_startup;
-    powerkey_tests::closed_loop<controller<16, 64, Keypad>> b(m, cfg, canopen::default_node_id);
+    powerkey_tests::closed_loop<controller<16, 64, Keypad>, virtual_keypad<32, KeypadOfKeypad>> b(
+        m, cfg, canopen::default_node_id);
     b.keypad.power_on(b.at());
     b.run(200);
     b.ctl.set_led(some_led, colour::red);
@@ -1212,6 +1213,10 @@ void compile_time_controllers_agree(std::index_sequence<I...>) {
             const auto compile_time = whole_session<model_constant<m>>(m);
             CHECK(run_time.first == compile_time.first);
             CHECK(run_time.second == compile_time.second);
+            // ... and so does the virtual keypad of one model (both at compile time).
+            const auto both = whole_session<model_constant<m>, model_constant<m>>(m);
+            CHECK(run_time.first == both.first);
+            CHECK(run_time.second == both.second);
             // The session ran: set up twice (the reboot), a long press, lost once.
             const auto count = [&](event_kind k) {
                 return std::count_if(compile_time.second.begin(), compile_time.second.end(),
@@ -1226,7 +1231,8 @@ void compile_time_controllers_agree(std::index_sequence<I...>) {
 }  // namespace
 
 // controller<..., model_constant<M>> (M's rows alone: firmware (c)) sends the same frames and
-// reports the same events as the run-time controller of M, for every model.
-TEST_CASE("controller: a model known at compile time behaves as the same model at run time") {
+// reports the same events as the run-time controller of M, for every model; with
+// virtual_keypad<..., model_constant<M>> too.
+TEST_CASE("controller and virtual keypad: a model known at compile time behaves as at run time") {
     compile_time_controllers_agree(std::make_index_sequence<model_count>{});
 }

@@ -38,6 +38,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 namespace powerkey::behaviour {
@@ -80,22 +81,39 @@ struct backlight_state {
                                      const backlight_state&) noexcept = default;
 };
 
-template <std::size_t Outbox = 16>
+// Every object's initial value: a dictionary's rows over the defaults common to both manuals
+// (section 3), which the PK1000 rows carry; made at compile time for a model known then.
+constexpr std::array<std::uint32_t, object_count> initial_values(
+    std::span<const object_row> rows) noexcept {
+    std::array<std::uint32_t, object_count> v{};
+    for (const auto& r : rows_of(dictionary::pk1000)) v[static_cast<std::size_t>(r.id)] = r.initial;
+    for (const auto& r : rows) v[static_cast<std::size_t>(r.id)] = r.initial;
+    return v;
+}
+template <model M>
+inline constexpr auto initial_values_v =
+    initial_values(powerkey::detail::rows_of(powerkey::detail::fixed_layout_v<M>));
+
+// Keypad: any_model, the model a value (the constructor's), or model_constant<M>, a keypad of
+// model M that reads M's dictionary alone (the constructor's model is then not read).
+template <std::size_t Outbox = 16, class Keypad = any_model>
 class virtual_keypad {
+    static constexpr bool fixed = !std::is_same_v<Keypad, any_model>;
+
 public:
     // A keypad of model m, unpowered, with the manual's default settings (PK1000 3, PKP 3) and
     // node id `node` (default 15h) as its stored node id.
     constexpr explicit virtual_keypad(powerkey::model m,
                                       canopen::node_id node = canopen::default_node_id,
                                       keypad_options options = {}) noexcept
-        : model_(powerkey::detail::is_model(m) ? m : powerkey::model::pk1000),
-          info_(&powerkey::detail::row_of(model_)),
+        : model_(model_of(m)),
+          info_(fixed ? nullptr : &powerkey::detail::row_of(model_)),
           options_(options),
           j1939_(model_) {
         factory_defaults();
         value_[idx(object::node_id)] = node.value();
         node_ = node;
-        if (options.start_in_j1939 && info_->j1939) value_[idx(object::protocol_j1939)] = 1;
+        if (options.start_in_j1939 && model_row().j1939) value_[idx(object::protocol_j1939)] = 1;
     }
 
     // --- power and faults -------------------------------------------------------------------
@@ -219,7 +237,7 @@ public:
     constexpr bool press(unsigned k, millis t) noexcept { return set_key(k, true, t); }
     constexpr bool release(unsigned k, millis t) noexcept { return set_key(k, false, t); }
     constexpr bool set_key(unsigned k, bool pressed, millis t) noexcept {
-        if (k < 1 || k > info_->keys) return false;
+        if (k < 1 || k > model_row().keys) return false;
         key_set s = keys_;
         if (pressed)
             s.insert(k);
@@ -231,7 +249,7 @@ public:
     // All keys at once (keys the model lacks are left out).
     constexpr void set_keys(key_set s, millis t) noexcept {
         advance(t);
-        s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(info_->keys));
+        s = key_set::from_mask(s.mask() & powerkey::detail::low_bits(model_row().keys));
         if (s == keys_) return;
         if (state_ == run_state::j1939) j1939_.keys_changed(keys_, s, sink());
         keys_ = s;
@@ -269,7 +287,7 @@ public:
     // The number an SDO read of o would give now (for number-like objects; LED maps, keys and
     // strings have their own accessors); nullopt for an object the model's dictionary lacks.
     [[nodiscard]] constexpr std::optional<std::uint32_t> read(object o) const noexcept {
-        const auto row = find_row(info_->dictionary, o);
+        const auto row = powerkey::detail::find_row(layout(), o);
         if (!row) return std::nullopt;
         return current(*row);
     }
@@ -289,29 +307,47 @@ private:
     constexpr std::uint32_t value(object o) const noexcept { return value_[idx(o)]; }
 
     constexpr void factory_defaults() noexcept {
-        for (auto& v : value_) v = 0;
-        // defaults common to both manuals (section 3); the PK1000 rows carry them
-        for (const auto& r : rows_of(dictionary::pk1000)) value_[idx(r.id)] = r.initial;
-        for (const auto& r : rows_of(info_->dictionary)) value_[idx(r.id)] = r.initial;
+        if constexpr (fixed)
+            value_ = initial_values_v<Keypad::value>;
+        else
+            value_ = initial_values(powerkey::detail::rows_of(layout()));
         value_[idx(object::node_id)] = canopen::default_node_id.value();
-        if (find_row(info_->dictionary, object::total_keys)) {
+        if (powerkey::detail::find_row(layout(), object::total_keys)) {
             // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
             // (4 keys x RGB), 6 external LEDs; the other models by the same rule (inferred),
             // with no external LEDs.
-            value_[idx(object::total_keys)] = info_->keys;
-            value_[idx(object::total_leds)] = std::uint32_t{info_->leds} * info_->planes;
+            value_[idx(object::total_keys)] = model_row().keys;
+            value_[idx(object::total_leds)] = std::uint32_t{model_row().leds} * model_row().planes;
             value_[idx(object::external_leds)] = model_ == powerkey::model::pkp2200 ? 6u : 0u;
             value_[idx(object::tpdo1_event_timer)] = 0;  // PKP 3: periodic transmission off
         }
     }
 
-    // The codec's row of a full row, and the model's layout: what the value kinds read.
+    // The codec's row of a full row, and the model's layout (its dictionary's lookups: M's alone
+    // for a model_constant): what the value kinds read.
     constexpr const powerkey::detail::codec_row& codec_row_of(const object_row& r) const noexcept {
-        return powerkey::detail::codec_rows[powerkey::detail::find_codec_row(
-            info_->dictionary, powerkey::detail::wire_key(r.address))];
+        return powerkey::detail::codec_row_at(
+            layout(),
+            powerkey::detail::find_codec_row(layout(), powerkey::detail::wire_key(r.address)));
     }
-    constexpr const powerkey::detail::model_layout& layout() const noexcept {
-        return powerkey::detail::layout(model_);
+    constexpr const auto& layout() const noexcept {
+        if constexpr (fixed)
+            return powerkey::detail::fixed_layout_v<Keypad::value>;
+        else
+            return powerkey::detail::layout(model_);
+    }
+    // The model's row (its strings, counts and flags).
+    constexpr const model_info& model_row() const noexcept {
+        if constexpr (fixed)
+            return powerkey::detail::model_row_v<Keypad::value>;
+        else
+            return *info_;
+    }
+    static constexpr powerkey::model model_of(powerkey::model m) noexcept {
+        if constexpr (fixed)
+            return Keypad::value;
+        else
+            return powerkey::detail::is_model(m) ? m : powerkey::model::pk1000;
     }
     // The expedited size of a row, as the codec has it (value_kinds.hpp); 0 for a string.
     constexpr unsigned size_of(const object_row& r) const noexcept {
@@ -374,7 +410,7 @@ private:
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         // keys_ stay: a key held through a reboot is still held
         boot_time_ = t;
-        if (value(object::protocol_j1939) != 0 && info_->j1939) {
+        if (value(object::protocol_j1939) != 0 && model_row().j1939) {
             reset_communication(t, run_state::j1939);
             j1939_.boot(t, keys_, false, sink());
             return;
@@ -458,7 +494,7 @@ private:
     constexpr bool event_driven() const noexcept {
         // PK1000 46 a: FEh event-driven, 01h..F0h every n-th SYNC. The PKP's 1800h/2 reads FDh
         // but it sends on every change (PKP 10).
-        const auto row = find_row(info_->dictionary, object::tpdo1_transmission_type);
+        const auto row = powerkey::detail::find_row(layout(), object::tpdo1_transmission_type);
         return !row || !row->writable() || value(object::tpdo1_transmission_type) >= 0xFE;
     }
     constexpr std::uint32_t periodic_ms() const noexcept {
@@ -495,13 +531,13 @@ private:
     // activated"); 1400h/1401h types 00h..F0h hold the PDO until the next SYNC (PK1000 10, 38).
     constexpr void on_rpdo(const can::frame& f, millis) noexcept {
         if (state_ != run_state::operational) return;
-        const auto m = powerkey::decode(f, node_, model_);
+        const auto m = read_frame(f);
         if (!m) return;  // a PDO the keypad cannot read is ignored
         const std::uint32_t fn = f.raw_id() & 0x780;
         if (fn == 0x200 || fn == 0x300) {
             const object type_of =
                 fn == 0x200 ? object::rpdo1_transmission_type : object::rpdo2_transmission_type;
-            if (find_row(info_->dictionary, type_of) && value(type_of) <= 0xF0) {
+            if (powerkey::detail::find_row(layout(), type_of) && value(type_of) <= 0xF0) {
                 rpdo_buffer_[fn == 0x200 ? 0 : 1] = *m;
                 return;
             }
@@ -516,8 +552,9 @@ private:
         if (const auto* b = std::get_if<powerkey::backlight>(&msg)) {
             backlight_.level = b->level;
             if (b->colour != backlight_colour::keep)
-                backlight_.colour = b->colour;          // PK1000 15: 00h keeps the colour
-            else if (info_->backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
+                backlight_.colour = b->colour;  // PK1000 15: 00h keeps the colour
+            else if (model_row()
+                         .backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
                 backlight_.colour =
                     static_cast<backlight_colour>(value(object::default_backlight_colour));
         }
@@ -525,7 +562,7 @@ private:
     // An LED PDO sets every plane the model has.
     constexpr leds merge(const leds&, const leds& in) const noexcept {
         leds out = in;
-        if (info_->planes < 3) out.blue = {};
+        if (model_row().planes < 3) out.blue = {};
         return out;
     }
 
@@ -561,14 +598,14 @@ private:
 
     // The abort for an address the dictionary lacks: the index exists -> no such sub-index.
     constexpr canopen::sdo_abort_code missing(canopen::sdo_address a) const noexcept {
-        for (const auto& r : rows_of(info_->dictionary))
+        for (const auto& r : powerkey::detail::rows_of(layout()))
             if (r.address.index == a.index) return canopen::sdo_abort_code::subindex_does_not_exist;
         return canopen::sdo_abort_code::object_does_not_exist;
     }
 
     constexpr void upload(canopen::sdo_address a, millis t) noexcept {
         upload_ = {};
-        const auto row = find_row(info_->dictionary, a);
+        const auto row = powerkey::detail::find_row(layout(), a);
         if (!row) return abort(a, missing(a), t);
         // 1001h: "not yet implemented in the device" (PK1000 31): object does not exist
         if (info(row->id).kind == value_kind::none)
@@ -577,7 +614,7 @@ private:
         can::payload p = sdo_payload(0, a);
         const unsigned size = size_of(*row);
         if (size == 0) {
-            const auto s = info_->string_of(row->id);
+            const auto s = model_row().string_of(row->id);
             if (!s) return abort(a, canopen::sdo_abort_code::no_data, t);
             if (s->bytes.size() <= 4) {  // expedited (PK1000 33, 34)
                 p[0] = static_cast<std::uint8_t>(0x43 | ((4 - s->bytes.size()) << 2));
@@ -621,7 +658,7 @@ private:
     constexpr void download(const can::frame& f, canopen::sdo_address a, millis t) noexcept {
         upload_ = {};
         const std::uint8_t b0 = f[0];
-        const auto row = find_row(info_->dictionary, a);
+        const auto row = powerkey::detail::find_row(layout(), a);
         if (!row) return abort(a, missing(a), t);
         if (!row->writable()) return abort(a, canopen::sdo_abort_code::read_only, t);
         if ((b0 & 0x02) == 0)  // segmented download: no object here takes one
@@ -633,7 +670,7 @@ private:
             static_cast<std::uint32_t>(powerkey::detail::load_le(f.bytes(), 4, n));
         after_reply then = after_reply::none;
         if (const auto code = check_and_apply(*row, f, v, then, t)) return abort(a, *code, t);
-        if (row->id == object::node_id && info_->replies_from_new_id) {
+        if (row->id == object::node_id && model_row().replies_from_new_id) {
             // PK1000 23: the acknowledgement already comes from the new id
             node_ = canopen::node_id::make(v).value();
         }
@@ -685,7 +722,7 @@ private:
                 sync_count_ = 0;
                 break;
             case object::protocol_j1939:  // PK1000 49: the keypad answers, then speaks J1939
-                if (v == 1 && info_->j1939) then = after_reply::to_j1939;
+                if (v == 1 && model_row().j1939) then = after_reply::to_j1939;
                 break;
             default: break;
         }
@@ -694,7 +731,7 @@ private:
 
     // The PKP command module, 6500h sub 1 (PKP 13 a-m).
     constexpr refusal command(const can::frame& f, after_reply& then) noexcept {
-        const auto m = powerkey::decode(f, node_, model_);
+        const auto m = read_frame(f);
         const auto* c = m ? std::get_if<powerkey::command>(&*m) : nullptr;
         if (c == nullptr) return canopen::sdo_abort_code::invalid_value;
         using cc = command_code;
@@ -817,6 +854,14 @@ private:
         }
         (void)outbox_.push(f);
     }
+    // A frame as this keypad reads it (decode, with M's dictionary alone for a model_constant).
+    constexpr result<message> read_frame(const can::frame& f) const noexcept {
+        if constexpr (fixed)
+            return powerkey::decode<Keypad::value>(f, node_);
+        else
+            return powerkey::decode(f, node_, model_);
+    }
+
     constexpr auto sink() noexcept {
         return [this](const can::frame& f) { emit(f); };
     }
@@ -829,7 +874,7 @@ private:
     };
 
     powerkey::model model_;
-    const model_info* info_;  // the model's row
+    const model_info* info_;  // the model's row (any_model)
     keypad_options options_;
     std::array<std::uint32_t, object_count> value_{};
     bool restore_pending_ = false;

@@ -344,6 +344,37 @@ constexpr const codec_row& codec_row_at(const fixed_layout<M>&, std::uint8_t i) 
     return find_row(d, detail::codec_rows[r].id);
 }
 
+namespace detail {
+// rows_of and find_row of keypad's dictionary: for a fixed_layout, from its own tables alone.
+constexpr std::span<const object_row> rows_of(const model_layout& keypad) noexcept {
+    return powerkey::rows_of(keypad.dictionary);
+}
+constexpr std::optional<object_row> find_row(const model_layout& keypad, object o) noexcept {
+    return powerkey::find_row(keypad.dictionary, o);
+}
+constexpr std::optional<object_row> find_row(const model_layout& keypad,
+                                             canopen::sdo_address a) noexcept {
+    return powerkey::find_row(keypad.dictionary, a);
+}
+template <model M>
+constexpr std::span<const object_row> rows_of(const fixed_layout<M>&) noexcept {
+    return one_dictionary<fixed_layout<M>::dictionary_value>::full;
+}
+template <model M>
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, object o) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, o);
+    if (i == 0) return std::nullopt;
+    return rows_of(keypad)[i - 1u];
+}
+template <model M>
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad,
+                                             canopen::sdo_address a) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, wire_key(a));
+    if (i == 0) return std::nullopt;
+    return rows_of(keypad)[i - 1u];
+}
+}  // namespace detail
+
 }  // namespace powerkey
 
 #endif  // POWERKEY_KEYPAD_LOOKUP_HPP

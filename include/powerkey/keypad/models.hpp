@@ -334,6 +334,11 @@ inline constexpr auto model_layouts = [] {
 constexpr const model_layout& layout(model m) noexcept {
     return model_layouts[static_cast<std::size_t>(m)];
 }
+// The row of a model known when the program is built, as a variable of its own: a program that
+// names it links this row (its strings) and not the model table.
+template <model M>
+inline constexpr model_info model_row_v = row_of(M);
+
 // The layout of a model; for a value that is not one, zeros (as row_or_none).
 inline constexpr model_layout no_model_layout{};
 constexpr const model_layout& layout_or_none(model m) noexcept {
