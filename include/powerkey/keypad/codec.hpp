@@ -1089,9 +1089,10 @@ template <detail::canopen_alternative T>
 // J1939 calls (j1939_codec.hpp's end): decode_key_state<model::pk1000>(f, node). The same engine
 // as the run-time calls (detail::key_state_of, detail::own_frame), with the same results for every
 // frame and message (tests/test_keypad_codec_typed.cpp runs every manual row through both, for
-// every model). The model's layout is a constant (detail::layout_v<M>: no model table), and each
-// call inlines what it calls (POWERKEY_DETAIL_FLATTEN), so only this model's paths are in the
-// program: a firmware that reads key states and builds LED maps links no decoder.
+// every model). The model's layout is a constant (detail::layout_v<M>: no model table), and
+// decode_key_state<M> and encode<M> of a key state or LED map inline what they call
+// (POWERKEY_DETAIL_FLATTEN), so only this model's paths are in the program: a firmware that reads
+// key states and builds LED maps links no decoder (firmware (a_codec), 1,008 bytes).
 
 namespace detail {
 // Model M's layout, one constant: what the calls below read instead of the model table.
