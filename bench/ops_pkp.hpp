@@ -210,6 +210,20 @@ inline void pkp_key_state_encode_own(std::size_t calls) {
     encode_all(pkp_key_states, pkp_model, calls);
 }
 inline void pkp_led_on_encode_own(std::size_t calls) { encode_all(pkp_led_ons, pkp_model, calls); }
+// The model a template argument (issue 24, firmware (a_codec)'s calls): the key states through
+// decode_key_state<M>, the LED maps through encode<M>.
+inline void one_pkp_key_state_decode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_key_frames, calls, [n](const pc::frame& f) BENCH_INLINE {
+        return powerkey::decode_key_state<pkp_model>(f, n);
+    });
+}
+inline void one_pkp_led_on_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_led_ons, calls, [n](const powerkey::led_on& v) BENCH_INLINE {
+        return powerkey::encode<pkp_model>(n, v);
+    });
+}
 inline void pkp_sdo_request_decode(std::size_t calls) {
     decode_all(pkp_sdo_request_frames, pkp_model, calls);
 }
@@ -231,6 +245,8 @@ inline constexpr op pkp_ops[] = {
     {"pkp2400/led_on/encode_typed", pkp_led_on_encode_typed},
     {"pkp2400/key_state/encode_own", pkp_key_state_encode_own},
     {"pkp2400/led_on/encode_own", pkp_led_on_encode_own},
+    {"pkp2400/one/key_state/decode_key_state", one_pkp_key_state_decode},
+    {"pkp2400/one/led_on/encode", one_pkp_led_on_encode},
     {"pkp2400/sdo/decode_request", pkp_sdo_request_decode},
     {"pkp2400/sdo/decode_response", pkp_sdo_response_decode},
     {"pkp2400/sdo/encode", pkp_sdo_encode},

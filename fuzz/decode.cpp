@@ -2,7 +2,9 @@
 // the model table (and, one input in five, a value that is no model). Properties: no crash, no
 // read past the dlc, every refusal a listed errc, decode -> encode -> decode a fixed point; and
 // the accessors never answer for a frame that decodes to nothing; every SDO entry point agrees
-// with the SDO engine (tests/sdo_agreement.hpp).
+// with the SDO engine (tests/sdo_agreement.hpp); decode_key_state<M> answers as decode
+// (tests/key_state_agreement.hpp).
+#include "key_state_agreement.hpp"
 #include "properties.hpp"
 #include "sdo_agreement.hpp"
 
@@ -34,6 +36,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             POWERKEY_FUZZ_CHECK_FRAME(back && *back == detail::with_form(*t, frame_form::manual),
                                       f);
         }
+    }
+    // The key state alone, the model a template argument: decode's answer, past the dlc unread.
+    {
+        aligned_frame held{f};
+        const poison_past_dlc guard(held.f);
+        POWERKEY_FUZZ_CHECK_FRAME(key_state_agreement::agrees(m, held.f, node), f);
     }
     // One SDO parser: the engine, the CiA 301 decoders, every model's decode and the session agree.
     POWERKEY_FUZZ_CHECK_FRAME(sdo_agreement::disagreement(f, node).empty(), f);

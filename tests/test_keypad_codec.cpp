@@ -84,7 +84,7 @@ template <model M>
 constexpr bool compile_time_canopen_agrees(const can::frame& f, canopen::node_id n) {
     if (!(decode_canopen<M>(f, n) == decode_canopen(f, n, M))) return false;
     const auto m = decode(f, n, M);
-    if (!m || f.is_extended()) return true;
+    if (!m) return true;
     return encode<M>(n, *m) == encode(n, M, *m);
 }
 template <std::size_t... I>

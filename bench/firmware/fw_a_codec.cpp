@@ -1,10 +1,11 @@
-// Footprint firmware (a_codec): firmware (a)'s program written with the one codec, decode_canopen
-// and encode of the LED PDOs' own types with the model a constant, and the pressed_keys accessor.
-// It carries the whole CANopen decoder (encode checks its frame by decoding it), so it is measured
-// next to (a) to show what the codec costs a firmware that only needs the PDOs. Each pressed key
-// lights its red LED; key 10 makes every lit LED blink. Each library call sits in its own function
-// of namespace `calls`, so that scripts/footprint.sh can report the stack each one needs.
-#include <powerkey/keypad/accessors.hpp>
+// Footprint firmware (a_codec): firmware (a)'s program written with the one codec and the model a
+// template argument: decode_key_state<model::pk1000> reads the key states, encode<model::pk1000>
+// of the LED PDOs' own types builds the LED maps (each checks its own fields). Both read the
+// model's layout as a constant and share the run-time codec's engine, so neither the model table
+// nor the decoder is in the program: it is measured next to (a) to show what the codec costs a
+// firmware that only needs the PDOs. Each pressed key lights its red LED; key 10 makes every lit
+// LED blink. Each library call sits in its own function of namespace `calls`, so that
+// scripts/footprint.sh can report the stack each one needs.
 #include <powerkey/keypad/codec.hpp>
 
 #include "mailbox.hpp"
@@ -13,17 +14,21 @@ namespace co = powerkey::canopen;
 namespace pc = powerkey::can;
 namespace pk = powerkey;
 
+namespace {
+constexpr pk::model keypad_model = pk::model::pk1000;
+}  // namespace
+
 namespace calls {
 [[gnu::noinline]] std::optional<pk::key_set> read_keys(const pc::frame& f, co::node_id n) {
-    const auto m = pk::decode_canopen(f, n, pk::model::pk1000);
+    const auto m = pk::decode_key_state<keypad_model>(f, n);
     if (!m) return std::nullopt;
-    return pk::pressed_keys(*m);
+    return m->keys;
 }
 [[gnu::noinline]] pk::result<pc::frame> build_led_on(co::node_id n, const pk::led_on& m) {
-    return pk::encode(n, pk::model::pk1000, m);
+    return pk::encode<keypad_model>(n, m);
 }
 [[gnu::noinline]] pk::result<pc::frame> build_led_blink(co::node_id n, const pk::led_blink& m) {
-    return pk::encode(n, pk::model::pk1000, m);
+    return pk::encode<keypad_model>(n, m);
 }
 }  // namespace calls
 

@@ -314,14 +314,12 @@ private:
             on_sdo_reply(f, c.node);
         } else if (c.fn == canopen::function::tpdo1 && c.node == node_.value() &&
                    state_ != controller_state::searching) {
-            const auto m = read(f);
-            if (!m) return;
+            const auto k = read_keys(f);
+            if (!k) return;
             heard();
-            if (const auto k = powerkey::pressed_keys(*m)) {
-                // A keypad sends key states only when operational (PK1000 11, PKP 10).
-                keypad_state_ = canopen::nmt_state::operational;
-                on_keys(*k);
-            }
+            // A keypad sends key states only when operational (PK1000 11, PKP 10).
+            keypad_state_ = canopen::nmt_state::operational;
+            on_keys(*k);
         }
     }
 
@@ -765,12 +763,19 @@ private:
         else
             return c.keypad_model;
     }
-    // The keypad's frames read and built (CANopen only: the controller speaks no J1939).
-    constexpr result<message> read(const can::frame& f) const noexcept {
-        if constexpr (fixed)
-            return decode_canopen<Keypad::value>(f, node_);
-        else
-            return decode_canopen(f, node_, model_);
+    // The keys of the keypad's key-state PDO (TPDO1), read as decode reads it; nullopt for a
+    // frame decode refuses. The controller speaks no J1939, and reads no other PDO: one of model
+    // M reads the key state alone (decode_key_state<M>: no decoder in the program).
+    constexpr std::optional<key_set> read_keys(const can::frame& f) const noexcept {
+        if constexpr (fixed) {
+            const auto k = decode_key_state<Keypad::value>(f, node_);
+            if (!k) return std::nullopt;
+            return k->keys;
+        } else {
+            const auto m = decode_canopen(f, node_, model_);
+            if (!m) return std::nullopt;
+            return powerkey::pressed_keys(*m);  // TPDO1 decodes as a key state or not at all
+        }
     }
     // Every message it sends checks its own fields (encode's own checks): no decoder is needed
     // to build them.

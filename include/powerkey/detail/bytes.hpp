@@ -9,6 +9,8 @@
 #ifndef POWERKEY_DETAIL_BYTES_HPP
 #define POWERKEY_DETAIL_BYTES_HPP
 
+#include <powerkey/detail/inline.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -55,7 +57,10 @@ requires(N >= 1 && N <= 8) constexpr void store_le(Bytes& b, std::size_t at,
     } else {
         const auto lo = static_cast<std::uint32_t>(v);
         const auto hi = static_cast<std::uint32_t>(v >> 32);
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
+        // Inlined into its caller always: under -Os g++ kept it out of line when one program
+        // builds frames in several places, and then not one store folded (+316 bytes in a
+        // firmware that builds two LED maps).
+        [&]<std::size_t... I>(std::index_sequence<I...>) POWERKEY_DETAIL_INLINE_LAMBDA {
             ((b[at + I] = static_cast<std::uint8_t>((I < 4 ? lo : hi) >> (8 * (I % 4)))), ...);
         }
         (std::make_index_sequence<N>{});

@@ -431,6 +431,21 @@ constexpr result<message> decode_reply(const Layout& keypad, const can::frame& f
 
 // --- PDO frames ---------------------------------------------------------------------------------
 
+// The key state in bytes 0..4 of a TPDO1 whose length the caller has checked (keys in bytes 0..1,
+// 00h 00h, the tick), as decode answers it (R = message, built in the caller's result) and as
+// decode_key_state<M> does (R = key_state): one reading for both. Errors: reserved_not_zero (a
+// key the model lacks, bytes 2..3 not 00h).
+template <class R>
+POWERKEY_DETAIL_INLINE constexpr result<R> key_state_of(const model_layout& keypad,
+                                                        const can::frame& f) noexcept {
+    const auto w = static_cast<std::uint32_t>(load_le<4>(f.bytes(), 0));
+    if ((w & keypad.not_keys) != 0) return errc::reserved_not_zero;
+    if constexpr (std::is_same_v<R, message>)
+        return answer(key_state{key_set::from_mask(w), f[4]});
+    else
+        return key_state{key_set::from_mask(w), f[4]};
+}
+
 // The PDO of function code `code` (bits 10..7 of the identifier, which decode checked is this
 // node's): only the length and data are checked. Each answer is built in the caller's result.
 // No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
@@ -442,9 +457,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
     switch (code) {
         case 0x3: {  // TPDO1: keys in bytes 0..1, 00h 00h, the tick
             if (f.size() != 5) return misfit<how>(f, keypad);
-            const auto w = static_cast<std::uint32_t>(load_le<4>(f.bytes(), 0));
-            if ((w & keypad.not_keys) != 0) return errc::reserved_not_zero;
-            return answer(key_state{key_set::from_mask(w), f[4]});
+            return key_state_of<message>(keypad, f);
         }
         case 0x4:    // RPDO1 LEDs on
         case 0x6: {  // RPDO2 LEDs blinking
@@ -1068,6 +1081,26 @@ template <model M>
     return detail::encode_canopen<true>(node, m, msg);
 }
 
+namespace detail {
+// A PDO that checks itself (key_state, led_on, led_blink, led_brightness, backlight).
+template <class T>
+concept own_pdo = requires(const model_layout& keypad, const T& v) {
+    own_check(keypad, v);
+};
+
+// encode of one CANopen alternative for the model whose layout is `keypad` (the run-time call's
+// row, or encode<M>'s constant with its own dictionary's tables).
+template <class T, class Layout>
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_alternative(const Layout& keypad,
+                                                                       canopen::node_id node,
+                                                                       const T& msg) noexcept {
+    if constexpr (own_pdo<T> || own_sdo<T>)
+        return own_frame(keypad, node, msg);
+    else
+        return encode_canopen<false>(node, keypad, message(msg));
+}
+}  // namespace detail
+
 // The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
 // is in the program.
 // A message that checks itself (key_state, led_on, led_blink, led_brightness, backlight:
@@ -1077,26 +1110,7 @@ template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
-    if constexpr (requires { detail::own_check(detail::layout(m), msg); }) {
-        return detail::own_frame(detail::layout(m), node, msg);
-    } else if constexpr (detail::own_sdo<T>) {
-        return detail::own_frame(detail::layout(m), node, msg);
-    } else {
-        return detail::encode_canopen<false>(node, m, message(msg));
-    }
-}
-
-// encode of a CANopen message for a keypad whose model is known when the program is built:
-// encode<model::pkp2400>(node, msg), the same frame or error as encode(node, M, msg), with M's
-// dictionary alone in the program. A J1939 message is refused (wrong_id_format): its encoder is
-// j1939::encode<M>.
-template <model M>
-[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
-                                                  const message& msg) noexcept {
-    static_assert(detail::is_model(M), "M is a row of the model table");
-    if (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index)
-        return errc::wrong_id_format;
-    return detail::encode_canopen<false>(node, detail::fixed_layout_v<M>, msg);
+    return detail::encode_alternative(detail::layout(m), node, msg);
 }
 
 // The model of a behaviour class (behaviour::controller's Keypad): any_model, a value chosen at
@@ -1119,6 +1133,79 @@ struct model_constant {
         (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index))
         return detail::encode_j1939(m, msg, address);
     return encode(node, m, msg);
+}
+
+// --- a keypad known when the program is built ----------------------------------------------------
+// decode_key_state and encode with the model a template argument, as decode<M> above and the
+// J1939 calls (j1939_codec.hpp's end): decode_key_state<model::pk1000>(f, node). The same engine
+// as the run-time calls (detail::key_state_of, detail::own_frame), with the same results for every
+// frame and message (tests/test_keypad_codec_typed.cpp runs every manual row through both, for
+// every model). The model's layout is a constant (detail::fixed_layout_v<M>: no model table, its
+// own dictionary's tables alone), and
+// decode_key_state<M> and encode<M> of a key state or LED map inline what they call
+// (POWERKEY_DETAIL_FLATTEN), so only this model's paths are in the program: a firmware that reads
+// key states and builds LED maps links no decoder (firmware (a_codec), 1,008 bytes).
+
+namespace detail {
+// Bytes `from` up to f's length are all 00h (bytes past the length are not read).
+constexpr bool zeros_from(const can::frame& f, std::uint8_t from) noexcept {
+    for (std::uint8_t i = from; i < f.size(); ++i)
+        if (f[i] != 0) return false;
+    return true;
+}
+}  // namespace detail
+
+// The key state alone, for a program that reads nothing else from its keypad (firmware (a_codec)
+// of docs/performance.md): decode's answer when f is the model's key-state PDO (TPDO1, 180h +
+// node), decode's error when decode refuses that frame, wrong_id for any other frame (another
+// node's key state, a 29-bit frame included). Read tolerantly, a key state padded with 00h bytes
+// is read with `form` padded, as decode reads it (no shorter form exists: the tick is the last
+// byte); `reading::strict` refuses it with wrong_length. Errors: wrong_id, wrong_length,
+// reserved_not_zero (a key the model lacks, bytes 2..3 not 00h).
+template <model M>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_state> decode_key_state(
+    const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    if (f.id_word() != canopen::cob_id(canopen::function::tpdo1, node).value())
+        return errc::wrong_id;
+    if (f.size() == 5) return detail::key_state_of<key_state>(detail::fixed_layout_v<M>, f);
+    if (how == reading::strict || f.size() < 5 || !detail::zeros_from(f, 5))
+        return errc::wrong_length;
+    auto r = detail::key_state_of<key_state>(detail::fixed_layout_v<M>, f);
+    if (r) r->form = frame_form::padded;
+    return r;
+}
+
+// encode(node, M, msg) of one CANopen alternative with M's layout a constant. A key state or LED
+// map checks itself (detail::own_check) and is built inline with the model's facts as constants
+// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions); an SDO read, write,
+// reply or command checks itself too (detail::own_frame, one shared copy: its value checks are a
+// visit of the row's kind); the other PDOs are read back as encode(node, M, msg) reads them. None
+// but the last links a decoder.
+template <model M, detail::canopen_alternative T>
+requires detail::own_pdo<T>
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> encode(canopen::node_id node,
+                                                                          const T& msg) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
+}
+template <model M, detail::canopen_alternative T>
+requires(!detail::own_pdo<T>) [[nodiscard]] POWERKEY_DETAIL_INLINE
+    constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
+}
+
+// encode(node, M, msg) of any message: a CANopen one with M's dictionary alone in the program, a
+// J1939 one as encode(node, M, msg) builds it.
+template <model M>
+[[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
+                                                  const message& msg) noexcept {
+    static_assert(detail::is_model(M), "M is a row of the model table");
+    if (msg.index() >= detail::first_j1939_index || msg.index() == detail::switch_index)
+        [[unlikely]]
+        return detail::encode_j1939(M, msg, std::nullopt);
+    return detail::encode_canopen<false>(node, detail::fixed_layout_v<M>, msg);
 }
 
 }  // namespace powerkey
