@@ -27,6 +27,7 @@
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>
 
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <type_traits>
@@ -418,13 +419,13 @@ constexpr bool bytes_at_most(std::uint64_t v, std::uint64_t max) noexcept {
     return ((((v & low7) + (low7 - max)) | v) & ~low7) == 0;
 }
 
-// A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set, bit 2 or
-// bit 1 set, and not all four (Fh, blink). Every nibble at once.
+// A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set and its low
+// three bits 2..6. Every nibble at once, in two adds that carry out of no nibble: low + 6 has
+// bit 3 set from 2 up, low + 1 only at 7 (Fh, blink).
 constexpr bool has_unused_code(std::uint64_t w) noexcept {
-    constexpr std::uint64_t ones = 0x1111'1111'1111'1111;
-    const std::uint64_t b0 = w & ones, b1 = (w >> 1) & ones, b2 = (w >> 2) & ones,
-                        b3 = (w >> 3) & ones;
-    return (b3 & (b2 | b1) & ~(b0 & b1 & b2)) != 0;
+    const std::uint64_t low = w & 0x7777'7777'7777'7777;
+    return (w & (low + 0x6666'6666'6666'6666) & ~(low + 0x1111'1111'1111'1111) &
+            0x8888'8888'8888'8888) != 0;
 }
 
 template <class M>
@@ -743,6 +744,13 @@ constexpr route route_of(std::uint32_t id) noexcept {
             static_cast<std::uint8_t>(id)};
 }
 
+// The identifier's priority, destination and source as bytes 0, 1 and 2 of a word: the order
+// of every message's first three members, so that g++ stores them with the fields after them.
+constexpr std::uint64_t route_word(std::uint32_t id) noexcept {
+    // (id & FFFFh) * 10001h holds the source in bytes 0 and 2 and the destination in 1 and 3.
+    return ((id >> 26) & 7u) | (((id & 0xFFFFu) * 0x1'0001u) & 0xFF'FF00u);
+}
+
 // A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r, every check in the
 // order decode documents. Out of line: the frequent frames that pass every check are answered
 // before it (decode_frame).
@@ -792,20 +800,25 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
     const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
     if (!POWERKEY_DETAIL_SIZE && !keypad && f.size() == 8) {
         const std::uint64_t w = f.data_le();
-        const bool to_global = ((id >> 8) & 0xFF) == global_address;
+        // To the global address FFh (PDU specific), tested where it decides, by an add that
+        // carries out of FFh only: g++ then stores the destination from the identifier with the
+        // other bytes of the answer rather than as a constant FFh on its own.
+        const auto to_global = [id] { return ((id + 0x100) & 0xFF00) == 0; };
         if (pf == 0x80EF) {
             // Header and command byte; the tests in the order of their frames' share of a bus.
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
-                if (to_global) {  // the key contact state (is_led_command)
+                if (to_global()) {  // the key contact state (is_led_command)
                     // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there),
                     // the state 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
                     if (((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
                         byte_of(w, 5) != 0xFF && r.frames.has(feature::key_contact)) {
-                        const route at = route_of(id);
-                        return answer<M>(key_contact{at.priority, at.destination, at.source,
-                                                     byte_of(w, 3), byte_of(w, 4) == 1,
-                                                     byte_of(w, 5)});
+                        // The answer's bytes in one word, from which g++ stores them together;
+                        // byte 4 is 00h or 01h here, so the bool is that byte as it stands.
+                        const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
+                        return answer<M>(key_contact{
+                            priority::make(byte_of(v, 0)).value(), byte_of(v, 1), byte_of(v, 2),
+                            byte_of(v, 3), std::bit_cast<bool>(byte_of(v, 4)), byte_of(v, 5)});
                     }
                 } else if ((w >> 56) == 0xFF &&
                            bytes_at_most((w - 0x0100'0000) & 0x00FF'FFFF'FF00'0000,
@@ -815,11 +828,12 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     // Addressed with byte 6 not FFh, the LED command (is_led_command): byte 7
                     // FFh; the LED - 1, colour, state and secondary colour at most 0Fh, 09h,
                     // 03h, 09h (an LED 00h borrows and fails there); an LED the model has.
-                    const route at = route_of(id);
-                    return answer<M>(set_led{at.priority, at.destination, at.source, byte_of(w, 3),
-                                             static_cast<led_colour>(byte_of(w, 4)),
-                                             static_cast<led_mode>(byte_of(w, 5)),
-                                             static_cast<led_colour>(byte_of(w, 6))});
+                    const std::uint64_t v = route_word(id) | (w & 0x00FF'FFFF'FF00'0000);
+                    return answer<M>(set_led{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                             byte_of(v, 2), byte_of(v, 3),
+                                             static_cast<led_colour>(byte_of(v, 4)),
+                                             static_cast<led_mode>(byte_of(v, 5)),
+                                             static_cast<led_colour>(byte_of(v, 6))});
                 }
             } else if (head == 0xF9'1B04) {
                 // The heartbeat: byte 6 FFh, no key bit above the model's keys.
@@ -848,7 +862,7 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
             } else if ((head | 0x01'0000) == 0x03'1B04) {
                 // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
                 const bool led = head == 0x02'1B04;
-                if (!to_global && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
+                if (!to_global() && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
                     r.frames.has(led ? feature::led_brightness : feature::backlight_level)) {
                     const route at = route_of(id);
                     command c{};
@@ -863,7 +877,7 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
             }
         } else if ((pf & ~1u) == 0x80A6) {  // a multiple-LED frame, A700h or A600h
             const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
-            if (!to_global && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
+            if (!to_global() && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
                 r.frames.has(feature::multiple_leds)) {
                 const route at = route_of(id);
                 return answer<M>(multiple_leds{at.priority, at.destination, at.source,
