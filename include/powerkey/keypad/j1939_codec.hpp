@@ -809,10 +809,11 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
                 if (to_global()) {  // the key contact state (is_led_command)
-                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there),
-                    // the state 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
-                    if (((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
-                        byte_of(w, 5) != 0xFF && r.frames.has(feature::key_contact)) {
+                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there)
+                    // and the state 00h/01h in one masked test; bytes 7, 6 and 5 FF FF 00h..FEh
+                    // (the identifier not FFh) in one compare.
+                    if ((((w - 0x0100'0000) >> 24) & 0xFEF0) == 0 && (w >> 40) - 0xFF'FF00 < 0xFF &&
+                        r.frames.has(feature::key_contact)) {
                         // The answer's bytes in one word, from which g++ stores them together;
                         // byte 4 is 00h or 01h here, so the bool is that byte as it stands.
                         const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
@@ -840,10 +841,10 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                 const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
                 if (byte_of(w, 6) == 0xFF && (keys >> r.keys) == 0 &&
                     r.frames.has(feature::heartbeat)) {
-                    const route at = route_of(id);
-                    return answer<M>(heartbeat{at.priority, at.destination, at.source,
-                                               byte_of(w, 3), key_set::from_mask(keys),
-                                               byte_of(w, 7)});
+                    const std::uint64_t v = route_word(id) | (w & 0xFF00'0000);
+                    return answer<M>(heartbeat{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                               byte_of(v, 2), byte_of(v, 3),
+                                               key_set::from_mask(keys), byte_of(w, 7)});
                 }
             } else if ((head & 0xFF) == 0) {
                 // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. The
@@ -853,8 +854,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     bytes_at_most((w - 0x01'0000) & 0xFF'FFFF'FF00, 0x09'090F'0300) &&
                     r.form == led_form::si && r.frames.has(feature::led_ack) &&
                     ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
-                    const route at = route_of(id);
-                    return answer<M>(led_ack{at.priority, at.destination, at.source, byte_of(w, 2),
+                    const std::uint64_t v = route_word(id) | ((w & 0xFF'0000) << 8);
+                    return answer<M>(led_ack{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                             byte_of(v, 2), byte_of(v, 3),
                                              static_cast<led_mode>(byte_of(w, 1)),
                                              static_cast<led_colour>(byte_of(w, 3)),
                                              static_cast<led_colour>(byte_of(w, 4))});
