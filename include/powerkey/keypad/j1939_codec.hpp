@@ -804,7 +804,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
         // carries out of FFh only: g++ then stores the destination from the identifier with the
         // other bytes of the answer rather than as a constant FFh on its own.
         const auto to_global = [id] { return ((id + 0x100) & 0xFF00) == 0; };
-        if (pf == 0x80EF) {
+        // The 29-bit flag, EDP, DP and PDU format where the identifier has them (no shift).
+        const std::uint32_t at_pf = id & 0x83FF'0000;
+        if (at_pf == 0x80EF'0000) {
             // Header and command byte; the tests in the order of their frames' share of a bus.
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
@@ -821,14 +823,14 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                             priority::make(byte_of(v, 0)).value(), byte_of(v, 1), byte_of(v, 2),
                             byte_of(v, 3), std::bit_cast<bool>(byte_of(v, 4)), byte_of(v, 5)});
                     }
-                } else if ((w >> 56) == 0xFF &&
-                           bytes_at_most((w - 0x0100'0000) & 0x00FF'FFFF'FF00'0000,
-                                         0x0009'0309'0F00'0000) &&
+                } else if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
                            r.form == led_form::si && r.frames.has(feature::led_command) &&
                            ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
-                    // Addressed with byte 6 not FFh, the LED command (is_led_command): byte 7
-                    // FFh; the LED - 1, colour, state and secondary colour at most 0Fh, 09h,
-                    // 03h, 09h (an LED 00h borrows and fails there); an LED the model has.
+                    // Addressed with byte 6 not FFh, the LED command (is_led_command): in one
+                    // add and one bytes_at_most, byte 7 FFh (plus 1 it is 00h, its carry out of
+                    // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
+                    // 09h, 03h, 09h (an LED 00h borrows and fails there; the header's bytes are
+                    // their own bounds); an LED the model has.
                     const std::uint64_t v = route_word(id) | (w & 0x00FF'FFFF'FF00'0000);
                     return answer<M>(set_led{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
                                              byte_of(v, 2), byte_of(v, 3),
@@ -847,13 +849,12 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                                                key_set::from_mask(keys), byte_of(w, 7)});
                 }
             } else if ((head & 0xFF) == 0) {
-                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. The
-                // state, LED - 1 and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
+                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. As
+                // the LED command's: bytes 5..7 FFh (plus 1 at byte 5, 00h), the state, LED - 1
+                // and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
                 // decode_checked); an LED the model has.
-                if ((w >> 40) == 0xFF'FFFF &&
-                    bytes_at_most((w - 0x01'0000) & 0xFF'FFFF'FF00, 0x09'090F'0300) &&
-                    r.form == led_form::si && r.frames.has(feature::led_ack) &&
-                    ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
+                if (bytes_at_most(w + 0xFF'FFFF'0000, 0x09'090F'0300) && r.form == led_form::si &&
+                    r.frames.has(feature::led_ack) && ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
                     const std::uint64_t v = route_word(id) | ((w & 0xFF'0000) << 8);
                     return answer<M>(led_ack{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
                                              byte_of(v, 2), byte_of(v, 3),
@@ -877,16 +878,17 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     return answer<M>(c);
                 }
             }
-        } else if ((pf & ~1u) == 0x80A6) {  // a multiple-LED frame, A700h or A600h
+        } else if ((at_pf & ~0x1'0000u) == 0x80A6'0000) {  // a multiple-LED frame, A700h or A600h
             const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
             if (!to_global() && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
                 r.frames.has(feature::multiple_leds)) {
                 const route at = route_of(id);
-                return answer<M>(multiple_leds{at.priority, at.destination, at.source,
-                                               colour_frame::make(pf == 0x80A7 ? 1 : 2).value(),
-                                               multiple_leds::halves(w & used)});
+                return answer<M>(
+                    multiple_leds{at.priority, at.destination, at.source,
+                                  colour_frame::make(at_pf == 0x80A7'0000 ? 1 : 2).value(),
+                                  multiple_leds::halves(w & used)});
             }
-        } else if (pf >= 0x8000 && (pf & ~1u) != 0x80EE) {
+        } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000) {
             return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
         }
     }
