@@ -879,14 +879,17 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                 }
             }
         } else if ((at_pf & ~0x1'0000u) == 0x80A6'0000) {  // a multiple-LED frame, A700h or A600h
-            const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
-            if (!to_global() && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
-                r.frames.has(feature::multiple_leds)) {
-                const route at = route_of(id);
-                return answer<M>(
-                    multiple_leds{at.priority, at.destination, at.source,
-                                  colour_frame::make(at_pf == 0x80A7'0000 ? 1 : 2).value(),
-                                  multiple_leds::halves(w & used)});
+            // A model with the frame has 1..16 LEDs in it (the model table's check), so that
+            // the mask of their nibbles is one shift.
+            if (r.frames.has(feature::multiple_leds) && !to_global()) {
+                const std::uint64_t used = ~std::uint64_t{0} >> (64 - 4u * r.plane_leds);
+                if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
+                    const route at = route_of(id);
+                    return answer<M>(
+                        multiple_leds{at.priority, at.destination, at.source,
+                                      colour_frame::make(at_pf == 0x80A7'0000 ? 1 : 2).value(),
+                                      multiple_leds::halves(w & used)});
+                }
             }
         } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000) {
             return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
