@@ -816,12 +816,17 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     // (the identifier not FFh) in one compare.
                     if ((((w - 0x0100'0000) >> 24) & 0xFEF0) == 0 && (w >> 40) - 0xFF'FF00 < 0xFF &&
                         r.frames.has(feature::key_contact)) {
-                        // The answer's bytes in one word, from which g++ stores them together;
-                        // byte 4 is 00h or 01h here, so the bool is that byte as it stands.
-                        const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
+                        // The answer's first four bytes in one word, which g++ stores at once,
+                        // and the state and identifier as the two bytes of one half-word (from a
+                        // 64-bit word it shifted each apart). Byte 4 is 00h or 01h here, so the
+                        // bool is that byte as it stands.
+                        const auto v =
+                            static_cast<std::uint32_t>(route_word(id) | (w & 0xFF00'0000));
+                        const auto tail = static_cast<std::uint16_t>(w >> 32);
                         return answer<M>(key_contact{
                             priority::make(byte_of(v, 0)).value(), byte_of(v, 1), byte_of(v, 2),
-                            byte_of(v, 3), std::bit_cast<bool>(byte_of(v, 4)), byte_of(v, 5)});
+                            byte_of(v, 3), std::bit_cast<bool>(static_cast<std::uint8_t>(tail)),
+                            static_cast<std::uint8_t>(tail >> 8)});
                     }
                 } else if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
                            r.form == led_form::si && r.frames.has(feature::led_command) &&
