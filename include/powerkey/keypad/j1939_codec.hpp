@@ -884,8 +884,8 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                 }
             }
         } else if ((at_pf & ~0x1'0000u) == 0x80A6'0000) {  // a multiple-LED frame, A700h or A600h
-            // A model with the frame has 1..16 LEDs in it (the model table's check), so that
-            // the mask of their nibbles is one shift.
+            // A model with the frame has 1..16 LEDs in it (rows_consistent, j1939_models.hpp), so
+            // that the mask of their nibbles is one shift.
             if (r.frames.has(feature::multiple_leds) && !to_global()) {
                 const std::uint64_t used = ~std::uint64_t{0} >> (64 - 4u * r.plane_leds);
                 if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
