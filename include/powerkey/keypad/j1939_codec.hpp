@@ -27,6 +27,7 @@
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>
 
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <type_traits>
@@ -418,13 +419,13 @@ constexpr bool bytes_at_most(std::uint64_t v, std::uint64_t max) noexcept {
     return ((((v & low7) + (low7 - max)) | v) & ~low7) == 0;
 }
 
-// A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set, bit 2 or
-// bit 1 set, and not all four (Fh, blink). Every nibble at once.
+// A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set and its low
+// three bits 2..6. Every nibble at once, in two adds that carry out of no nibble: low + 6 has
+// bit 3 set from 2 up, low + 1 only at 7 (Fh, blink).
 constexpr bool has_unused_code(std::uint64_t w) noexcept {
-    constexpr std::uint64_t ones = 0x1111'1111'1111'1111;
-    const std::uint64_t b0 = w & ones, b1 = (w >> 1) & ones, b2 = (w >> 2) & ones,
-                        b3 = (w >> 3) & ones;
-    return (b3 & (b2 | b1) & ~(b0 & b1 & b2)) != 0;
+    const std::uint64_t low = w & 0x7777'7777'7777'7777;
+    return (w & (low + 0x6666'6666'6666'6666) & ~(low + 0x1111'1111'1111'1111) &
+            0x8888'8888'8888'8888) != 0;
 }
 
 template <class M>
@@ -743,6 +744,13 @@ constexpr route route_of(std::uint32_t id) noexcept {
             static_cast<std::uint8_t>(id)};
 }
 
+// The identifier's priority, destination and source as bytes 0, 1 and 2 of a word: the order
+// of every message's first three members, so that g++ stores them with the fields after them.
+constexpr std::uint64_t route_word(std::uint32_t id) noexcept {
+    // (id & FFFFh) * 10001h holds the source in bytes 0 and 2 and the destination in 1 and 3.
+    return ((id >> 26) & 7u) | (((id & 0xFFFFu) * 0x1'0001u) & 0xFF'FF00u);
+}
+
 // A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r, every check in the
 // order decode documents. Out of line: the frequent frames that pass every check are answered
 // before it (decode_frame).
@@ -792,55 +800,69 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
     const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
     if (!POWERKEY_DETAIL_SIZE && !keypad && f.size() == 8) {
         const std::uint64_t w = f.data_le();
-        const bool to_global = ((id >> 8) & 0xFF) == global_address;
-        if (pf == 0x80EF) {
+        // To the global address FFh (PDU specific), tested where it decides, by an add that
+        // carries out of FFh only: g++ then stores the destination from the identifier with the
+        // other bytes of the answer rather than as a constant FFh on its own.
+        const auto to_global = [id] { return ((id + 0x100) & 0xFF00) == 0; };
+        // The 29-bit flag, EDP, DP and PDU format where the identifier has them (no shift).
+        const std::uint32_t at_pf = id & 0x83FF'0000;
+        if (at_pf == 0x80EF'0000) {
             // Header and command byte; the tests in the order of their frames' share of a bus.
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
-                if (to_global) {  // the key contact state (is_led_command)
-                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there),
-                    // the state 00h/01h, bytes 6 and 7 FFh, the identifier not FFh.
-                    if (((w - 0x0100'0000) & 0xFFFF'00FE'F000'0000) == 0xFFFF'0000'0000'0000 &&
-                        byte_of(w, 5) != 0xFF && r.frames.has(feature::key_contact)) {
-                        const route at = route_of(id);
-                        return answer<M>(key_contact{at.priority, at.destination, at.source,
-                                                     byte_of(w, 3), byte_of(w, 4) == 1,
-                                                     byte_of(w, 5)});
+                if (to_global()) {  // the key contact state (is_led_command)
+                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there)
+                    // and the state 00h/01h in one masked test; bytes 7, 6 and 5 FF FF 00h..FEh
+                    // (the identifier not FFh) in one compare.
+                    if ((((w - 0x0100'0000) >> 24) & 0xFEF0) == 0 && (w >> 40) - 0xFF'FF00 < 0xFF &&
+                        r.frames.has(feature::key_contact)) {
+                        // The answer's first four bytes in one word, which g++ stores at once,
+                        // and the state and identifier as the two bytes of one half-word (from a
+                        // 64-bit word it shifted each apart). Byte 4 is 00h or 01h here, so the
+                        // bool is that byte as it stands.
+                        const auto v =
+                            static_cast<std::uint32_t>(route_word(id) | (w & 0xFF00'0000));
+                        const auto tail = static_cast<std::uint16_t>(w >> 32);
+                        return answer<M>(key_contact{
+                            priority::make(byte_of(v, 0)).value(), byte_of(v, 1), byte_of(v, 2),
+                            byte_of(v, 3), std::bit_cast<bool>(static_cast<std::uint8_t>(tail)),
+                            static_cast<std::uint8_t>(tail >> 8)});
                     }
-                } else if ((w >> 56) == 0xFF &&
-                           bytes_at_most((w - 0x0100'0000) & 0x00FF'FFFF'FF00'0000,
-                                         0x0009'0309'0F00'0000) &&
+                } else if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
                            r.form == led_form::si && r.frames.has(feature::led_command) &&
                            ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
-                    // Addressed with byte 6 not FFh, the LED command (is_led_command): byte 7
-                    // FFh; the LED - 1, colour, state and secondary colour at most 0Fh, 09h,
-                    // 03h, 09h (an LED 00h borrows and fails there); an LED the model has.
-                    const route at = route_of(id);
-                    return answer<M>(set_led{at.priority, at.destination, at.source, byte_of(w, 3),
-                                             static_cast<led_colour>(byte_of(w, 4)),
-                                             static_cast<led_mode>(byte_of(w, 5)),
-                                             static_cast<led_colour>(byte_of(w, 6))});
+                    // Addressed with byte 6 not FFh, the LED command (is_led_command): in one
+                    // add and one bytes_at_most, byte 7 FFh (plus 1 it is 00h, its carry out of
+                    // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
+                    // 09h, 03h, 09h (an LED 00h borrows and fails there; the header's bytes are
+                    // their own bounds); an LED the model has.
+                    const std::uint64_t v = route_word(id) | (w & 0x00FF'FFFF'FF00'0000);
+                    return answer<M>(set_led{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                             byte_of(v, 2), byte_of(v, 3),
+                                             static_cast<led_colour>(byte_of(v, 4)),
+                                             static_cast<led_mode>(byte_of(v, 5)),
+                                             static_cast<led_colour>(byte_of(v, 6))});
                 }
             } else if (head == 0xF9'1B04) {
                 // The heartbeat: byte 6 FFh, no key bit above the model's keys.
                 const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
                 if (byte_of(w, 6) == 0xFF && (keys >> r.keys) == 0 &&
                     r.frames.has(feature::heartbeat)) {
-                    const route at = route_of(id);
-                    return answer<M>(heartbeat{at.priority, at.destination, at.source,
-                                               byte_of(w, 3), key_set::from_mask(keys),
-                                               byte_of(w, 7)});
+                    const std::uint64_t v = route_word(id) | (w & 0xFF00'0000);
+                    return answer<M>(heartbeat{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                               byte_of(v, 2), byte_of(v, 3),
+                                               key_set::from_mask(keys), byte_of(w, 7)});
                 }
             } else if ((head & 0xFF) == 0) {
-                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. The
-                // state, LED - 1 and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
+                // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. As
+                // the LED command's: bytes 5..7 FFh (plus 1 at byte 5, 00h), the state, LED - 1
+                // and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
                 // decode_checked); an LED the model has.
-                if ((w >> 40) == 0xFF'FFFF &&
-                    bytes_at_most((w - 0x01'0000) & 0xFF'FFFF'FF00, 0x09'090F'0300) &&
-                    r.form == led_form::si && r.frames.has(feature::led_ack) &&
-                    ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
-                    const route at = route_of(id);
-                    return answer<M>(led_ack{at.priority, at.destination, at.source, byte_of(w, 2),
+                if (bytes_at_most(w + 0xFF'FFFF'0000, 0x09'090F'0300) && r.form == led_form::si &&
+                    r.frames.has(feature::led_ack) && ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
+                    const std::uint64_t v = route_word(id) | ((w & 0xFF'0000) << 8);
+                    return answer<M>(led_ack{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
+                                             byte_of(v, 2), byte_of(v, 3),
                                              static_cast<led_mode>(byte_of(w, 1)),
                                              static_cast<led_colour>(byte_of(w, 3)),
                                              static_cast<led_colour>(byte_of(w, 4))});
@@ -848,7 +870,7 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
             } else if ((head | 0x01'0000) == 0x03'1B04) {
                 // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
                 const bool led = head == 0x02'1B04;
-                if (!to_global && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
+                if (!to_global() && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
                     r.frames.has(led ? feature::led_brightness : feature::backlight_level)) {
                     const route at = route_of(id);
                     command c{};
@@ -861,16 +883,20 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     return answer<M>(c);
                 }
             }
-        } else if ((pf & ~1u) == 0x80A6) {  // a multiple-LED frame, A700h or A600h
-            const std::uint64_t used = powerkey::detail::low_bits(4u * r.plane_leds);
-            if (!to_global && (w | used) == ~std::uint64_t{0} && !has_unused_code(w) &&
-                r.frames.has(feature::multiple_leds)) {
-                const route at = route_of(id);
-                return answer<M>(multiple_leds{at.priority, at.destination, at.source,
-                                               colour_frame::make(pf == 0x80A7 ? 1 : 2).value(),
-                                               multiple_leds::halves(w & used)});
+        } else if ((at_pf & ~0x1'0000u) == 0x80A6'0000) {  // a multiple-LED frame, A700h or A600h
+            // A model with the frame has 1..16 LEDs in it (rows_consistent, j1939_models.hpp), so
+            // that the mask of their nibbles is one shift.
+            if (r.frames.has(feature::multiple_leds) && !to_global()) {
+                const std::uint64_t used = ~std::uint64_t{0} >> (64 - 4u * r.plane_leds);
+                if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
+                    const route at = route_of(id);
+                    return answer<M>(
+                        multiple_leds{at.priority, at.destination, at.source,
+                                      colour_frame::make(at_pf == 0x80A7'0000 ? 1 : 2).value(),
+                                      multiple_leds::halves(w & used)});
+                }
             }
-        } else if (pf >= 0x8000 && (pf & ~1u) != 0x80EE) {
+        } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000) {
             return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
         }
     }
@@ -962,22 +988,24 @@ template <message_alternative T>
 // decode, decode_key_or_led, decode_key_contact and encode with the model a template argument:
 // decode<model::pkp2600si>(f, keypad). The same engine as the calls above, with the same results
 // for every frame and message (tests/test_keypad_j1939_typed.cpp runs every manual row through
-// both, for every model). A reader inlines the engine whole (POWERKEY_DETAIL_FLATTEN) and encode<M>
-// of one message type is inlined into its caller with the message's own check, so that the
-// model's row is a constant: no model table, and not the paths this model never takes (another
-// LED form, frames its manual does not have). Where the caller's keypad address and fields are
-// constants, they fold too.
+// both, for every model). A reader inlines the engine whole (POWERKEY_DETAIL_FLATTEN) and is
+// itself inlined into its caller as j1939::decode is (POWERKEY_DETAIL_HOT; called, its answer
+// went back through memory: 72.2 against 54.3 instructions a frame on the J1939 mixed log), and
+// encode<M> of one message type is inlined into its caller with the message's own check, so that
+// the model's row is a constant: no model table, and not the paths this model never takes
+// (another LED form, frames its manual does not have). Where the caller's keypad address and
+// fields are constants, they fold too. Under -Os each is one function, called.
 
 template <model M>
-[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<message> decode(
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN POWERKEY_DETAIL_HOT constexpr result<message> decode(
     const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
     static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
     return decode(f, M, keypad);
 }
 
 template <model M>
-[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_or_led> decode_key_or_led(
-    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN POWERKEY_DETAIL_HOT constexpr result<key_or_led>
+decode_key_or_led(const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
     static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
     return decode_key_or_led(f, M, keypad);
 }
@@ -1019,8 +1047,8 @@ constexpr errc key_contact_front(const can::frame& f, const model_row& r,
 // wrong_id for any other frame (an LED command to the keypad included). Only the model's key
 // contact path is in the program.
 template <model M>
-[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_contact> decode_key_contact(
-    const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
+[[nodiscard]] POWERKEY_DETAIL_FLATTEN POWERKEY_DETAIL_HOT constexpr result<key_contact>
+decode_key_contact(const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
     static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
     const errc e = detail::key_contact_front(f, detail::j1939_row_of(M), keypad);
     if (e != errc{}) return e;
