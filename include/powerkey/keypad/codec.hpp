@@ -794,9 +794,10 @@ POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, cano
 // copy in a program.
 enum class sdo_verb : std::uint8_t { read, write, write_reply, read_reply };
 template <class Layout>
-constexpr result<can::frame> checked_sdo(const Layout& keypad, canopen::node_id node, object id,
+constexpr result<can::frame> checked_sdo(const Layout& given, canopen::node_id node, object id,
                                          sdo_verb verb, const object_value& v) noexcept {
     using canopen::function;
+    const auto& keypad = known(given);
     const std::uint8_t i = find_codec_row(keypad, id);
     if (i == 0) return errc::unknown_object;
     const codec_row& row = codec_row_at(keypad, i);
@@ -841,8 +842,9 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
 }
 // A command: its bytes read back by read_command, the decoder's reading.
 template <class Layout>
-constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
+constexpr result<can::frame> own_frame(const Layout& given, canopen::node_id node,
                                        const command& v) noexcept {
+    const auto& keypad = known(given);
     const std::uint8_t i = find_codec_row(keypad, object::command_module);
     if (i == 0) return errc::unknown_object;
     const auto data = static_cast<std::uint32_t>(load_le<4>(write_command(v).bytes, 0));

@@ -301,6 +301,15 @@ constexpr std::uint64_t kinds_of(dictionary d) noexcept {
     return has;
 }
 
+// The layout a function reads: the one it was given for a run-time model; for a fixed layout the
+// constant itself, so that its fields fold in a function not inlined into the caller that named
+// the model (the reference parameter alone does not tell the compiler which layout it is).
+constexpr const model_layout& known(const model_layout& keypad) noexcept { return keypad; }
+template <model M>
+constexpr const fixed_layout<M>& known(const fixed_layout<M>&) noexcept {
+    return fixed_layout_v<M>;
+}
+
 // The codec row number of a key or an object in keypad's dictionary (0: none), and the row.
 constexpr std::uint8_t find_codec_row(const model_layout& keypad, std::uint32_t key) noexcept {
     return find_codec_row(keypad.dictionary, key);
