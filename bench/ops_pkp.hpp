@@ -224,6 +224,27 @@ inline void one_pkp_led_on_encode(std::size_t calls) {
         return powerkey::encode<pkp_model>(n, v);
     });
 }
+// SDO writes and a command of the PKP manual (section 13 a; 1017h, 6201h), encoded with the model
+// a template argument (each checks itself: no decoder).
+inline constexpr std::array<powerkey::sdo_write, 2> pkp_sdo_writes{{
+    {powerkey::object::heartbeat_time, powerkey::number_value(50)},
+    {powerkey::object::led_brightness, powerkey::level_value(powerkey::level{0x30})},
+}};
+inline constexpr std::array<powerkey::command, 1> pkp_commands{{
+    {.code = powerkey::command_code::set_led_state, .key = 8, .state = powerkey::led_state::red_on},
+}};
+inline void one_pkp_sdo_write_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_sdo_writes, calls, [n](const powerkey::sdo_write& v) BENCH_INLINE {
+        return powerkey::encode<pkp_model>(n, v);
+    });
+}
+inline void one_pkp_command_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_commands, calls, [n](const powerkey::command& v) BENCH_INLINE {
+        return powerkey::encode<pkp_model>(n, v);
+    });
+}
 inline void pkp_sdo_request_decode(std::size_t calls) {
     decode_all(pkp_sdo_request_frames, pkp_model, calls);
 }
@@ -247,6 +268,8 @@ inline constexpr op pkp_ops[] = {
     {"pkp2400/led_on/encode_own", pkp_led_on_encode_own},
     {"pkp2400/one/key_state/decode_key_state", one_pkp_key_state_decode},
     {"pkp2400/one/led_on/encode", one_pkp_led_on_encode},
+    {"pkp2400/one/sdo_write/encode", one_pkp_sdo_write_encode},
+    {"pkp2400/one/command/encode", one_pkp_command_encode},
     {"pkp2400/sdo/decode_request", pkp_sdo_request_decode},
     {"pkp2400/sdo/decode_response", pkp_sdo_response_decode},
     {"pkp2400/sdo/encode", pkp_sdo_encode},

@@ -4,7 +4,9 @@
 // starts it, keeps the LED picture and reports a lost keypad. Each key toggles its LED green
 // (the key-modes helper), a lost keypad lights a status output (the application's safe state).
 // Time comes from a free-running millisecond counter register; frames from the mailbox.
-// The controller lives on the stack of firmware_main: no heap, no .data, no .bss.
+// The controller lives on the stack of firmware_main: no heap, no .data, no .bss. Its model is a
+// template argument (model_constant): only the PKP-2400's dictionary is in the program
+// (docs/howto-cortex-m0.md takes this firmware apart).
 // Each library call sits in its own function of namespace `calls`, so that scripts/footprint.sh
 // can report the stack each one needs.
 #include <powerkey/behaviour/controller.hpp>
