@@ -213,6 +213,12 @@ template <class T, std::size_t N>
     cycle(messages, calls,
           [n, m](const T& msg) BENCH_INLINE { return powerkey::encode(n, m, msg); });
 }
+// The same with the model a template argument: encode<M>(node, msg).
+template <powerkey::model M, class T, std::size_t N>
+[[gnu::always_inline]] inline void encode_all(const std::array<T, N>& messages, std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(messages, calls, [n](const T& msg) BENCH_INLINE { return powerkey::encode<M>(n, msg); });
+}
 
 // --- the operations -------------------------------------------------------------------------
 

@@ -218,12 +218,7 @@ inline void one_pkp_key_state_decode(std::size_t calls) {
         return powerkey::decode_key_state<pkp_model>(f, n);
     });
 }
-inline void one_pkp_led_on_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pkp_led_ons, calls, [n](const powerkey::led_on& v) BENCH_INLINE {
-        return powerkey::encode<pkp_model>(n, v);
-    });
-}
+inline void one_pkp_led_on_encode(std::size_t calls) { encode_all<pkp_model>(pkp_led_ons, calls); }
 // SDO writes and a command of the PKP manual (section 13 a; 1017h, 6201h), encoded with the model
 // a template argument (each checks itself: no decoder).
 inline constexpr std::array<powerkey::sdo_write, 2> pkp_sdo_writes{{
@@ -234,16 +229,10 @@ inline constexpr std::array<powerkey::command, 1> pkp_commands{{
     {.code = powerkey::command_code::set_led_state, .key = 8, .state = powerkey::led_state::red_on},
 }};
 inline void one_pkp_sdo_write_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pkp_sdo_writes, calls, [n](const powerkey::sdo_write& v) BENCH_INLINE {
-        return powerkey::encode<pkp_model>(n, v);
-    });
+    encode_all<pkp_model>(pkp_sdo_writes, calls);
 }
 inline void one_pkp_command_encode(std::size_t calls) {
-    const auto n = opaque(node);
-    cycle(pkp_commands, calls, [n](const powerkey::command& v) BENCH_INLINE {
-        return powerkey::encode<pkp_model>(n, v);
-    });
+    encode_all<pkp_model>(pkp_commands, calls);
 }
 inline void pkp_sdo_request_decode(std::size_t calls) {
     decode_all(pkp_sdo_request_frames, pkp_model, calls);

@@ -65,37 +65,40 @@ static_assert(first_failing(pk1000_rows::rows, every_model_round_trips) ==
 static_assert(first_failing(pkp_rows::rows, every_model_round_trips) == std::size(pkp_rows::rows));
 
 // decode<M>(f, node), the model known at compile time, answers as decode(f, node, M) for every
-// model and both readings (issue 24: the same rows serve both APIs).
-template <std::size_t... I>
-constexpr bool compile_time_model_agrees(const can::frame& f, canopen::node_id n,
-                                         std::index_sequence<I...>) {
-    return ((decode<static_cast<model>(I)>(f, n) == decode(f, n, static_cast<model>(I)) &&
-             decode<static_cast<model>(I)>(f, n, reading::strict) ==
-                 decode(f, n, static_cast<model>(I), reading::strict)) &&
-            ...);
+// model and both readings (issue 24: the same rows serve both APIs); so do decode_canopen<M> and
+// encode<M> of each message read (M's dictionary alone).
+template <model M>
+constexpr bool decode_agrees(const can::frame& f, canopen::node_id n) {
+    return decode<M>(f, n) == decode(f, n, M) &&
+           decode<M>(f, n, reading::strict) == decode(f, n, M, reading::strict);
+}
+template <model M>
+constexpr bool canopen_calls_agree(const can::frame& f, canopen::node_id n) {
+    if (!(decode_canopen<M>(f, n) == decode_canopen(f, n, M))) return false;
+    const auto m = decode(f, n, M);
+    return !m || encode<M>(n, *m) == encode(n, M, *m);
+}
+// Every model's calls on a row's frame: decode's (false), or decode_canopen's and encode's (true).
+template <bool canopen_calls, class Row, std::size_t... I>
+constexpr bool every_model(const Row& r, std::index_sequence<I...>) {
+    const auto f = frame_of(r.frame);
+    const auto n = node_of(r.node);
+    if constexpr (canopen_calls)
+        return (canopen_calls_agree<static_cast<model>(I)>(f, n) && ...);
+    else
+        return (decode_agrees<static_cast<model>(I)>(f, n) && ...);
 }
 template <class Row>
 constexpr bool both_model_apis_agree(const Row& r) {
-    return compile_time_model_agrees(frame_of(r.frame), node_of(r.node),
-                                     std::make_index_sequence<model_count>{});
-}
-// ... and so do decode_canopen<M> and encode<M> of each message read (M's dictionary alone).
-template <model M>
-constexpr bool compile_time_canopen_agrees(const can::frame& f, canopen::node_id n) {
-    if (!(decode_canopen<M>(f, n) == decode_canopen(f, n, M))) return false;
-    const auto m = decode(f, n, M);
-    if (!m) return true;
-    return encode<M>(n, *m) == encode(n, M, *m);
-}
-template <std::size_t... I>
-constexpr bool compile_time_canopen_agrees(const can::frame& f, canopen::node_id n,
-                                           std::index_sequence<I...>) {
-    return (compile_time_canopen_agrees<static_cast<model>(I)>(f, n) && ...);
+    return every_model<false>(r, std::make_index_sequence<model_count>{});
 }
 template <class Row>
 constexpr bool compile_time_canopen_rows_agree(const Row& r) {
-    return compile_time_canopen_agrees(frame_of(r.frame), node_of(r.node),
-                                       std::make_index_sequence<model_count>{});
+    return every_model<true>(r, std::make_index_sequence<model_count>{});
+}
+template <class Row>
+constexpr bool compile_time_calls_agree(const Row& r) {
+    return both_model_apis_agree(r) && compile_time_canopen_rows_agree(r);
 }
 static_assert(first_failing(core_rows, both_model_apis_agree<row>) == std::size(core_rows));
 static_assert(first_failing(core_rows, compile_time_canopen_rows_agree<row>) ==
@@ -188,25 +191,16 @@ TEST_CASE(
     "decode<M>, decode_canopen<M> and encode<M> with the model known at compile time answer as the "
     "run-time calls") {
     // Every manual row and every refusal row, through every model, read tolerantly and strictly.
-    check_rows(core_rows, both_model_apis_agree<row>);
-    check_rows(core_error_rows, both_model_apis_agree<error_row>);
-    check_rows(pk1000_rows::rows, both_model_apis_agree<row>);
-    check_rows(pk1000_rows::error_rows, both_model_apis_agree<error_row>);
-    check_rows(pkp_rows::rows, both_model_apis_agree<row>);
-    check_rows(pkp_rows::error_rows, both_model_apis_agree<error_row>);
-    check_rows(si_rows::rows, both_model_apis_agree<row>);
-    check_rows(si_rows::error_rows, both_model_apis_agree<error_row>);
-    check_rows(si_rows::errata_rows, both_model_apis_agree<error_row>);
-    check_rows(si_reference_rows::rows, both_model_apis_agree<row>);
-    check_rows(core_rows, compile_time_canopen_rows_agree<row>);
-    check_rows(core_error_rows, compile_time_canopen_rows_agree<error_row>);
-    check_rows(pk1000_rows::rows, compile_time_canopen_rows_agree<row>);
-    check_rows(pk1000_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
-    check_rows(pkp_rows::rows, compile_time_canopen_rows_agree<row>);
-    check_rows(pkp_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
-    check_rows(si_rows::rows, compile_time_canopen_rows_agree<row>);
-    check_rows(si_rows::error_rows, compile_time_canopen_rows_agree<error_row>);
-    check_rows(si_reference_rows::rows, compile_time_canopen_rows_agree<row>);
+    check_rows(core_rows, compile_time_calls_agree<row>);
+    check_rows(core_error_rows, compile_time_calls_agree<error_row>);
+    check_rows(pk1000_rows::rows, compile_time_calls_agree<row>);
+    check_rows(pk1000_rows::error_rows, compile_time_calls_agree<error_row>);
+    check_rows(pkp_rows::rows, compile_time_calls_agree<row>);
+    check_rows(pkp_rows::error_rows, compile_time_calls_agree<error_row>);
+    check_rows(si_rows::rows, compile_time_calls_agree<row>);
+    check_rows(si_rows::error_rows, compile_time_calls_agree<error_row>);
+    check_rows(si_rows::errata_rows, compile_time_calls_agree<error_row>);
+    check_rows(si_reference_rows::rows, compile_time_calls_agree<row>);
 }
 
 TEST_CASE("decode_canopen answers as decode on 11-bit frames and refuses 29-bit ones") {
