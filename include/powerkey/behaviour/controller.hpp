@@ -741,7 +741,6 @@ private:
     }
     constexpr bool send_frame(const can::frame& f) noexcept { return outbox_.push(f); }
 
-    controller_config cfg_;
     // The model's layout (the codec's part of its row) and dictionary lookups: M's alone for a
     // model_constant, every model's for any_model.
     constexpr const auto& keypad() const noexcept {
@@ -792,6 +791,7 @@ private:
         return errc::unknown_command;
     }
 
+    controller_config cfg_;
     powerkey::model model_;
     const powerkey::detail::model_layout* layout_;  // any_model: detail::layout_or_none
     canopen::node_id node_;
