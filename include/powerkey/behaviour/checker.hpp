@@ -560,60 +560,13 @@ private:
 
 // --- explanations -------------------------------------------------------------------------------
 
-// CiA 301 table 22: what each abort code means.
-struct abort_meaning {
-    canopen::sdo_abort_code code;
-    std::string_view text;
-};
-
-inline constexpr abort_meaning abort_meanings[] = {
-    {canopen::sdo_abort_code::toggle_bit_not_alternated, "toggle bit not alternated"},
-    {canopen::sdo_abort_code::timed_out, "SDO protocol timed out"},
-    {canopen::sdo_abort_code::invalid_command_specifier,
-     "client/server command specifier not valid or unknown"},
-    {canopen::sdo_abort_code::invalid_block_size, "invalid block size"},
-    {canopen::sdo_abort_code::invalid_sequence_number, "invalid sequence number"},
-    {canopen::sdo_abort_code::crc_error, "CRC error"},
-    {canopen::sdo_abort_code::out_of_memory, "out of memory"},
-    {canopen::sdo_abort_code::unsupported_access, "unsupported access to an object"},
-    {canopen::sdo_abort_code::write_only, "attempt to read a write only object"},
-    {canopen::sdo_abort_code::read_only, "attempt to write a read only object"},
-    {canopen::sdo_abort_code::object_does_not_exist,
-     "object does not exist in the object dictionary"},
-    {canopen::sdo_abort_code::cannot_be_mapped, "object cannot be mapped to the PDO"},
-    {canopen::sdo_abort_code::exceeds_pdo_length,
-     "the number and length of the objects to be mapped would exceed PDO length"},
-    {canopen::sdo_abort_code::parameter_incompatibility, "general parameter incompatibility"},
-    {canopen::sdo_abort_code::internal_incompatibility, "general internal incompatibility"},
-    {canopen::sdo_abort_code::hardware_error, "access failed due to a hardware error"},
-    {canopen::sdo_abort_code::length_mismatch,
-     "data type does not match, length of service parameter does not match"},
-    {canopen::sdo_abort_code::length_too_high,
-     "data type does not match, length of service parameter too high"},
-    {canopen::sdo_abort_code::length_too_low,
-     "data type does not match, length of service parameter too low"},
-    {canopen::sdo_abort_code::subindex_does_not_exist, "sub-index does not exist"},
-    {canopen::sdo_abort_code::invalid_value, "invalid value for parameter (download only)"},
-    {canopen::sdo_abort_code::value_too_high, "value of parameter written too high"},
-    {canopen::sdo_abort_code::value_too_low, "value of parameter written too low"},
-    {canopen::sdo_abort_code::max_less_than_min, "maximum value is less than minimum value"},
-    {canopen::sdo_abort_code::resource_not_available, "resource not available: SDO connection"},
-    {canopen::sdo_abort_code::general_error, "general error"},
-    {canopen::sdo_abort_code::cannot_store,
-     "data cannot be transferred or stored to the application"},
-    {canopen::sdo_abort_code::cannot_store_local_control,
-     "data cannot be transferred or stored to the application because of local control"},
-    {canopen::sdo_abort_code::cannot_store_device_state,
-     "data cannot be transferred or stored to the application because of the present device state"},
-    {canopen::sdo_abort_code::no_object_dictionary,
-     "object dictionary dynamic generation fails or no object dictionary is present"},
-    {canopen::sdo_abort_code::no_data, "no data available"},
-};
-
-// The CiA 301 meaning of an abort code; "" for a code CiA 301 does not define.
+// The CiA 301 meaning of an abort code (POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST, canopen/sdo.hpp);
+// "" for a code CiA 301 does not define.
 [[nodiscard]] constexpr std::string_view abort_meaning_of(std::uint32_t code) noexcept {
-    for (const auto& m : abort_meanings)
-        if (static_cast<std::uint32_t>(m.code) == code) return m.text;
+#define POWERKEY_BEHAVIOUR_DETAIL_ABORT_MEANING(name, value, meaning) \
+    case value: return meaning;
+    switch (code) { POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_BEHAVIOUR_DETAIL_ABORT_MEANING) }
+#undef POWERKEY_BEHAVIOUR_DETAIL_ABORT_MEANING
     return {};
 }
 

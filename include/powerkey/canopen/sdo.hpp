@@ -149,44 +149,47 @@ struct sdo_segment_response {
 
 // --- both directions --------------------------------------------------------------------------
 
-// CiA 301 table 22, the abort codes; a decoded abort keeps any 32-bit code, named or not.
+// CiA 301 table 22: the abort codes, each with its meaning; a decoded abort keeps any 32-bit
+// code, named or not.
 // clang-format off
 #define POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(X) \
-    X(toggle_bit_not_alternated, 0x0503'0000) \
-    X(timed_out, 0x0504'0000) \
-    X(invalid_command_specifier, 0x0504'0001) \
-    X(invalid_block_size, 0x0504'0002) \
-    X(invalid_sequence_number, 0x0504'0003) \
-    X(crc_error, 0x0504'0004) \
-    X(out_of_memory, 0x0504'0005) \
-    X(unsupported_access, 0x0601'0000) \
-    X(write_only, 0x0601'0001) \
-    X(read_only, 0x0601'0002) \
-    X(object_does_not_exist, 0x0602'0000) \
-    X(cannot_be_mapped, 0x0604'0041) \
-    X(exceeds_pdo_length, 0x0604'0042) \
-    X(parameter_incompatibility, 0x0604'0043) \
-    X(internal_incompatibility, 0x0604'0047) \
-    X(hardware_error, 0x0606'0000) \
-    X(length_mismatch, 0x0607'0010) \
-    X(length_too_high, 0x0607'0012) \
-    X(length_too_low, 0x0607'0013) \
-    X(subindex_does_not_exist, 0x0609'0011) \
-    X(invalid_value, 0x0609'0030) \
-    X(value_too_high, 0x0609'0031) \
-    X(value_too_low, 0x0609'0032) \
-    X(max_less_than_min, 0x0609'0036) \
-    X(resource_not_available, 0x060A'0023) \
-    X(general_error, 0x0800'0000) \
-    X(cannot_store, 0x0800'0020) \
-    X(cannot_store_local_control, 0x0800'0021) \
-    X(cannot_store_device_state, 0x0800'0022) \
-    X(no_object_dictionary, 0x0800'0023) \
-    X(no_data, 0x0800'0024)
+    X(toggle_bit_not_alternated, 0x0503'0000, "toggle bit not alternated") \
+    X(timed_out, 0x0504'0000, "SDO protocol timed out") \
+    X(invalid_command_specifier, 0x0504'0001, "client/server command specifier not valid or unknown") \
+    X(invalid_block_size, 0x0504'0002, "invalid block size") \
+    X(invalid_sequence_number, 0x0504'0003, "invalid sequence number") \
+    X(crc_error, 0x0504'0004, "CRC error") \
+    X(out_of_memory, 0x0504'0005, "out of memory") \
+    X(unsupported_access, 0x0601'0000, "unsupported access to an object") \
+    X(write_only, 0x0601'0001, "attempt to read a write only object") \
+    X(read_only, 0x0601'0002, "attempt to write a read only object") \
+    X(object_does_not_exist, 0x0602'0000, "object does not exist in the object dictionary") \
+    X(cannot_be_mapped, 0x0604'0041, "object cannot be mapped to the PDO") \
+    X(exceeds_pdo_length, 0x0604'0042, "the number and length of the objects to be mapped would exceed PDO length") \
+    X(parameter_incompatibility, 0x0604'0043, "general parameter incompatibility") \
+    X(internal_incompatibility, 0x0604'0047, "general internal incompatibility") \
+    X(hardware_error, 0x0606'0000, "access failed due to a hardware error") \
+    X(length_mismatch, 0x0607'0010, "data type does not match, length of service parameter does not match") \
+    X(length_too_high, 0x0607'0012, "data type does not match, length of service parameter too high") \
+    X(length_too_low, 0x0607'0013, "data type does not match, length of service parameter too low") \
+    X(subindex_does_not_exist, 0x0609'0011, "sub-index does not exist") \
+    X(invalid_value, 0x0609'0030, "invalid value for parameter (download only)") \
+    X(value_too_high, 0x0609'0031, "value of parameter written too high") \
+    X(value_too_low, 0x0609'0032, "value of parameter written too low") \
+    X(max_less_than_min, 0x0609'0036, "maximum value is less than minimum value") \
+    X(resource_not_available, 0x060A'0023, "resource not available: SDO connection") \
+    X(general_error, 0x0800'0000, "general error") \
+    X(cannot_store, 0x0800'0020, "data cannot be transferred or stored to the application") \
+    X(cannot_store_local_control, 0x0800'0021, "data cannot be transferred or stored to the application because of local control") \
+    X(cannot_store_device_state, 0x0800'0022, "data cannot be transferred or stored to the application because of the present device state") \
+    X(no_object_dictionary, 0x0800'0023, "object dictionary dynamic generation fails or no object dictionary is present") \
+    X(no_data, 0x0800'0024, "no data available")
 // clang-format on
+#define POWERKEY_CANOPEN_DETAIL_ABORT_ENUMERATOR(name, code, meaning) name = code,
 enum class sdo_abort_code : std::uint32_t {
-    POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
+    POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_CANOPEN_DETAIL_ABORT_ENUMERATOR)
 };
+#undef POWERKEY_CANOPEN_DETAIL_ABORT_ENUMERATOR
 
 }  // namespace powerkey::canopen
 
