@@ -1,6 +1,6 @@
 // Test support shared by the behaviour tests: a level built at run time, a virtual keypad
-// switched to J1939, and a controller (CANopen or J1939) and a virtual keypad on one bus, stepped
-// every millisecond, with every frame logged and every event kept.
+// switched to J1939, what a virtual keypad sent, and a controller (CANopen or J1939) and a virtual
+// keypad on one bus, stepped every millisecond, with every frame logged and every event kept.
 #ifndef POWERKEY_TESTS_BEHAVIOUR_SUPPORT_HPP
 #define POWERKEY_TESTS_BEHAVIOUR_SUPPORT_HPP
 
@@ -9,6 +9,8 @@
 #include <powerkey/behaviour/controller.hpp>
 #include <powerkey/behaviour/virtual_keypad.hpp>
 #include <powerkey/can/candump.hpp>
+
+#include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -29,6 +31,14 @@ void switch_to_j1939(powerkey::behaviour::virtual_keypad<N>& k, powerkey::behavi
     k.receive(frame_of("615#2BFF200101000000"), t);
     while (k.transmit()) {
     }
+}
+
+// What keypad k has sent since it was last drained, oldest first, in the candump form.
+template <std::size_t N>
+std::vector<std::string> drain(powerkey::behaviour::virtual_keypad<N>& k) {
+    std::vector<std::string> out;
+    while (const auto f = k.transmit()) out.emplace_back(powerkey::can::format_candump(*f).view());
+    return out;
 }
 
 // A controller and a virtual keypad on one bus, stepped every millisecond.
@@ -99,6 +109,22 @@ struct closed_loop {
     std::vector<logged> log;
     std::vector<powerkey::behaviour::controller_event> events;
 };
+
+// Key 1 of bench b (a closed_loop, or a type made from one with its own run) held for a second,
+// then released: the controller reports the press, the long press, three repeats (at 500, 700 and
+// 900 ms) and the release.
+template <class Bench>
+void check_key_1_held(Bench& b) {
+    using powerkey::behaviour::event_kind;
+    b.keypad.press(1, b.at());
+    b.run(1000);
+    b.keypad.release(1, b.at());
+    b.run(20);
+    CHECK(b.saw(event_kind::key_pressed, 1));
+    CHECK(b.saw(event_kind::key_long_press, 1));
+    CHECK(b.count(event_kind::key_repeat) == 3);
+    CHECK(b.saw(event_kind::key_released, 1));
+}
 
 }  // namespace powerkey_tests
 

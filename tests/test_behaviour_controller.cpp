@@ -146,14 +146,7 @@ TEST_CASE("controller + virtual keypad: start, configure, LEDs, levels, keys, fo
         CHECK(b.keypad.backlight().level == lv(0x20));
 
         // Key events: press, long press, repeats, release.
-        b.keypad.press(1, b.at());
-        b.run(1000);
-        b.keypad.release(1, b.at());
-        b.run(20);
-        CHECK(b.saw(event_kind::key_pressed, 1));
-        CHECK(b.saw(event_kind::key_long_press, 1));
-        CHECK(b.count(event_kind::key_repeat) == 3);  // at 500, 700, 900 ms
-        CHECK(b.saw(event_kind::key_released, 1));
+        powerkey_tests::check_key_1_held(b);
         CHECK(b.ctl.events_dropped() == 0);
 
         // A controller session is clean for the checker.

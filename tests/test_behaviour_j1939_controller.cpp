@@ -94,14 +94,7 @@ TEST_CASE("J1939 controller + virtual keypad: found, set up, LEDs, levels, keys,
         CHECK(b.keypad.j1939().backlight_level() == lv(0x20));
         CHECK(b.keypad.j1939().backlight_colour_now() == backlight_colour::red);
         // Key events from the key contact states: press, long press, repeats, release.
-        b.keypad.press(1, b.at());
-        b.run(1000);
-        b.keypad.release(1, b.at());
-        b.run(20);
-        CHECK(b.saw(event_kind::key_pressed, 1));
-        CHECK(b.saw(event_kind::key_long_press, 1));
-        CHECK(b.count(event_kind::key_repeat) == 3);  // at 500, 700, 900 ms
-        CHECK(b.saw(event_kind::key_released, 1));
+        powerkey_tests::check_key_1_held(b);
         CHECK(b.count(event_kind::lost) == 0);  // its heartbeat every 200 ms
         CHECK(b.ctl.events_dropped() == 0);
     }

@@ -6,7 +6,6 @@
 #include "support.hpp"
 
 #include <powerkey/behaviour/virtual_keypad.hpp>
-#include <powerkey/can/candump.hpp>
 
 #include <doctest/doctest.h>
 
@@ -16,10 +15,8 @@
 #include <vector>
 
 using namespace powerkey;
-using behaviour::duration_ms;
-using behaviour::millis;
-using behaviour::run_state;
-using behaviour::virtual_keypad;
+using namespace powerkey::behaviour;
+using powerkey_tests::drain;
 using powerkey_tests::frame_of;
 using powerkey_tests::lv;
 
@@ -34,13 +31,6 @@ virtual_keypad<> in_j1939(model m, millis t = {0}) {
     k.power_on(millis{0});
     powerkey_tests::switch_to_j1939(k, t);
     return k;
-}
-
-// What the keypad has sent, oldest first, in the candump form.
-strings drain(virtual_keypad<>& k) {
-    strings out;
-    while (const auto f = k.transmit()) out.emplace_back(can::format_candump(*f).view());
-    return out;
 }
 
 // A frame to the keypad at t, and what it sends in answer.

@@ -1,6 +1,7 @@
 // behaviour/virtual_keypad.hpp: the virtual keypad. The manuals' transcripts replayed against it,
 // model by model; one test per behaviour; every model answering every readable object. Its runs
 // against the controller are in test_behaviour_controller.cpp.
+#include "behaviour_support.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"
@@ -930,9 +931,7 @@ std::vector<std::string> answer(virtual_keypad<N>& k, std::string_view in, std::
     k.receive(frame_of(in), millis{now});
     now += 50;
     k.advance(millis{now});
-    std::vector<std::string> out;
-    while (const auto f = k.transmit()) out.emplace_back(can::format_candump(*f).view());
-    return out;
+    return powerkey_tests::drain(k);
 }
 }  // namespace
 
