@@ -4,7 +4,8 @@
 // distinct codec rows of all dictionaries (the SI dictionaries share most of theirs, and most
 // ranges repeat), one table of the distinct ranges, and per dictionary a hash table of row
 // numbers. The full rows stay for rows_of and find_row: a firmware that only decodes links none
-// of them.
+// of them. For a model known when the program is built, the same tables of its one dictionary
+// (one_dictionary, chosen by the type of its layout, fixed_layout).
 #ifndef POWERKEY_KEYPAD_LOOKUP_HPP
 #define POWERKEY_KEYPAD_LOOKUP_HPP
 
@@ -240,6 +241,7 @@ template <dictionary D>
 struct one_dictionary {
     static constexpr std::span<const object_row> full =
         dictionary_rows[static_cast<std::size_t>(D)];
+    static_assert(full.size() < 255, "a row number (1..) and the sentinel fit a byte");
     static constexpr auto rows = [] {
         std::array<codec_row, full.size() + 1> t{};
         t[0] = no_codec_row;
