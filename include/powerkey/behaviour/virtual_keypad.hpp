@@ -551,10 +551,10 @@ private:
         if (const auto* b = std::get_if<powerkey::led_brightness>(&msg)) brightness_ = b->level;
         if (const auto* b = std::get_if<powerkey::backlight>(&msg)) {
             backlight_.level = b->level;
+            // PK1000 15: 00h keeps the colour; PKP2600SI 15: 00h is the default colour.
             if (b->colour != backlight_colour::keep)
-                backlight_.colour = b->colour;  // PK1000 15: 00h keeps the colour
-            else if (model_row()
-                         .backlight_zero_is_default)  // PKP2600SI 15: 00h is the default colour
+                backlight_.colour = b->colour;
+            else if (model_row().backlight_zero_is_default)
                 backlight_.colour =
                     static_cast<backlight_colour>(value(object::default_backlight_colour));
         }
