@@ -397,7 +397,7 @@ private:
         if (const auto* a = std::get_if<canopen::sdo_abort>(&*r)) {
             if (a->address != job_->address) return;
             emit_sdo(event_kind::sdo_aborted, *job_, static_cast<std::uint32_t>(a->code));
-            finish_job(false);
+            finish_job();
             return;
         }
         if (job_->read) {
@@ -408,10 +408,10 @@ private:
             if (const auto* i = std::get_if<canopen::sdo_upload_initiate_response>(&*r);
                 i && i->address != job_->address)
                 return;
-            const auto s = upload_.step(f);
+            const auto s = upload_.step(*r);  // the reply read above, not read again
             if (!s && s.error() == errc::buffer_too_small) {  // a string longer than 16 bytes
                 emit_sdo(event_kind::sdo_refused, *job_, static_cast<std::uint32_t>(s.error()));
-                finish_job(false);
+                finish_job();
                 return;
             }
             if (!s) {
@@ -433,7 +433,7 @@ private:
                 }
             }
             emit_sdo(event_kind::sdo_done, *job_, v);
-            finish_job(true);
+            finish_job();
             return;
         }
         const auto* d = std::get_if<canopen::sdo_download_response>(&*r);
@@ -449,7 +449,7 @@ private:
             }
         }
         emit_sdo(event_kind::sdo_done, *job_, 0);
-        finish_job(true);
+        finish_job();
     }
 
     constexpr void set_model(powerkey::model m) noexcept {
@@ -520,16 +520,14 @@ private:
             return;
         }
         emit_sdo(event_kind::sdo_timed_out, *job_, 0);
-        finish_job(false);
+        finish_job();
     }
 
-    constexpr void finish_job(bool /*ok*/) noexcept {
-        job_.reset();
-        if (state_ == controller_state::setting_up)
-            next_setup_job();
-        else if (state_ == controller_state::running)
-            next_running_job();
-    }
+    // The request in flight is over (answered, aborted, refused or timed out). The next one starts
+    // in run(), which ends every step() and tick(), in the same call: not from here, so that the
+    // reply's reading is off the stack when the next request is built (firmware (c)'s worst
+    // stack, docs/performance.md).
+    constexpr void finish_job() noexcept { job_.reset(); }
 
     constexpr void next_setup_job() noexcept {
         while (setup_pos_ < setup_list) {
@@ -574,7 +572,7 @@ private:
         state_ = controller_state::running;
         start_keypad();
         emit(event_kind::ready);
-        next_running_job();
+        // (run() goes on to the running state's jobs and the picture in the same call.)
     }
 
     constexpr message active_message() const noexcept {
@@ -669,7 +667,9 @@ private:
 
     // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
     constexpr bool begin_job(const message& msg, sdo_origin origin, std::uint16_t step) noexcept {
-        sdo_job j;
+        // Built in place (no request is in flight here): a copy on the stack cost firmware (c)'s
+        // deepest call its size.
+        sdo_job& j = job_.emplace();
         j.request = msg;
         j.origin = origin;
         j.step = step;
@@ -681,6 +681,7 @@ private:
         } else if (const auto* w = std::get_if<sdo_write>(&msg)) {
             o = w->object;
         } else if (!std::holds_alternative<command>(msg)) {
+            job_.reset();
             return false;  // not an SDO request: skipped
         }
         j.what = o;
@@ -689,22 +690,24 @@ private:
         if (!address || !f) {
             emit_sdo(event_kind::sdo_refused, j,
                      static_cast<std::uint32_t>(f ? errc::unknown_object : f.error()));
+            job_.reset();
             return false;
         }
         j.address = *address;
-        job_ = j;
         attempts_ = 0;
         sent_ = false;
-        send_job();
+        transmit_job(*f);  // the frame built above: not built again
         return true;
     }
 
+    // The request again (a retry, or the outbox was full).
     constexpr void send_job() noexcept {
         if (!job_) return;
-        const auto f = frame_of(job_->request);
-        if (!f) return;
+        if (const auto f = frame_of(job_->request)) transmit_job(*f);
+    }
+    constexpr void transmit_job(const can::frame& f) noexcept {
         if (job_->read) (void)upload_.start(job_->address);
-        if (!send_frame(*f)) return;
+        if (!send_frame(f)) return;
         sent_ = true;
         ++attempts_;
         deadline_ = now_ + cfg_.sdo_timeout;
