@@ -596,21 +596,7 @@ private:
 
     // While running: a node change, then the shadow values that travel by SDO (PKP).
     constexpr void next_running_job() noexcept {
-        if (pending_node_change_) {
-            const auto n = *pending_node_change_;
-            pending_node_change_.reset();
-            message m = sdo_write{object::node_id, node_value(n)};
-            if (keypad().dictionary == dictionary::pkp_li) {
-                command c;
-                c.code = command_code::set_node_id;
-                c.node_id = n;
-                m = c;
-            }
-            if (begin_job(m, sdo_origin::node_change, 0)) {
-                if (replies_from_new_id()) job_->reply_node = n;  // PK1000 23
-                return;
-            }
-        }
+        if (pending_node_change_ && begin_node_change()) return;
         // The shadow values this model takes by SDO only (no RPDO3/RPDO4 for them).
         if (take(dirty_brightness, !keypad().brightness_pdo && has_brightness_)) {
             // By SDO write of the object. (The command module 6500h could set it too, but the one
@@ -639,6 +625,24 @@ private:
                 if (begin_job(c, sdo_origin::shadow, 0)) return;
             }
         }
+    }
+
+    // The node change asked for (change_node): started, or refused (reported).
+    constexpr bool begin_node_change() noexcept {
+        const auto n = *pending_node_change_;
+        pending_node_change_.reset();
+        bool started = false;
+        if (keypad().dictionary == dictionary::pkp_li) {
+            command c;
+            c.code = command_code::set_node_id;
+            c.node_id = n;
+            started = begin_job(c, sdo_origin::node_change, 0);
+        } else {
+            started =
+                begin_job(sdo_write{object::node_id, node_value(n)}, sdo_origin::node_change, 0);
+        }
+        if (started && replies_from_new_id()) job_->reply_node = n;  // PK1000 23
+        return started;
     }
 
     // Clears dirty bit `bit` when `mine` (the SDO path owns it) or there is nothing to send.
