@@ -81,6 +81,7 @@ struct backlight_state {
                                      const backlight_state&) noexcept = default;
 };
 
+namespace detail {
 // Every object's initial value: a dictionary's rows over the defaults common to both manuals
 // (section 3), which the PK1000 rows carry; made at compile time for a model known then.
 constexpr std::array<std::uint32_t, object_count> initial_values(
@@ -93,6 +94,7 @@ constexpr std::array<std::uint32_t, object_count> initial_values(
 template <model M>
 inline constexpr auto initial_values_v =
     initial_values(powerkey::detail::rows_of(powerkey::detail::fixed_layout_v<M>));
+}  // namespace detail
 
 // Keypad: any_model, the model a value (the constructor's), or model_constant<M>, a keypad of
 // model M that reads M's dictionary alone (the constructor's model is then not read).
@@ -308,9 +310,9 @@ private:
 
     constexpr void factory_defaults() noexcept {
         if constexpr (fixed)
-            value_ = initial_values_v<Keypad::value>;
+            value_ = behaviour::detail::initial_values_v<Keypad::value>;
         else
-            value_ = initial_values(powerkey::detail::rows_of(layout()));
+            value_ = behaviour::detail::initial_values(powerkey::detail::rows_of(layout()));
         value_[idx(object::node_id)] = canopen::default_node_id.value();
         if (powerkey::detail::find_row(layout(), object::total_keys)) {
             // PKP 32: the key and LED counts. The manual prints the PKU2200's: 4 keys, 0Ch LEDs
