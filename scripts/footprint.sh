@@ -7,7 +7,8 @@
 # Usage: scripts/footprint.sh [--check] [out-dir] [name...]      (names: a b core; default all)
 # --check fails when a firmware has .data or .bss (the library promises none), when a firmware
 # needs more flash than its limit (flash_limit below: 1 KiB for (a), for j1939, issue 21, and for
-# a_codec, issue 24), or when a stack bound cannot be computed.
+# a_codec, issue 24), more stack than its limit (stack_limit: 1 KiB for c, issue 24), or when a
+# stack bound cannot be computed.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 check=0
@@ -169,6 +170,11 @@ if data or bss:
 flash_limit = {"a": 1024, "j1939": 1024, "a_codec": 1024}
 if name in flash_limit and flash > flash_limit[name]:
     bad.append(f"flash {flash} > {flash_limit[name]} bytes")
+# The worst stack each firmware promises (bytes): c, the controller of one model with the
+# controller object on the loop's stack (issue 24).
+stack_limit = {"c": 1024}
+if name in stack_limit and total > stack_limit[name]:
+    bad.append(f"worst stack {total} > {stack_limit[name]} bytes")
 if notes:
     bad.append("stack bound not computable: " + "; ".join(notes))
 if check and bad:

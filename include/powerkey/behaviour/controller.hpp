@@ -26,6 +26,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/canopen/sdo.hpp>
 #include <powerkey/canopen/sdo_upload.hpp>
+#include <powerkey/detail/inline.hpp>
 #include <powerkey/enum_names.hpp>
 #include <powerkey/keypad/accessors.hpp>
 #include <powerkey/keypad/codec.hpp>
@@ -160,11 +161,7 @@ class controller {
 
 public:
     constexpr explicit controller(const controller_config& c) noexcept
-        : cfg_(c),
-          model_(model_of(c)),
-          layout_(fixed ? nullptr : &powerkey::detail::layout_or_none(c.keypad_model)),
-          node_(c.node),
-          upload_(c.node) {}
+        : cfg_(c), model_(model_of(c)), layout_(layout_of(c)), node_(c.node), upload_(c.node) {}
 
     // --- driving it -------------------------------------------------------------------------
 
@@ -273,13 +270,14 @@ private:
                                   dirty_level = 8, dirty_colour = 16, dirty_all = 31;
 
     struct sdo_job {
-        message request;
+        can::frame request;  // built once: a retry sends it again
         sdo_origin origin = sdo_origin::configuration;
         std::uint16_t step = 0;
         object what = object::keys;
         canopen::sdo_address address{};
         bool read = false;
         canopen::node_id reply_node = canopen::default_node_id;  // where the reply comes from
+        canopen::node_id new_node = canopen::default_node_id;    // origin node_change: the node id
     };
 
     // --- events -----------------------------------------------------------------------------
@@ -439,14 +437,11 @@ private:
         const auto* d = std::get_if<canopen::sdo_download_response>(&*r);
         if (d == nullptr || d->address != job_->address) return;
         if (job_->origin == sdo_origin::node_change) {
-            const auto n = node_id_change(job_->request);
-            if (n) {
-                node_ = *n;
-                upload_ = canopen::segmented_upload<16>(node_);
-                // PKP 13 h: a boot-up from the new id follows; it is not a reboot to report.
-                awaiting_boot_from_new_ = !replies_from_new_id();
-                emit(event_kind::node_changed);
-            }
+            node_ = job_->new_node;
+            upload_ = canopen::segmented_upload<16>(node_);
+            // PKP 13 h: a boot-up from the new id follows; it is not a reboot to report.
+            awaiting_boot_from_new_ = !replies_from_new_id();
+            emit(event_kind::node_changed);
         }
         emit_sdo(event_kind::sdo_done, *job_, 0);
         finish_job();
@@ -641,8 +636,10 @@ private:
             started =
                 begin_job(sdo_write{object::node_id, node_value(n)}, sdo_origin::node_change, 0);
         }
-        if (started && replies_from_new_id()) job_->reply_node = n;  // PK1000 23
-        return started;
+        if (!started) return false;
+        job_->new_node = n;
+        if (replies_from_new_id()) job_->reply_node = n;  // PK1000 23
+        return true;
     }
 
     // Clears dirty bit `bit` when `mine` (the SDO path owns it) or there is nothing to send.
@@ -674,7 +671,6 @@ private:
         // Built in place (no request is in flight here): a copy on the stack cost firmware (c)'s
         // deepest call its size.
         sdo_job& j = job_.emplace();
-        j.request = msg;
         j.origin = origin;
         j.step = step;
         j.reply_node = node_;
@@ -698,16 +694,16 @@ private:
             return false;
         }
         j.address = *address;
+        j.request = *f;
         attempts_ = 0;
         sent_ = false;
-        transmit_job(*f);  // the frame built above: not built again
+        transmit_job(*f);
         return true;
     }
 
     // The request again (a retry, or the outbox was full).
     constexpr void send_job() noexcept {
-        if (!job_) return;
-        if (const auto f = frame_of(job_->request)) transmit_job(*f);
+        if (job_) transmit_job(job_->request);
     }
     constexpr void transmit_job(const can::frame& f) noexcept {
         if (job_->read) (void)upload_.start(job_->address);
@@ -763,6 +759,16 @@ private:
         else
             return powerkey::detail::row_or_none(model_).replies_from_new_id;
     }
+    // The run-time model's layout; nothing for a model_constant (no member bytes).
+    struct no_layout {};
+    using layout_pointer =
+        std::conditional_t<fixed, no_layout, const powerkey::detail::model_layout*>;
+    static constexpr layout_pointer layout_of(const controller_config& c) noexcept {
+        if constexpr (fixed)
+            return {};
+        else
+            return &powerkey::detail::layout_or_none(c.keypad_model);
+    }
     static constexpr powerkey::model model_of(const controller_config& c) noexcept {
         if constexpr (fixed)
             return Keypad::value;
@@ -790,38 +796,42 @@ private:
         if (!fixed && !powerkey::detail::is_model(model_)) return errc::value_out_of_range;
         return powerkey::detail::own_frame(keypad(), node_, msg);
     }
-    // An SDO request: sdo_read, sdo_write or command (begin_job takes no other).
-    constexpr result<can::frame> frame_of(const message& msg) const noexcept {
+    // An SDO request: sdo_read, sdo_write or command (begin_job takes no other). Out of line:
+    // inlined, its checks' locals sat under every event begin_job emits (firmware (c)'s stack).
+    POWERKEY_DETAIL_OUT_OF_LINE constexpr result<can::frame> frame_of(
+        const message& msg) const noexcept {
         if (std::holds_alternative<sdo_read>(msg)) return frame_of(std::get<sdo_read>(msg));
         if (std::holds_alternative<sdo_write>(msg)) return frame_of(std::get<sdo_write>(msg));
         if (std::holds_alternative<command>(msg)) return frame_of(std::get<command>(msg));
         return errc::unknown_command;
     }
 
+    // (Members in an order that leaves no padding between them: firmware (c) keeps the
+    // controller on its stack.)
     controller_config cfg_;
     powerkey::model model_;
-    const powerkey::detail::model_layout* layout_;  // any_model: detail::layout_or_none
+    [[no_unique_address]] layout_pointer layout_;  // any_model: detail::layout_or_none
     canopen::node_id node_;
     controller_state state_ = controller_state::searching;
     std::optional<canopen::nmt_state> keypad_state_;
-    millis now_{};
-    millis last_heard_{};
-    millis next_probe_{};
-    millis next_refresh_{};
     bool done_setup_once_ = false;
     bool start_written_ = false;
     bool awaiting_boot_from_new_ = false;
     std::uint8_t setup_pos_ = setup_identify;
-    std::size_t list_pos_ = 0;
     bool list_cut_said_ = false;
+    millis now_{};
+    millis last_heard_{};
+    millis next_probe_{};
+    millis next_refresh_{};
+    std::size_t list_pos_ = 0;
 
-    // The one SDO request in flight.
+    // The one SDO request in flight, and the node change asked for.
     std::optional<sdo_job> job_;
     bool sent_ = false;
     std::uint8_t attempts_ = 0;
+    std::optional<canopen::node_id> pending_node_change_;
     millis deadline_{};
     canopen::segmented_upload<16> upload_;
-    std::optional<canopen::node_id> pending_node_change_;
 
     // The shadow.
     leds on_{};
