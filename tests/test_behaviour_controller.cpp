@@ -1171,8 +1171,11 @@ std::pair<std::vector<std::string>, std::vector<controller_event>> whole_session
     const message config[] = {sdo_read{object::device_type}, sdo_read{object::heartbeat_time},
                               sdo_write{object::led_brightness, level_value(lv(0x21))},
                               sdo_read{object::model_name}};
-    controller_config cfg;
-    cfg.configuration = config;
+    // controller<>: the messages; of model_constant<M>: the entries made from them.
+    using ctl = controller<16, 64, Keypad>;
+    const std::vector<typename ctl::entry> entries(std::begin(config), std::end(config));
+    typename ctl::config cfg;
+    cfg.configuration = entries;
     cfg.start = start_mode::active_on_startup;
     powerkey_tests::closed_loop<controller<16, 64, Keypad>, virtual_keypad<32, KeypadOfKeypad>> b(
         m, cfg, canopen::default_node_id);
@@ -1228,4 +1231,192 @@ void compile_time_controllers_agree(std::index_sequence<I...>) {
 // virtual_keypad<..., model_constant<M>> too.
 TEST_CASE("controller and virtual keypad: a model known at compile time behaves as at run time") {
     compile_time_controllers_agree(std::make_index_sequence<model_count>{});
+}
+
+// --- the requests of a controller of one model -----------------------------------------------
+
+namespace {
+// Every request a configuration list may hold: a read and a write (of 1) of every object, every
+// command with its default parameters and with the largest,
+// and a message that is no request (skipped).
+std::vector<message> every_request() {
+    std::vector<message> list;
+    for (std::size_t i = 0; i < object_count; ++i) {
+        const auto o = static_cast<object>(i);
+        list.push_back(sdo_read{o});
+        list.push_back(sdo_write{o, number_value(1)});
+    }
+    for (const auto& e : enum_names<command_code>::entries) {
+        command c;
+        c.code = e.value;
+        list.push_back(c);
+        c.level = lv(0x3F);
+        c.colour = backlight_colour::yellow_green;
+        c.node_id = node_id::make(0x7F).value();
+        c.enabled = true;
+        list.push_back(c);
+    }
+    list.push_back(led_on{});
+    return list;
+}
+
+// The bus and the events of a setup whose configuration list is `entry` alone (no identify, no
+// heartbeat write: the entry is all the setup sends), for a second.
+template <class Keypad>
+std::pair<std::vector<std::string>, std::vector<controller_event>> run_entry(model m,
+                                                                             const message& entry) {
+    using ctl = controller<16, 64, Keypad>;
+    const typename ctl::entry entries[] = {entry};
+    typename ctl::config cfg;
+    cfg.configuration = entries;
+    cfg.identify = false;
+    cfg.keypad_heartbeat = duration_ms{0};
+    powerkey_tests::closed_loop<ctl> b(m, cfg, canopen::default_node_id);
+    b.keypad.power_on(b.at());
+    b.run(1000);
+    return {b.candump(), b.events};
+}
+
+template <std::size_t... I>
+void configuration_entries_agree(std::index_sequence<I...>) {
+    const auto list = every_request();
+    (
+        [&list] {
+            constexpr model m = static_cast<model>(I);
+            INFO("model " << std::string(to_string(m)));
+            std::size_t answered = 0, refused = 0;
+            for (const auto& entry : list) {
+                const auto run_time = run_entry<any_model>(m, entry);
+                const auto compile_time = run_entry<model_constant<m>>(m, entry);
+                CHECK(run_time.first == compile_time.first);
+                CHECK(run_time.second == compile_time.second);
+                for (const auto& e : compile_time.second) {
+                    if (e.origin != sdo_origin::configuration) continue;
+                    if (e.kind == event_kind::sdo_refused) ++refused;
+                    if (e.kind == event_kind::sdo_done || e.kind == event_kind::sdo_aborted)
+                        ++answered;
+                }
+            }
+            // Both kinds of entry were met: those the model carries, and those it refuses.
+            CHECK(answered > 0);
+            CHECK(refused > 0);
+        }(),
+        ...);
+}
+
+// Each value's frame of an own request, where it is proven (behaviour::detail::own_proof),
+// against the encoder's own checks (powerkey::detail::own_frame) with the model's run-time layout,
+// to three nodes.
+template <model M, auto Make, class V>
+void own_request_agrees() {
+    using values = behaviour::detail::small_values<V>;
+    constexpr auto proof = behaviour::detail::own_proof<M, Make, V>;
+    for (unsigned r = values::first; r <= values::last; ++r) {
+        const V v = values::of(r);
+        for (const auto n : {0x01, 0x15, 0x7F}) {
+            const auto node = node_id::make(n).value();
+            const auto want =
+                powerkey::detail::own_frame(powerkey::detail::layout(M), node, Make(v));
+            if (!proof.proven) continue;
+            const auto got = proof.frame(node, behaviour::detail::raw_of(v));
+            REQUIRE(got.has_value() == want.has_value());
+            if (want)
+                CHECK(*got == *want);
+            else
+                CHECK(got.error() == want.error());
+        }
+    }
+}
+
+template <std::size_t... I>
+void own_requests_agree(std::index_sequence<I...>) {
+    (
+        [] {
+            constexpr model m = static_cast<model>(I);
+            INFO("model " << std::string(to_string(m)));
+            own_request_agrees<m, &behaviour::detail::read_of<object::model_name>,
+                               std::monostate>();
+            own_request_agrees<m, &behaviour::detail::write_of<object::active_on_startup, bool>,
+                               bool>();
+            own_request_agrees<m, &behaviour::detail::write_of<object::led_brightness, level>,
+                               level>();
+            own_request_agrees<m, &behaviour::detail::write_of<object::backlight_level, level>,
+                               level>();
+            own_request_agrees<
+                m, &behaviour::detail::write_of<object::backlight_colour, backlight_colour>,
+                backlight_colour>();
+            own_request_agrees<m, &behaviour::detail::write_of<object::node_id, node_id>,
+                               node_id>();
+            own_request_agrees<
+                m, &behaviour::detail::command_of<command_code::set_active_on_startup, bool>,
+                bool>();
+            own_request_agrees<m,
+                               &behaviour::detail::command_of<command_code::set_backlight_colour,
+                                                              backlight_colour>,
+                               backlight_colour>();
+            own_request_agrees<
+                m, &behaviour::detail::command_of<command_code::set_node_id, node_id>, node_id>();
+        }(),
+        ...);
+}
+
+// Builds that are not one request with the value's byte in one place.
+constexpr result<can::frame> two_bytes(level l) {
+    can::payload p{0x2B, 0x00, 0x62, 0x01, l.value(), l.value(), 0, 0};
+    return can::frame(canopen::cob_id(canopen::function::sdo_rx, canopen::default_node_id),
+                      can::dlc::make(8).value(), p);
+}
+constexpr result<can::frame> two_refusals(level l) {
+    if (l.value() < 0x10) return errc::value_out_of_range;
+    if (l.value() > 0x30) return errc::unknown_command;
+    return two_bytes(level::make(0x10).value());
+}
+constexpr result<can::frame> not_one_range(level l) {
+    can::payload p{0x2F, 0x00, 0x62, 0x01, l.value(), 0, 0, 0};
+    if (l.value() == 0x20) return errc::value_out_of_range;
+    return can::frame(canopen::cob_id(canopen::function::sdo_rx, canopen::default_node_id),
+                      can::dlc::make(8).value(), p);
+}
+constexpr result<can::frame> one_range(level l) {
+    if (l.value() > 0x30) return errc::value_out_of_range;
+    can::payload p{0x2F, 0x00, 0x62, 0x01, l.value(), 0, 0, 0};
+    return can::frame(canopen::cob_id(canopen::function::sdo_rx, canopen::default_node_id),
+                      can::dlc::make(8).value(), p);
+}
+}  // namespace
+
+// controller<..., model_constant<M>> takes its configuration list as configuration_entry<M>:
+// the same frames and refusals as controller<> sends for the same messages, for every object,
+// every command and every model.
+TEST_CASE("controller of one model: configuration entries send what controller<> sends") {
+    configuration_entries_agree(std::make_index_sequence<model_count>{});
+}
+
+// Its own requests (identify, active on startup, levels, colour, node change) proven when the
+// program is built are the frames and refusals the encoder's checks give, to any node.
+TEST_CASE("controller of one model: its proven own requests are the checked ones") {
+    own_requests_agree(std::make_index_sequence<model_count>{});
+    // Firmware (c)'s PKP-2400: every request of its own but the heartbeat period is proven.
+    constexpr model pkp = model::pkp2400;
+    static_assert(behaviour::detail::own_proof<pkp, &behaviour::detail::read_of<object::model_name>, std::monostate>
+                      .proven);
+    static_assert(
+        behaviour::detail::own_proof<pkp, &behaviour::detail::command_of<command_code::set_backlight_colour,
+                                                   backlight_colour>,
+                          backlight_colour>
+            .proven);
+    static_assert(
+        behaviour::detail::own_proof<pkp, &behaviour::detail::command_of<command_code::set_node_id, node_id>, node_id>
+            .proven);
+    static_assert(!behaviour::detail::own_proof<pkp, &behaviour::detail::write_of<object::heartbeat_time, duration_ms>,
+                                     duration_ms>
+                       .proven);
+    // A proof takes one request with the value's byte in one place, the values taken one range
+    // and one refusal for the others.
+    static_assert(!behaviour::detail::prove<level>(two_bytes).proven);
+    static_assert(!behaviour::detail::prove<level>(two_refusals).proven);
+    static_assert(!behaviour::detail::prove<level>(not_one_range).proven);
+    constexpr auto taken = behaviour::detail::prove<level>(one_range);
+    static_assert(taken.proven && taken.lo == 0 && taken.hi == 0x30 && taken.at == 4 &&
+                  taken.refused == errc::value_out_of_range);
 }

@@ -30,13 +30,15 @@ bool frame_waiting() { return firmware::rx().status != 0; }
 
 using keypad_controller = pb::controller<4, 8, pk::model_constant<pk::model::pkp2400>>;
 
-constexpr pk::message configuration[] = {
+// Checked and built when the program is built (configuration_entry): the firmware holds the
+// requests' bytes.
+constexpr pb::configuration_entry<pk::model::pkp2400> configuration[] = {
     pk::sdo_write{pk::object::led_brightness, pk::level_value(pk::level{0x30})},
     pk::sdo_read{pk::object::device_type},
 };
 
-constexpr pb::controller_config config() {
-    pb::controller_config c;
+constexpr keypad_controller::config config() {
+    keypad_controller::config c;
     c.keypad_model = pk::model::pkp2400;
     c.configuration = configuration;
     c.keypad_heartbeat = pb::duration_ms{100};

@@ -58,7 +58,11 @@ enum class start_mode : std::uint8_t {
     POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
-struct controller_config {
+// Entry: what the configuration list holds. controller<> takes messages (controller_config) and
+// checks each when it sends it; a controller of model_constant<M> takes configuration_entry<M>,
+// requests checked when they are made (below).
+template <class Entry>
+struct basic_controller_config {
     model keypad_model = model::pk1000;  // used unless 100Bh names another model
     canopen::node_id node = canopen::default_node_id;
     bool any_node = false;  // adopt the first boot-up of any node instead of `node`'s
@@ -66,7 +70,7 @@ struct controller_config {
     start_mode start = start_mode::nmt_start;
     // Read and written in order, one request at a time, after the keypad is found and again after
     // each reboot: sdo_read, sdo_write or command messages (others are skipped). Caller-owned.
-    std::span<const message> configuration{};
+    std::span<const Entry> configuration{};
     duration_ms keypad_heartbeat{200};  // written to 1017h during setup; 0: leave 1017h alone
     duration_ms lost_after{600};        // silence that makes the keypad lost; 0: never lost
     duration_ms sdo_timeout{300};       // per request
@@ -77,6 +81,7 @@ struct controller_config {
     duration_ms repeat_delay{500};      // held this long: the first key_repeat; 0: no repeats
     duration_ms repeat_period{200};     // then every repeat_period
 };
+using controller_config = basic_controller_config<message>;
 
 // What the controller tells the application.
 // clang-format off
@@ -151,6 +156,231 @@ inline constexpr std::size_t default_event_capacity = events_per_call(key_set::m
 // sdo_refused event with step max_configuration and value value_out_of_range says so.
 inline constexpr std::size_t max_configuration = 65535;
 
+// An entry of the configuration list of a controller of model_constant<M>: an sdo_read, sdo_write
+// or command checked for model M and built when the entry is made, as controller<> checks and
+// builds a message when it sends it (the same frame, or the same refusal: its sdo_refused event's
+// errc; another message is skipped). Made in a constexpr list, the checks run when the program is
+// built and the firmware holds the requests' bytes, not the checks of every kind of value
+// (firmware (c) of docs/performance.md).
+template <model M>
+class configuration_entry {
+public:
+    constexpr configuration_entry(const sdo_read& r) noexcept : configuration_entry(r, r.object) {}
+    constexpr configuration_entry(const sdo_write& w) noexcept : configuration_entry(w, w.object) {}
+    constexpr configuration_entry(const command& c) noexcept
+        : configuration_entry(c, object::command_module) {}
+    constexpr configuration_entry(const message& m) noexcept {
+        if (std::holds_alternative<sdo_read>(m))
+            *this = configuration_entry(std::get<sdo_read>(m));
+        else if (std::holds_alternative<sdo_write>(m))
+            *this = configuration_entry(std::get<sdo_write>(m));
+        else if (std::holds_alternative<command>(m))
+            *this = configuration_entry(std::get<command>(m));
+    }
+
+    // Not an SDO request: the controller skips it.
+    [[nodiscard]] constexpr bool skipped() const noexcept { return skipped_; }
+    [[nodiscard]] constexpr object what() const noexcept { return what_; }
+    [[nodiscard]] constexpr bool read() const noexcept { return read_; }
+    // The request's frame to `node`, or why M cannot carry it.
+    [[nodiscard]] constexpr result<can::frame> frame(canopen::node_id node) const noexcept {
+        if (refused_ != errc{}) return refused_;
+        return can::frame(canopen::cob_id(canopen::function::sdo_rx, node),
+                          can::dlc::make(8).value(), data_);
+    }
+    friend constexpr bool operator==(const configuration_entry&,
+                                     const configuration_entry&) noexcept = default;
+
+private:
+    template <class T>
+    constexpr configuration_entry(const T& msg, object o) noexcept
+        : what_(o), read_(std::is_same_v<T, sdo_read>), skipped_(false) {
+        const auto& keypad = powerkey::detail::fixed_layout_v<M>;
+        // (the request's bytes are the same to every node: built to one)
+        const auto f = powerkey::detail::own_frame(keypad, canopen::default_node_id, msg);
+        if (!f)
+            refused_ = f.error();
+        else if (powerkey::detail::find_codec_row(keypad, o) == 0)
+            refused_ = errc::unknown_object;
+        else
+            data_ = f->bytes();
+    }
+
+    can::payload data_{};
+    object what_ = object::command_module;
+    bool read_ = false;
+    bool skipped_ = true;
+    errc refused_{};
+};
+
+namespace detail {
+
+// The controller's own requests as functions of one value: the SDO read of O, the write of O, and
+// command C.
+template <object O>
+constexpr sdo_read read_of(std::monostate) noexcept {
+    return sdo_read{O};
+}
+// (one function, not overloads: a bool would convert to a node id's consteval constructor)
+template <class V>
+constexpr object_value value_of(V v) noexcept {
+    if constexpr (std::is_same_v<V, level>)
+        return level_value(v);
+    else if constexpr (std::is_same_v<V, backlight_colour>)
+        return colour_value(v);
+    else if constexpr (std::is_same_v<V, canopen::node_id>)
+        return node_value(v);
+    else if constexpr (std::is_same_v<V, bool>)
+        return flag_value(v);
+    else
+        return number_value(v.value);  // a duration
+}
+template <object O, class V>
+constexpr sdo_write write_of(V v) noexcept {
+    return sdo_write{O, value_of(v)};
+}
+template <command_code C, class V>
+constexpr command command_of(V v) noexcept {
+    command c;
+    c.code = C;
+    if constexpr (std::is_same_v<V, backlight_colour>)
+        c.colour = v;
+    else if constexpr (std::is_same_v<V, canopen::node_id>)
+        c.node_id = v;
+    else
+        c.enabled = v;
+    return c;
+}
+
+// The values of a small type, by their byte: every one is tried when the program is built.
+template <class V>
+struct small_values;  // (a duration: too many; its request checks itself)
+template <>
+struct small_values<std::monostate> {
+    static constexpr unsigned first = 0, last = 0;
+    static constexpr std::monostate of(unsigned) noexcept { return {}; }
+};
+template <>
+struct small_values<bool> {
+    static constexpr unsigned first = 0, last = 1;
+    static constexpr bool of(unsigned r) noexcept { return r != 0; }
+};
+template <>
+struct small_values<level> {
+    static constexpr unsigned first = level::min, last = level::max;
+    static constexpr level of(unsigned r) noexcept { return level::make(r).value(); }
+};
+template <>
+struct small_values<canopen::node_id> {
+    static constexpr unsigned first = canopen::node_id::min, last = canopen::node_id::max;
+    static constexpr canopen::node_id of(unsigned r) noexcept {
+        return canopen::node_id::make(r).value();
+    }
+};
+template <>
+struct small_values<backlight_colour> {
+    static constexpr unsigned first = 0, last = 0xFF;
+    static constexpr backlight_colour of(unsigned r) noexcept {
+        return static_cast<backlight_colour>(r);
+    }
+};
+template <class V>
+constexpr std::uint8_t raw_of(V v) noexcept {
+    if constexpr (std::is_same_v<V, std::monostate>)
+        return 0;
+    else if constexpr (std::is_same_v<V, bool>)
+        return v ? 1 : 0;
+    else if constexpr (std::is_same_v<V, backlight_colour>)
+        return static_cast<std::uint8_t>(v);
+    else
+        return v.value();  // a level or a node id
+}
+
+// A request of one small value proven when the program is built: its frame, as the encoder's own
+// checks build it (powerkey::detail::own_frame), was built for every value, and it is one SDO
+// request's bytes with the value's byte at `at` for the values lo..hi, and the one refusal
+// `refused` for every other. Then frame() builds it with no check in the program. proven is false
+// when that is not so (the request then checks itself when it is sent).
+struct byte_request {
+    bool proven = false;
+    can::payload data{};
+    std::uint8_t at = 0;
+    std::uint8_t lo = 1, hi = 0;  // (none accepted)
+    errc refused{};
+
+    [[nodiscard]] constexpr result<can::frame> frame(canopen::node_id node,
+                                                     std::uint8_t raw) const noexcept {
+        if (raw < lo || raw > hi) return refused;
+        can::payload d = data;
+        d[at] = raw;
+        return can::frame(canopen::cob_id(canopen::function::sdo_rx, node),
+                          can::dlc::make(8).value(), d);
+    }
+};
+template <class V, class Build>
+constexpr byte_request prove(Build build) noexcept {
+    using values = small_values<V>;
+    byte_request p;
+    bool any = false, gap = false, refusal = false;
+    for (unsigned r = values::first; r <= values::last; ++r) {
+        const result<can::frame> f = build(values::of(r));
+        if (!f) {
+            if (refusal && f.error() != p.refused) return {};  // two refusals
+            refusal = true;
+            p.refused = f.error();
+            gap = any;
+            continue;
+        }
+        if (gap) return {};  // the values taken are not one range
+        const auto raw = static_cast<std::uint8_t>(r);
+        if (!any) {
+            any = true;
+            p.lo = raw;
+            p.data = f->bytes();
+            // where the value goes: the byte that is the value's in this frame and differs from
+            // the next value's frame there (a single value: any byte that is the value)
+            p.at = 8;
+            for (std::uint8_t i = 0; i < 8 && p.at == 8; ++i)
+                if (p.data[i] == raw) {
+                    if (r == values::last) {
+                        p.at = i;
+                    } else if (const auto g = build(values::of(r + 1));
+                               !g || g->bytes()[i] != p.data[i]) {
+                        p.at = i;
+                    }
+                }
+            if (p.at == 8) return {};
+        }
+        p.hi = raw;
+        const auto expected = p.frame(canopen::default_node_id, raw);
+        if (!(expected && *f == *expected)) return {};
+    }
+    p.proven = true;
+    return p;
+}
+template <model M, auto Make, class V>
+inline constexpr byte_request own_proof = [] {
+    if constexpr (requires { small_values<V>::last; })
+        return prove<V>([](V v) {
+            return powerkey::detail::own_frame(powerkey::detail::fixed_layout_v<M>,
+                                               canopen::default_node_id, Make(v));
+        });
+    else
+        return byte_request{};
+}();
+
+// The entries of the configuration list of a controller of Keypad.
+template <class Keypad>
+struct entry_of {
+    using type = configuration_entry<Keypad::value>;
+};
+template <>
+struct entry_of<any_model> {
+    using type = message;
+};
+
+}  // namespace detail
+
 // Keypad: any_model, the model a value (cfg.keypad_model, or what 100Bh reports), or
 // model_constant<M>, a controller of model M alone that links M's rows only (firmware (c) of
 // docs/performance.md); it keeps M whatever 100Bh reports, and cfg.keypad_model is not read.
@@ -160,7 +390,12 @@ class controller {
     static constexpr bool fixed = !std::is_same_v<Keypad, any_model>;
 
 public:
-    constexpr explicit controller(const controller_config& c) noexcept
+    // Its configuration: controller_config (messages) for any_model, the entries checked when they
+    // are made (configuration_entry<M>) for model_constant<M>.
+    using entry = typename detail::entry_of<Keypad>::type;
+    using config = basic_controller_config<entry>;
+
+    constexpr explicit controller(const config& c) noexcept
         : cfg_(c), model_(model_of(c)), layout_(layout_of(c)), node_(c.node), upload_(c.node) {}
 
     // --- driving it -------------------------------------------------------------------------
@@ -529,16 +764,15 @@ private:
             const auto s = setup_pos_;
             setup_pos_ = static_cast<std::uint8_t>(setup_pos_ + 1);
             if (s == setup_identify && cfg_.identify) {
-                if (begin_job(sdo_read{object::model_name}, sdo_origin::identify, 0)) return;
+                if (begin_read<object::model_name>(sdo_origin::identify)) return;
             } else if (s == setup_heartbeat && cfg_.keypad_heartbeat.value != 0) {
-                if (begin_job(sdo_write{object::heartbeat_time,
-                                        number_value(cfg_.keypad_heartbeat.value)},
-                              sdo_origin::heartbeat, 0))
+                if (begin_write<object::heartbeat_time>(cfg_.keypad_heartbeat,
+                                                        sdo_origin::heartbeat))
                     return;
             } else if (s == setup_active && cfg_.start == start_mode::active_on_startup &&
                        !start_written_) {
                 start_written_ = true;
-                if (begin_job(active_message(), sdo_origin::start, 0)) return;
+                if (begin_active()) return;
             }
         }
         const std::size_t entries = cfg_.configuration.size() < max_configuration
@@ -570,14 +804,12 @@ private:
         // (run() goes on to the running state's jobs and the picture in the same call.)
     }
 
-    constexpr message active_message() const noexcept {
+    // Active on startup: the PKP-LI's command 7Ah, 2012h elsewhere.
+    constexpr bool begin_active() noexcept {
         if (keypad().dictionary == dictionary::pkp_li) {
-            command c;
-            c.code = command_code::set_active_on_startup;
-            c.enabled = true;
-            return c;
+            return begin_command<command_code::set_active_on_startup>(true, sdo_origin::start);
         }
-        return sdo_write{object::active_on_startup, flag_value(true)};
+        return begin_write<object::active_on_startup>(true, sdo_origin::start);
     }
 
     constexpr void start_keypad() noexcept {
@@ -596,28 +828,24 @@ private:
         if (take(dirty_brightness, !keypad().brightness_pdo && has_brightness_)) {
             // By SDO write of the object. (The command module 6500h could set it too, but the one
             // dictionary with the module, the PKP's, also has the objects: 6201h sub 1 and 2.)
-            if (has(object::led_brightness) &&
-                begin_job(sdo_write{object::led_brightness, level_value(brightness_)},
-                          sdo_origin::shadow, 0))
+            if (has<object::led_brightness>() &&
+                begin_write<object::led_brightness>(brightness_, sdo_origin::shadow))
                 return;
         }
         if (take(dirty_level, !keypad().backlight_pdo && has_backlight_)) {
-            if (has(object::backlight_level) &&
-                begin_job(sdo_write{object::backlight_level, level_value(backlight_level_)},
-                          sdo_origin::shadow, 0))
+            if (has<object::backlight_level>() &&
+                begin_write<object::backlight_level>(backlight_level_, sdo_origin::shadow))
                 return;
         }
         if (take(dirty_colour, !colour_by_pdo() && has_backlight_ &&
                                    backlight_colour_ != backlight_colour::keep)) {
-            if (has(object::backlight_colour)) {
-                if (begin_job(sdo_write{object::backlight_colour, colour_value(backlight_colour_)},
-                              sdo_origin::shadow, 0))
+            if (has<object::backlight_colour>()) {
+                if (begin_write<object::backlight_colour>(backlight_colour_, sdo_origin::shadow))
                     return;
-            } else if (has_commands()) {
-                command c;
-                c.code = command_code::set_backlight_colour;
-                c.colour = backlight_colour_;
-                if (begin_job(c, sdo_origin::shadow, 0)) return;
+            } else if (has<object::command_module>()) {
+                if (begin_command<command_code::set_backlight_colour>(backlight_colour_,
+                                                                      sdo_origin::shadow))
+                    return;
             }
         }
     }
@@ -628,13 +856,9 @@ private:
         pending_node_change_.reset();
         bool started = false;
         if (keypad().dictionary == dictionary::pkp_li) {
-            command c;
-            c.code = command_code::set_node_id;
-            c.node_id = n;
-            started = begin_job(c, sdo_origin::node_change, 0);
+            started = begin_command<command_code::set_node_id>(n, sdo_origin::node_change);
         } else {
-            started =
-                begin_job(sdo_write{object::node_id, node_value(n)}, sdo_origin::node_change, 0);
+            started = begin_write<object::node_id>(n, sdo_origin::node_change);
         }
         if (!started) return false;
         job_->new_node = n;
@@ -652,10 +876,17 @@ private:
         dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
         return mine;
     }
-    constexpr bool has_commands() const noexcept { return has(object::command_module); }
-    // Whether the model's dictionary has object o, and its address.
-    constexpr bool has(object o) const noexcept {
-        return powerkey::detail::find_codec_row(keypad(), o) != 0;
+    // Whether the model's dictionary has object O (a constant for a model_constant), and an
+    // object's address.
+    template <object O>
+    constexpr bool has() const noexcept {
+        if constexpr (fixed) {
+            constexpr bool known = powerkey::detail::find_codec_row(
+                                       powerkey::detail::fixed_layout_v<Keypad::value>, O) != 0;
+            return known;
+        } else {
+            return powerkey::detail::find_codec_row(keypad(), O) != 0;
+        }
     }
     constexpr std::optional<canopen::sdo_address> address_of(object o) const noexcept {
         const std::uint8_t i = powerkey::detail::find_codec_row(keypad(), o);
@@ -666,27 +897,71 @@ private:
         return keypad().backlight_pdo && keypad().backlight_colour;
     }
 
-    // Starts an SDO request; false when the model cannot carry it (reported, nothing sent).
-    constexpr bool begin_job(const message& msg, sdo_origin origin, std::uint16_t step) noexcept {
+    // Starts a configuration entry's SDO request; false when the model cannot carry it (reported,
+    // nothing sent) or it is no SDO request (skipped).
+    constexpr bool begin_job(const entry& e, sdo_origin origin, std::uint16_t step) noexcept {
+        if constexpr (fixed) {
+            if (e.skipped()) return false;
+            return begin_request(e.frame(node_), e.what(), e.read(), origin, step);
+        } else {
+            object o = object::command_module;
+            bool read = false;
+            if (const auto* r = std::get_if<sdo_read>(&e)) {
+                o = r->object;
+                read = true;
+            } else if (const auto* w = std::get_if<sdo_write>(&e)) {
+                o = w->object;
+            } else if (!std::holds_alternative<command>(e)) {
+                return false;  // not an SDO request: skipped
+            }
+            return begin_request(frame_of(e), o, read, origin, step);
+        }
+    }
+    // The controller's own requests, each a function of one value (detail::read_of, write_of,
+    // command_of). For a model_constant most are proven when the program is built
+    // (detail::own_proof) and built with no check in the program; the others check themselves
+    // with M's row and O's kind constants (POWERKEY_DETAIL_FLATTEN). controller<> builds them
+    // with the checks it builds every request with.
+    template <object O>
+    constexpr bool begin_read(sdo_origin origin) noexcept {
+        return begin_request(own<&detail::read_of<O>>(std::monostate{}), O, true, origin, 0);
+    }
+    template <object O, class V>
+    constexpr bool begin_write(V v, sdo_origin origin) noexcept {
+        return begin_request(own<&detail::write_of<O, V>>(v), O, false, origin, 0);
+    }
+    template <command_code C, class V>
+    constexpr bool begin_command(V v, sdo_origin origin) noexcept {
+        return begin_request(own<&detail::command_of<C, V>>(v), object::command_module, false,
+                             origin, 0);
+    }
+    template <auto Make, class V>
+    constexpr result<can::frame> own(V v) const noexcept {
+        if constexpr (!fixed)
+            return frame_of(Make(v));
+        else if constexpr (detail::own_proof<Keypad::value, Make, V>.proven)
+            return detail::own_proof<Keypad::value, Make, V>.frame(node_, detail::raw_of(v));
+        else
+            return own_checked<Make>(v);
+    }
+    template <auto Make, class V>
+    POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> own_checked(V v) const noexcept {
+        return powerkey::detail::own_frame(keypad(), node_, Make(v));
+    }
+
+    // Starts an SDO request of object `what` with its frame f (or the error that refuses it:
+    // reported, nothing sent).
+    constexpr bool begin_request(const result<can::frame>& f, object what, bool read,
+                                 sdo_origin origin, std::uint16_t step) noexcept {
         // Built in place (no request is in flight here): a copy on the stack cost firmware (c)'s
         // deepest call its size.
         sdo_job& j = job_.emplace();
         j.origin = origin;
         j.step = step;
         j.reply_node = node_;
-        object o = object::command_module;
-        if (const auto* r = std::get_if<sdo_read>(&msg)) {
-            o = r->object;
-            j.read = true;
-        } else if (const auto* w = std::get_if<sdo_write>(&msg)) {
-            o = w->object;
-        } else if (!std::holds_alternative<command>(msg)) {
-            job_.reset();
-            return false;  // not an SDO request: skipped
-        }
-        j.what = o;
-        const auto address = address_of(o);
-        const auto f = frame_of(msg);
+        j.read = read;
+        j.what = what;
+        const auto address = address_of(what);
         if (!address || !f) {
             emit_sdo(event_kind::sdo_refused, j,
                      static_cast<std::uint32_t>(f ? errc::unknown_object : f.error()));
@@ -763,13 +1038,13 @@ private:
     struct no_layout {};
     using layout_pointer =
         std::conditional_t<fixed, no_layout, const powerkey::detail::model_layout*>;
-    static constexpr layout_pointer layout_of(const controller_config& c) noexcept {
+    static constexpr layout_pointer layout_of(const config& c) noexcept {
         if constexpr (fixed)
             return {};
         else
             return &powerkey::detail::layout_or_none(c.keypad_model);
     }
-    static constexpr powerkey::model model_of(const controller_config& c) noexcept {
+    static constexpr powerkey::model model_of(const config& c) noexcept {
         if constexpr (fixed)
             return Keypad::value;
         else
@@ -796,10 +1071,8 @@ private:
         if (!fixed && !powerkey::detail::is_model(model_)) return errc::value_out_of_range;
         return powerkey::detail::own_frame(keypad(), node_, msg);
     }
-    // An SDO request: sdo_read, sdo_write or command (begin_job takes no other). Out of line:
-    // inlined, its checks' locals sat under every event begin_job emits (firmware (c)'s stack).
-    POWERKEY_DETAIL_OUT_OF_LINE constexpr result<can::frame> frame_of(
-        const message& msg) const noexcept {
+    // An SDO request: sdo_read, sdo_write or command (begin_job takes no other).
+    constexpr result<can::frame> frame_of(const message& msg) const noexcept {
         if (std::holds_alternative<sdo_read>(msg)) return frame_of(std::get<sdo_read>(msg));
         if (std::holds_alternative<sdo_write>(msg)) return frame_of(std::get<sdo_write>(msg));
         if (std::holds_alternative<command>(msg)) return frame_of(std::get<command>(msg));
@@ -808,7 +1081,7 @@ private:
 
     // (Members in an order that leaves no padding between them: firmware (c) keeps the
     // controller on its stack.)
-    controller_config cfg_;
+    config cfg_;
     powerkey::model model_;
     [[no_unique_address]] layout_pointer layout_;  // any_model: detail::layout_or_none
     canopen::node_id node_;

@@ -40,15 +40,6 @@
 #define POWERKEY_DETAIL_FLATTEN
 #endif
 
-// POWERKEY_DETAIL_OUT_OF_LINE: a function kept out of its one caller at every optimisation level
-// (-Os included), so that its locals are not part of the caller's frame while the caller calls
-// on (the controller's request builder: firmware (c)'s worst stack, docs/performance.md).
-#if defined(__GNUC__)
-#define POWERKEY_DETAIL_OUT_OF_LINE [[gnu::noinline]]
-#else
-#define POWERKEY_DETAIL_OUT_OF_LINE
-#endif
-
 // Tells g++ and clang that `condition` is false here (a row number a key matched is never the
 // sentinel): the callers' tests of it drop out. Nothing elsewhere.
 #if defined(__GNUC__)
