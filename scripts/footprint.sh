@@ -22,7 +22,8 @@ fi
 CXX=${ARM_CXX:-arm-none-eabi-g++}
 prefix=${CXX%g++}
 flags=(-std=c++20 -mcpu=cortex-m0plus -mthumb -Os -fno-exceptions -fno-rtti -ffunction-sections
-       -fdata-sections -Wall -Wextra -Werror -fstack-usage -fcallgraph-info=su
+       -fdata-sections -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wshadow -Werror
+       -fstack-usage -fcallgraph-info=su
        -I"$root/include")
 mkdir -p "$out"
 status=0

@@ -54,8 +54,10 @@ inline mailbox& tx() { return *reinterpret_cast<mailbox*>(0x4000'6420); }
     const auto& b = f.bytes();
     m.id = f.raw_id() | (f.is_extended() ? 0x8000'0000u : 0u);
     m.dlc = f.size();
-    m.low = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint32_t{b[3]} << 24);
-    m.high = b[4] | (b[5] << 8) | (b[6] << 16) | (std::uint32_t{b[7]} << 24);
+    m.low = std::uint32_t{b[0]} | (std::uint32_t{b[1]} << 8) | (std::uint32_t{b[2]} << 16) |
+            (std::uint32_t{b[3]} << 24);
+    m.high = std::uint32_t{b[4]} | (std::uint32_t{b[5]} << 8) | (std::uint32_t{b[6]} << 16) |
+             (std::uint32_t{b[7]} << 24);
     m.status = 0;
 }
 
