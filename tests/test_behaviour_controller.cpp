@@ -1366,10 +1366,10 @@ constexpr result<can::frame> two_bytes(level l) {
     return can::frame(canopen::cob_id(canopen::function::sdo_rx, canopen::default_node_id),
                       can::dlc::make(8).value(), p);
 }
+constexpr result<can::frame> one_range(level l);
 constexpr result<can::frame> two_refusals(level l) {
-    if (l.value() < 0x10) return errc::value_out_of_range;
-    if (l.value() > 0x30) return errc::unknown_command;
-    return two_bytes(level::make(0x10).value());
+    if (l.value() < 0x10) return errc::unknown_command;
+    return one_range(l);
 }
 constexpr result<can::frame> not_one_range(level l) {
     can::payload p{0x2F, 0x00, 0x62, 0x01, l.value(), 0, 0, 0};

@@ -195,15 +195,14 @@ private:
     template <class T>
     constexpr configuration_entry(const T& msg, object o) noexcept
         : what_(o), read_(std::is_same_v<T, sdo_read>), skipped_(false) {
-        const auto& keypad = powerkey::detail::fixed_layout_v<M>;
-        // (the request's bytes are the same to every node: built to one)
-        const auto f = powerkey::detail::own_frame(keypad, canopen::default_node_id, msg);
-        if (!f)
-            refused_ = f.error();
-        else if (powerkey::detail::find_codec_row(keypad, o) == 0)
-            refused_ = errc::unknown_object;
-        else
+        // (the request's bytes are the same to every node: built to one; an object the model
+        // lacks is unknown_object there)
+        const auto f = powerkey::detail::own_frame(powerkey::detail::fixed_layout_v<M>,
+                                                   canopen::default_node_id, msg);
+        if (f)
             data_ = f->bytes();
+        else
+            refused_ = f.error();
     }
 
     can::payload data_{};
