@@ -69,7 +69,8 @@ struct basic_controller_config {
     bool identify = true;   // read 100Bh and take the model it reports
     start_mode start = start_mode::nmt_start;
     // Read and written in order, one request at a time, after the keypad is found and again after
-    // each reboot: sdo_read, sdo_write or command messages (others are skipped). Caller-owned.
+    // each reboot: sdo_read, sdo_write or command messages (others are skipped), or the entries
+    // made from them. Caller-owned.
     std::span<const Entry> configuration{};
     duration_ms keypad_heartbeat{200};  // written to 1017h during setup; 0: leave 1017h alone
     duration_ms lost_after{600};        // silence that makes the keypad lost; 0: never lost
