@@ -136,37 +136,67 @@ constexpr bool encode_refused(const encode_error_row& r) {
 
 // From keypad 21h to the global address, as every manual example.
 constexpr message contact(std::uint8_t key, bool pressed, std::uint8_t identifier = 0x21) {
-    return key_contact{6, 0xFF, 0x21, key, pressed, identifier};
+    return key_contact{.source = 0x21,
+                       .destination = 0xFF,
+                       .priority = 6,
+                       .key = key,
+                       .pressed = pressed,
+                       .identifier = identifier};
 }
 constexpr message beat(std::uint8_t counter, key_set keys, std::uint8_t identifier = 0x21) {
-    return heartbeat{6, 0xFF, 0x21, counter, keys, identifier};
+    return heartbeat{.source = 0x21,
+                     .destination = 0xFF,
+                     .priority = 6,
+                     .counter = counter,
+                     .keys = keys,
+                     .identifier = identifier};
 }
 constexpr message revision(std::string_view text) {
-    software_revision r{6, 0xFF, 0x21, {}};
+    software_revision r{.source = 0x21, .destination = 0xFF, .priority = 6, .bytes = {}};
     for (std::size_t i = 0; i < text.size() && i < 5; ++i)
         r.bytes[i] = static_cast<std::uint8_t>(text[i]);
     return r;
 }
 constexpr message ack(led_mode mode, std::uint8_t key, lc colour, lc secondary) {
-    return led_ack{6, 0xFF, 0x21, key, mode, colour, secondary};
+    return led_ack{.source = 0x21,
+                   .destination = 0xFF,
+                   .priority = 6,
+                   .mode = mode,
+                   .key = key,
+                   .colour = colour,
+                   .secondary = secondary};
 }
 constexpr message ack_code(std::uint8_t key, std::uint8_t code) {
-    return led_ack_code{6, 0xFF, 0x21, key, code};
+    return led_ack_code{
+        .source = 0x21, .destination = 0xFF, .priority = 6, .key = key, .code = code};
 }
 // The NAME the manuals print (section 20), from keypad 21h.
 constexpr name manual_name() { return name{999999, 211, 0, 0, 130, 30, 0, 4, true}; }
-constexpr message claimed(name n = manual_name()) { return address_claimed{6, 0xFF, 0x21, n}; }
+constexpr message claimed(name n = manual_name()) {
+    return address_claimed{.source = 0x21, .destination = 0xFF, .priority = 6, .name = n};
+}
 
 // From 00h to keypad 21h, as every manual example.
 constexpr message led(std::uint8_t key, lc colour, led_mode mode, lc secondary = lc::off) {
-    return set_led{6, 0x21, 0x00, key, colour, mode, secondary};
+    return set_led{.source = 0x00,
+                   .destination = 0x21,
+                   .priority = 6,
+                   .key = key,
+                   .colour = colour,
+                   .mode = mode,
+                   .secondary = secondary};
 }
 constexpr message led_code(std::uint8_t key, std::uint8_t code) {
-    return set_led_code{6, 0x21, 0x00, key, code};
+    return set_led_code{
+        .source = 0x00, .destination = 0x21, .priority = 6, .key = key, .code = code};
 }
 // A multiple-LED frame: one hex digit per LED from LED 1 ("00F5": LED 3 Fh, LED 4 5h).
 constexpr message leds(std::uint8_t frame, std::string_view codes) {
-    multiple_leds m{6, 0x21, 0x00, colour_frame::make(frame).value(), {}};
+    multiple_leds m{.source = 0x00,
+                    .destination = 0x21,
+                    .priority = 6,
+                    .frame = colour_frame::make(frame).value(),
+                    .nibbles = {}};
     for (std::size_t i = 0; i < codes.size(); ++i) {
         const char c = codes[i];
         const int v = c >= 'A' ? c - 'A' + 10 : c - '0';
@@ -453,7 +483,14 @@ inline constexpr row other_rows[] = {
     // PKP-2400-SI driven by hobby code (r51-ecu): from its own address 19h to the keypad at 24h,
     // FFh as the unused secondary colour, 7Dh at run time.
     {"ref 6.1: hobby code, secondary FFh", si_leds, "18EF2419#041B01030101FFFF",
-     set_led{6, 0x24, 0x19, 3, lc::red, led_mode::on, lc::not_used}, 0x24},
+     set_led{.source = 0x19,
+             .destination = 0x24,
+             .priority = 6,
+             .key = 3,
+             .colour = lc::red,
+             .mode = led_mode::on,
+             .secondary = lc::not_used},
+     0x24},
     {"ref 7: hobby code, 7Dh at run time", every, "18EF2419#041B7D02FFFFFFFF",
      [] {
          command c = cmd(cc::set_default_backlight_colour);
@@ -471,7 +508,13 @@ inline constexpr row other_rows[] = {
      leds(2, "00000000000000F")},
     // Any sender, any keypad: a heartbeat from 00h to 21h is a heartbeat of the keypad at 00h.
     {"ref 2.1: F9h from 00h to 21h", every, "18EF2100#041BF9030200FF21",
-     heartbeat{6, 0x21, 0x00, 3, {2}, 0x21}, 0x00},
+     heartbeat{.source = 0x00,
+               .destination = 0x21,
+               .priority = 6,
+               .counter = 3,
+               .keys = {2},
+               .identifier = 0x21},
+     0x00},
     // PKP-3500-MT: key 2 has an LED (key 1, the encoder push, has none); 15 keys.
     {"ref 6.1: PKP-3500-MT LED 2 (inferred)", m3500mt, "18EF2100#041B0102020100FF",
      led(2, lc::green, led_mode::on)},
@@ -650,9 +693,22 @@ inline constexpr encode_error_row encode_error_rows[] = {
     // Addressed to 05h without narrowing, key 1 pressed by keypad 21h with identifier 02h reads
     // as an LED command from 21h to 05h (docs/j1939.md): narrowed to 21h it encodes (rows).
     {"a key contact whose bytes read as an LED command", complete, "18EF0521#041B01010102FFFF",
-     key_contact{6, 0x05, 0x21, 1, true, 0x02}, errc::value_out_of_range},
+     key_contact{.source = 0x21,
+                 .destination = 0x05,
+                 .priority = 6,
+                 .key = 1,
+                 .pressed = true,
+                 .identifier = 0x02},
+     errc::value_out_of_range},
     {"an LED command narrowed to its sender", complete, "18EF2221#041B0102010100FF",
-     set_led{6, 0x22, 0x21, 2, lc::red, led_mode::on, lc::off}, errc::reserved_not_ff, 0x21},
+     set_led{.source = 0x21,
+             .destination = 0x22,
+             .priority = 6,
+             .key = 2,
+             .colour = lc::red,
+             .mode = led_mode::on,
+             .secondary = lc::off},
+     errc::reserved_not_ff, 0x21},
 };
 
 }  // namespace j1939_rows

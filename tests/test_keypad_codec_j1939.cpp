@@ -129,7 +129,7 @@ static_assert(pk::kind_of(msg10) == "j1939_switch_to_canopen");
 
 // The longest description: an address claim with every NAME field at its widest, at node 7Fh.
 constexpr std::size_t widest_claim_description() {
-    pk::j1939::address_claimed a{7, 0xFF, 0xFD, {}};
+    pk::j1939::address_claimed a{.source = 0xFD, .destination = 0xFF, .priority = 7, .name = {}};
     a.name = {0x1F'FFFF, 0x7FF, 7, 0x1F, 0xFF, 0x7F, 0xF, 7, true};
     std::array<char, pk::description_capacity> buf{};
     const auto text = pk::describe(pk::message{a}, pk::canopen::node_id{0x7F}, buf);

@@ -297,14 +297,27 @@ TEST_CASE("j1939: encode of a command 01h message answers as reading its frame b
                         const auto md = static_cast<led_mode>(mode);
                         for (const lc second : {lc::off, lc::red, lc::yellow_green, lc::not_used,
                                                 static_cast<lc>(0x0A)})
-                            CHECK(encodes_as_by_decode(
-                                m, set_led{6, to, 0x00, k8, colour, md, second}));
-                        CHECK(encodes_as_by_decode(m,
-                                                   key_contact{6, to, 0x21, k8, mode == 1,
-                                                               static_cast<std::uint8_t>(c * 16)}));
+                            CHECK(encodes_as_by_decode(m, set_led{.source = 0x00,
+                                                                  .destination = to,
+                                                                  .priority = 6,
+                                                                  .key = k8,
+                                                                  .colour = colour,
+                                                                  .mode = md,
+                                                                  .secondary = second}));
+                        CHECK(encodes_as_by_decode(
+                            m, key_contact{.source = 0x21,
+                                           .destination = to,
+                                           .priority = 6,
+                                           .key = k8,
+                                           .pressed = mode == 1,
+                                           .identifier = static_cast<std::uint8_t>(c * 16)}));
                     }
-                    CHECK(encodes_as_by_decode(
-                        m, set_led_code{6, to, 0x00, k8, static_cast<std::uint8_t>(c)}));
+                    CHECK(encodes_as_by_decode(m,
+                                               set_led_code{.source = 0x00,
+                                                            .destination = to,
+                                                            .priority = 6,
+                                                            .key = k8,
+                                                            .code = static_cast<std::uint8_t>(c)}));
                 }
             }
         }
@@ -322,14 +335,24 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                 CAPTURE(unsigned{from});
                 for (unsigned bit = 0; bit <= 17; ++bit) {
                     const key_set keys = key_set::from_mask((std::uint64_t{1} << bit) >> 1);
-                    CHECK(encodes_as_by_decode(m, heartbeat{5, to, from, 7, keys, 0x21}));
+                    CHECK(encodes_as_by_decode(m, heartbeat{.source = from,
+                                                            .destination = to,
+                                                            .priority = 5,
+                                                            .counter = 7,
+                                                            .keys = keys,
+                                                            .identifier = 0x21}));
                 }
-                CHECK(encodes_as_by_decode(
-                    m, heartbeat{6, to, from, 0, key_set::from_mask(0x1'0001), 0xFF}));
+                CHECK(encodes_as_by_decode(m, heartbeat{.source = from,
+                                                        .destination = to,
+                                                        .priority = 6,
+                                                        .counter = 0,
+                                                        .keys = key_set::from_mask(0x1'0001),
+                                                        .identifier = 0xFF}));
                 for (const std::string_view text :
                      {"V2.10", "V2.1", "", "\x1F", "\x7F", "ab\0c", "\xFF\xFF\xFF\xFF\xFF",
                       "\xFF\xFF\xFF\xFF\xFE"}) {
-                    software_revision v{6, to, from, {}};
+                    software_revision v{
+                        .source = from, .destination = to, .priority = 6, .bytes = {}};
                     for (std::size_t b = 0; b < text.size() && b < 5; ++b)
                         v.bytes[b] = static_cast<std::uint8_t>(text[b]);
                     CHECK(encodes_as_by_decode(m, v));
@@ -340,16 +363,31 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                         const auto md = static_cast<led_mode>(mode);
                         for (const lc c : {lc::off, lc::red, lc::yellow_green,
                                            static_cast<lc>(0x0A), lc::not_used}) {
-                            CHECK(encodes_as_by_decode(m, led_ack{6, to, from, k8, md, c, c}));
-                            CHECK(encodes_as_by_decode(
-                                m, led_ack{6, to, from, k8, md, lc::blue, lc::not_used}));
+                            CHECK(encodes_as_by_decode(m, led_ack{.source = from,
+                                                                  .destination = to,
+                                                                  .priority = 6,
+                                                                  .mode = md,
+                                                                  .key = k8,
+                                                                  .colour = c,
+                                                                  .secondary = c}));
+                            CHECK(encodes_as_by_decode(m, led_ack{.source = from,
+                                                                  .destination = to,
+                                                                  .priority = 6,
+                                                                  .mode = md,
+                                                                  .key = k8,
+                                                                  .colour = lc::blue,
+                                                                  .secondary = lc::not_used}));
                         }
                     }
                     for (const unsigned code : {0x00u, 0x05u, 0xFFu})
                         CHECK(encodes_as_by_decode(
-                            m, led_ack_code{6, to, from, k8, static_cast<std::uint8_t>(code)}));
+                            m, led_ack_code{.source = from,
+                                            .destination = to,
+                                            .priority = 6,
+                                            .key = k8,
+                                            .code = static_cast<std::uint8_t>(code)}));
                 }
-                address_claimed claim{6, to, from, {}};
+                address_claimed claim{.source = from, .destination = to, .priority = 6, .name = {}};
                 claim.name.function = 0x81;
                 claim.name.arbitrary_address_capable = true;
                 CHECK(encodes_as_by_decode(m, claim));
@@ -358,7 +396,11 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                 back.form = powerkey::frame_form::trimmed;
                 CHECK(encodes_as_by_decode(m, back));
                 for (std::uint64_t n = 0; n < 0x1'0000'0000; n += 0x1234'5679) {
-                    multiple_leds l{6, to, from, 1, multiple_leds::halves(n * 0x1'0001)};
+                    multiple_leds l{.source = from,
+                                    .destination = to,
+                                    .priority = 6,
+                                    .frame = 1,
+                                    .nibbles = multiple_leds::halves(n * 0x1'0001)};
                     CHECK(encodes_as_by_decode(m, l));
                     l.frame = 2;
                     l.nibbles[1] = 0;
@@ -417,7 +459,12 @@ TEST_CASE("j1939: errata decisions (docs/errata.md, ## J1939) and TABLE 3") {
 
 TEST_CASE("j1939: direction of 01h and 2Ah, and narrowing to one keypad") {
     // Narrowed to 21h, a key contact state sent to 05h (6Eh) round-trips whatever its bytes.
-    const key_contact to_05{6, 0x05, 0x21, 1, true, 0x02};
+    const key_contact to_05{.source = 0x21,
+                            .destination = 0x05,
+                            .priority = 6,
+                            .key = 1,
+                            .pressed = true,
+                            .identifier = 0x02};
     const auto f = encode(model::pkp2600si, to_05, std::uint8_t{0x21});
     REQUIRE(f.has_value());
     CHECK(*f == frame_of("18EF0521#041B01010102FFFF"));
@@ -428,7 +475,12 @@ TEST_CASE("j1939: direction of 01h and 2Ah, and narrowing to one keypad") {
     // A key state with the default identifier is one whatever its destination.
     const auto with_21 = decode(frame_of("18EF0521#041B01010121FFFF"), model::pkp2600si);
     REQUIRE(with_21.has_value());
-    CHECK(*with_21 == j1939_rows::message{key_contact{6, 0x05, 0x21, 1, true, 0x21}});
+    CHECK(*with_21 == j1939_rows::message{key_contact{.source = 0x21,
+                                                      .destination = 0x05,
+                                                      .priority = 6,
+                                                      .key = 1,
+                                                      .pressed = true,
+                                                      .identifier = 0x21}});
     // The revision request and its answer, told apart by bytes 3..7.
     CHECK(std::holds_alternative<command>(
         *decode(frame_of("18EF2100#041B2AFFFFFFFFFF"), model::pkp1600si)));
@@ -457,15 +509,38 @@ TEST_CASE("j1939: encode refuses or round-trips, over raw field values") {
                 const auto colour = static_cast<lc>(c == 0x10 ? 0xFF : c);
                 for (unsigned mode = 0; mode <= 4; ++mode) {
                     const auto md = static_cast<led_mode>(mode);
-                    CHECK(encodes_back(m, set_led{6, 0x21, 0x00, k8, colour, md, colour}));
-                    CHECK(encodes_back(m, led_ack{6, 0xFF, 0x21, k8, md, colour, colour}));
-                    CHECK(encodes_back(m, key_contact{6, 0xFF, 0x21, k8, mode == 1,
-                                                      static_cast<std::uint8_t>(c * 16)}));
+                    CHECK(encodes_back(m, set_led{.source = 0x00,
+                                                  .destination = 0x21,
+                                                  .priority = 6,
+                                                  .key = k8,
+                                                  .colour = colour,
+                                                  .mode = md,
+                                                  .secondary = colour}));
+                    CHECK(encodes_back(m, led_ack{.source = 0x21,
+                                                  .destination = 0xFF,
+                                                  .priority = 6,
+                                                  .mode = md,
+                                                  .key = k8,
+                                                  .colour = colour,
+                                                  .secondary = colour}));
+                    CHECK(encodes_back(
+                        m, key_contact{.source = 0x21,
+                                       .destination = 0xFF,
+                                       .priority = 6,
+                                       .key = k8,
+                                       .pressed = mode == 1,
+                                       .identifier = static_cast<std::uint8_t>(c * 16)}));
                 }
-                CHECK(
-                    encodes_back(m, set_led_code{6, 0x21, 0x00, k8, static_cast<std::uint8_t>(c)}));
-                CHECK(
-                    encodes_back(m, led_ack_code{6, 0xFF, 0x21, k8, static_cast<std::uint8_t>(c)}));
+                CHECK(encodes_back(m, set_led_code{.source = 0x00,
+                                                   .destination = 0x21,
+                                                   .priority = 6,
+                                                   .key = k8,
+                                                   .code = static_cast<std::uint8_t>(c)}));
+                CHECK(encodes_back(m, led_ack_code{.source = 0x21,
+                                                   .destination = 0xFF,
+                                                   .priority = 6,
+                                                   .key = k8,
+                                                   .code = static_cast<std::uint8_t>(c)}));
             }
         }
         for (unsigned code = 0; code < 0x100; ++code) {
@@ -488,7 +563,11 @@ TEST_CASE("j1939: encode refuses or round-trips, over raw field values") {
             }
         }
         for (std::uint64_t n = 0; n < 0x1'0000'0000; n += 0x1234'5679) {
-            multiple_leds l{6, 0x21, 0x00, 1, multiple_leds::halves(n * 0x1'0001)};
+            multiple_leds l{.source = 0x00,
+                            .destination = 0x21,
+                            .priority = 6,
+                            .frame = 1,
+                            .nibbles = multiple_leds::halves(n * 0x1'0001)};
             CHECK(encodes_back(m, l));
             l.frame = 2;
             CHECK(encodes_back(m, l, std::uint8_t{0x21}));

@@ -92,7 +92,13 @@ TEST_CASE(
 
 TEST_CASE("j1939: encode<M> of a PKP-2600-SI LED command, narrowed and not") {
     using powerkey::led_mode;
-    constexpr set_led green{6, 0x21, 0x00, 3, led_colour::green, led_mode::on, led_colour::off};
+    constexpr set_led green{.source = 0x00,
+                            .destination = 0x21,
+                            .priority = 6,
+                            .key = 3,
+                            .colour = led_colour::green,
+                            .mode = led_mode::on,
+                            .secondary = led_colour::off};
     static_assert(encode<model::pkp2600si>(green, std::uint8_t{0x21}).value() ==
                   frame_of("18EF2100#041B0103020100FF"));
     CHECK(encode<model::pkp2600si>(green) == encode(model::pkp2600si, green));

@@ -288,9 +288,9 @@ private:
             if ((dirty_leds_ & bit(k)) == 0) continue;
             if ((row_.leds & bit(k)) != 0 && row_.frames.has(j1939::feature::led_command)) {
                 const j1939::led_look& l = wanted_[k - 1];
-                const j1939::set_led m{.priority = 6,
+                const j1939::set_led m{.source = cfg_.own_address,
                                        .destination = address_,
-                                       .source = cfg_.own_address,
+                                       .priority = 6,
                                        .key = static_cast<std::uint8_t>(k),
                                        .colour = l.colour,
                                        .mode = l.mode,

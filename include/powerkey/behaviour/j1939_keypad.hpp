@@ -116,11 +116,11 @@ public:
         if (const auto* l = std::get_if<j1939::set_led>(&*m)) {
             set_led(l->key, {l->mode, l->colour, l->secondary, true});
             if (settings_.led_ack)
-                emit(j1939::led_ack{.priority = 6,
+                emit(j1939::led_ack{.source = settings_.address,
                                     .destination = j1939::global_address,
-                                    .source = settings_.address,
-                                    .key = l->key,
+                                    .priority = 6,
                                     .mode = l->mode,
+                                    .key = l->key,
                                     .colour = l->colour,
                                     .secondary = l->secondary},
                      send);
@@ -240,9 +240,9 @@ private:
             case cc::set_backlight_level: backlight_ = c.level; break;  // temporary (9)
             case cc::set_startup_keys: s.startup_keys = c.enabled; break;
             case cc::get_software_revision:
-                emit(j1939::software_revision{.priority = 6,
+                emit(j1939::software_revision{.source = s.address,
                                               .destination = j1939::global_address,
-                                              .source = s.address,
+                                              .priority = 6,
                                               .bytes = keypad_revision},
                      send);
                 break;
@@ -310,18 +310,18 @@ private:
     template <class Send>
     constexpr void send_claim(Send&& send) const noexcept {
         const auto f = j1939::encode(model_,
-                                     j1939::address_claimed{.priority = 6,
+                                     j1939::address_claimed{.source = settings_.address,
                                                             .destination = j1939::global_address,
-                                                            .source = settings_.address,
+                                                            .priority = 6,
                                                             .name = keypad_name},
                                      settings_.address);
         if (f) send(*f);
     }
     template <class Send>
     constexpr void send_key(unsigned k, bool pressed, Send&& send) const noexcept {
-        emit(j1939::key_contact{.priority = 6,
+        emit(j1939::key_contact{.source = settings_.address,
                                 .destination = settings_.destination,
-                                .source = settings_.address,
+                                .priority = 6,
                                 .key = static_cast<std::uint8_t>(k),
                                 .pressed = pressed,
                                 .identifier = settings_.identifier},
@@ -335,9 +335,9 @@ private:
     }
     template <class Send>
     constexpr void send_heartbeat(key_set keys, Send&& send) noexcept {
-        emit(j1939::heartbeat{.priority = 6,
+        emit(j1939::heartbeat{.source = settings_.address,
                               .destination = j1939::global_address,
-                              .source = settings_.address,
+                              .priority = 6,
                               .counter = counter_,
                               .keys = keys,
                               .identifier = settings_.identifier},

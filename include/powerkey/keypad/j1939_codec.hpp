@@ -27,6 +27,7 @@
 #include <powerkey/keypad/values.hpp>
 #include <powerkey/result.hpp>
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <optional>
@@ -131,6 +132,28 @@ constexpr std::uint8_t byte_of(std::uint64_t w, unsigned i) noexcept {
     return static_cast<std::uint8_t>(w >> (8 * i));
 }
 
+// The identifier's source, destination and priority as bytes 0, 1 and 2 of a word: the first
+// three members of the messages the fast path answers (key_contact, heartbeat, led_ack, set_led),
+// whose data fields follow in the frame's order, so that their answer is this word and the data
+// bytes in place (in_place_of).
+constexpr std::uint64_t route_word(std::uint32_t id) noexcept {
+    return (id & 0xFFFF) | ((id >> 10) & 0x7'0000);
+}
+// The message T whose members are the bytes of v in order (T is 8 bytes, its last ones padding):
+// one store of a word where member-wise construction took a store or two per member. v holds a
+// value of each member (a priority 0..7, a bool 00h/01h).
+template <class T>
+constexpr T in_place_of(std::uint64_t v) noexcept {
+    static_assert(sizeof(T) == 8 && std::is_trivially_copyable_v<T>);
+    if constexpr (std::endian::native == std::endian::little) {
+        return std::bit_cast<T>(v);
+    } else {
+        std::array<std::uint8_t, 8> bytes{};
+        for (unsigned i = 0; i < 8; ++i) bytes[i] = byte_of(v, i);
+        return std::bit_cast<T>(bytes);
+    }
+}
+
 // Bits 25..16 of a 29-bit identifier (EDP, DP, PDU format: a PDU1 PGN's high bits) of a keypad
 // PGN: EF00h, A700h, A600h, EE00h.
 constexpr bool is_keypad_pf(std::uint32_t pf) noexcept {
@@ -193,7 +216,12 @@ constexpr result<M> key_contact_of(const route& at, std::uint64_t w) noexcept {
     if (!ff_from(w, 6)) return errc::reserved_not_ff;
     const std::uint8_t key = byte_of(w, 3), state = byte_of(w, 4), id = byte_of(w, 5);
     if (key < 1 || key > 16 || state > 1 || id == 0xFF) return errc::value_out_of_range;
-    return answer<M>(key_contact{at.priority, at.destination, at.source, key, state == 1, id});
+    return answer<M>(key_contact{.source = at.source,
+                                 .destination = at.destination,
+                                 .priority = at.priority,
+                                 .key = key,
+                                 .pressed = state == 1,
+                                 .identifier = id});
 }
 
 template <class M>
@@ -201,13 +229,18 @@ constexpr result<M> heartbeat_of(const model_row& r, const route& at, std::uint6
     if (byte_of(w, 6) != 0xFF) return errc::reserved_not_ff;
     const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
     if ((keys >> r.keys) != 0) return errc::reserved_not_zero;
-    return answer<M>(heartbeat{at.priority, at.destination, at.source, byte_of(w, 3),
-                               key_set::from_mask(keys), byte_of(w, 7)});
+    return answer<M>(heartbeat{.source = at.source,
+                               .destination = at.destination,
+                               .priority = at.priority,
+                               .counter = byte_of(w, 3),
+                               .keys = key_set::from_mask(keys),
+                               .identifier = byte_of(w, 7)});
 }
 
 template <class M>
 constexpr result<M> revision_of(const route& at, std::uint64_t w) noexcept {
-    software_revision v{at.priority, at.destination, at.source, {}};
+    software_revision v{
+        .source = at.source, .destination = at.destination, .priority = at.priority, .bytes = {}};
     bool ended = false;
     for (unsigned i = 0; i < 5; ++i) {
         const std::uint8_t b = byte_of(w, 3 + i);
@@ -227,13 +260,22 @@ constexpr result<M> led_ack_of(const model_row& r, const route& at, std::uint64_
     if (r.form == led_form::code) {
         if (b1 != 0xFF || !ff_from(w, 4)) return errc::reserved_not_ff;
         if (!has_led(r, key)) return errc::value_out_of_range;
-        return answer<M>(led_ack_code{at.priority, at.destination, at.source, key, b3});
+        return answer<M>(led_ack_code{.source = at.source,
+                                      .destination = at.destination,
+                                      .priority = at.priority,
+                                      .key = key,
+                                      .code = b3});
     }
     if (!ff_from(w, 5)) return errc::reserved_not_ff;
     if (b1 > 3 || !has_led(r, key) || !is_colour(b3) || !is_secondary(b4))
         return errc::value_out_of_range;
-    return answer<M>(led_ack{at.priority, at.destination, at.source, key, static_cast<led_mode>(b1),
-                             static_cast<led_colour>(b3), static_cast<led_colour>(b4)});
+    return answer<M>(led_ack{.source = at.source,
+                             .destination = at.destination,
+                             .priority = at.priority,
+                             .mode = static_cast<led_mode>(b1),
+                             .key = key,
+                             .colour = static_cast<led_colour>(b3),
+                             .secondary = static_cast<led_colour>(b4)});
 }
 
 // --- proprietary A (EF00h): the frames to the keypad ---------------------------------------------
@@ -245,14 +287,22 @@ constexpr result<M> set_led_of(const model_row& r, const route& at, std::uint64_
     if (r.form == led_form::code) {
         if (!ff_from(w, 5)) return errc::reserved_not_ff;
         if (!has_led(r, key)) return errc::value_out_of_range;
-        return answer<M>(set_led_code{at.priority, at.destination, at.source, key, b4});
+        return answer<M>(set_led_code{.source = at.source,
+                                      .destination = at.destination,
+                                      .priority = at.priority,
+                                      .key = key,
+                                      .code = b4});
     }
     if (byte_of(w, 7) != 0xFF) return errc::reserved_not_ff;
     if (!has_led(r, key) || !is_colour(b4) || b5 > 3 || !is_secondary(b6))
         return errc::value_out_of_range;
-    return answer<M>(set_led{at.priority, at.destination, at.source, key,
-                             static_cast<led_colour>(b4), static_cast<led_mode>(b5),
-                             static_cast<led_colour>(b6)});
+    return answer<M>(set_led{.source = at.source,
+                             .destination = at.destination,
+                             .priority = at.priority,
+                             .key = key,
+                             .colour = static_cast<led_colour>(b4),
+                             .mode = static_cast<led_mode>(b5),
+                             .secondary = static_cast<led_colour>(b6)});
 }
 
 // Errors: value_out_of_range for a byte outside the parameter's range.
@@ -412,11 +462,12 @@ constexpr result<M> decode_proprietary_a(const model_row& r, const route& at, st
 // --- the multiple-LED frames (A700h, A600h) and the address claim (EE00h) -----------------------
 
 // Every byte of v at most the byte of `max` at its place, each byte of max at most 7Fh, in one
-// add: a byte above 7Fh has its high bit set already, one up to 7Fh gets it from the add exactly
-// when it is above its bound, and no byte carries into the next.
+// add: a byte up to 7Fh gets its high bit from the add exactly when it is above its bound, and
+// carries into no other; a byte above 7Fh has its high bit set in v already, so that the test
+// fails whatever its carry does to the byte above it.
 constexpr bool bytes_at_most(std::uint64_t v, std::uint64_t max) noexcept {
     constexpr std::uint64_t low7 = 0x7F7F'7F7F'7F7F'7F7F;
-    return ((((v & low7) + (low7 - max)) | v) & ~low7) == 0;
+    return (((v + (low7 - max)) | v) & ~low7) == 0;
 }
 
 // A nibble of w that is Ah..Eh, a code the multiple-LED frames do not use: bit 3 set and its low
@@ -436,8 +487,11 @@ constexpr result<M> multiple_leds_of(const model_row& r, const route& at, colour
     const std::uint64_t used = powerkey::detail::low_bits(bits);
     if ((w | used) != ~std::uint64_t{0}) return errc::reserved_not_ff;
     if (has_unused_code(w)) return errc::value_out_of_range;  // the nibbles past `used` are Fh
-    return answer<M>(multiple_leds{at.priority, at.destination, at.source, frame,
-                                   multiple_leds::halves(w & used)});
+    return answer<M>(multiple_leds{.source = at.source,
+                                   .destination = at.destination,
+                                   .priority = at.priority,
+                                   .frame = frame,
+                                   .nibbles = multiple_leds::halves(w & used)});
 }
 
 template <class M>
@@ -446,7 +500,8 @@ constexpr result<M> address_claimed_of(const model_row& r, const route& at, std:
     if (const errc e = sent(r, feature::address_claim, at, keypad); e != errc{}) return e;
     const auto n = unpack_name(w);
     if (!n) return n.error();
-    return answer<M>(address_claimed{at.priority, at.destination, at.source, *n});
+    return answer<M>(address_claimed{
+        .source = at.source, .destination = at.destination, .priority = at.priority, .name = *n});
 }
 
 // --- encoding
@@ -744,13 +799,6 @@ constexpr route route_of(std::uint32_t id) noexcept {
             static_cast<std::uint8_t>(id)};
 }
 
-// The identifier's priority, destination and source as bytes 0, 1 and 2 of a word: the order
-// of every message's first three members, so that g++ stores them with the fields after them.
-constexpr std::uint64_t route_word(std::uint32_t id) noexcept {
-    // (id & FFFFh) * 10001h holds the source in bytes 0 and 2 and the destination in 1 and 3.
-    return ((id >> 26) & 7u) | (((id & 0xFFFFu) * 0x1'0001u) & 0xFF'FF00u);
-}
-
 // A 29-bit frame on a keypad PGN (pf: is_keypad_pf) of a keypad of row r, every check in the
 // order decode documents. Out of line: the frequent frames that pass every check are answered
 // before it (decode_frame).
@@ -793,8 +841,9 @@ using row_argument = std::conditional_t<POWERKEY_DETAIL_SIZE, const model_row&, 
 // tests as they fold into. Anything else, a frame refused included, goes through the checks in
 // decode's order (decode_checked, out of line), so the fast path only ever answers what
 // decode_checked answers. Under -Os one decoder, decode_checked.
-template <class M>
-POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_argument r,
+template <class M, class Row = row_argument>
+POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
+                                                     std::type_identity_t<Row> r,
                                                      keypad_address keypad) noexcept {
     const std::uint32_t id = f.id_word();
     const std::uint32_t pf = (id >> 16) & 0x83FF;  // the 29-bit flag, EDP, DP and PDU format
@@ -816,17 +865,10 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     // (the identifier not FFh) in one compare.
                     if ((((w - 0x0100'0000) >> 24) & 0xFEF0) == 0 && (w >> 40) - 0xFF'FF00 < 0xFF &&
                         r.frames.has(feature::key_contact)) {
-                        // The answer's first four bytes in one word, which g++ stores at once,
-                        // and the state and identifier as the two bytes of one half-word (from a
-                        // 64-bit word it shifted each apart). Byte 4 is 00h or 01h here, so the
-                        // bool is that byte as it stands.
-                        const auto v =
-                            static_cast<std::uint32_t>(route_word(id) | (w & 0xFF00'0000));
-                        const auto tail = static_cast<std::uint16_t>(w >> 32);
-                        return answer<M>(key_contact{
-                            priority::make(byte_of(v, 0)).value(), byte_of(v, 1), byte_of(v, 2),
-                            byte_of(v, 3), std::bit_cast<bool>(static_cast<std::uint8_t>(tail)),
-                            static_cast<std::uint8_t>(tail >> 8)});
+                        // The route, then key, state and identifier where the frame has them
+                        // (bytes 3..5); bytes 6 and 7, the struct's padding, 00h.
+                        const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
+                        return answer<M>(in_place_of<key_contact>(v));
                     }
                 } else if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
                            r.form == led_form::si && r.frames.has(feature::led_command) &&
@@ -836,22 +878,24 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                     // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
                     // 09h, 03h, 09h (an LED 00h borrows and fails there; the header's bytes are
                     // their own bounds); an LED the model has.
-                    const std::uint64_t v = route_word(id) | (w & 0x00FF'FFFF'FF00'0000);
-                    return answer<M>(set_led{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
-                                             byte_of(v, 2), byte_of(v, 3),
-                                             static_cast<led_colour>(byte_of(v, 4)),
-                                             static_cast<led_mode>(byte_of(v, 5)),
-                                             static_cast<led_colour>(byte_of(v, 6))});
+                    return answer<M>(
+                        in_place_of<set_led>(route_word(id) | (w & 0x00FF'FFFF'FF00'0000)));
                 }
             } else if (head == 0xF9'1B04) {
                 // The heartbeat: byte 6 FFh, no key bit above the model's keys.
                 const auto keys = static_cast<std::uint32_t>((w >> 32) & 0xFFFF);
                 if (byte_of(w, 6) == 0xFF && (keys >> r.keys) == 0 &&
                     r.frames.has(feature::heartbeat)) {
+                    // The route and counter as one word, keys and identifier apart (the
+                    // identifier moved from byte 7 to 6 for one word cost 5 more: the struct's
+                    // last byte is padding, so g++ stored 4, 2 and 1 bytes all the same).
                     const std::uint64_t v = route_word(id) | (w & 0xFF00'0000);
-                    return answer<M>(heartbeat{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
-                                               byte_of(v, 2), byte_of(v, 3),
-                                               key_set::from_mask(keys), byte_of(w, 7)});
+                    return answer<M>(heartbeat{.source = byte_of(v, 0),
+                                               .destination = byte_of(v, 1),
+                                               .priority = priority::make(byte_of(v, 2)).value(),
+                                               .counter = byte_of(v, 3),
+                                               .keys = key_set::from_mask(keys),
+                                               .identifier = byte_of(w, 7)});
                 }
             } else if ((head & 0xFF) == 0) {
                 // The SI acknowledgement: 00h | state | LED | colour | secondary | FF FF FF. As
@@ -860,12 +904,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
                 // decode_checked); an LED the model has.
                 if (bytes_at_most(w + 0xFF'FFFF'0000, 0x09'090F'0300) && r.form == led_form::si &&
                     r.frames.has(feature::led_ack) && ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
-                    const std::uint64_t v = route_word(id) | ((w & 0xFF'0000) << 8);
-                    return answer<M>(led_ack{priority::make(byte_of(v, 0)).value(), byte_of(v, 1),
-                                             byte_of(v, 2), byte_of(v, 3),
-                                             static_cast<led_mode>(byte_of(w, 1)),
-                                             static_cast<led_colour>(byte_of(w, 3)),
-                                             static_cast<led_colour>(byte_of(w, 4))});
+                    // State, LED, colour and secondary colour from bytes 1..4 to bytes 3..6.
+                    return answer<M>(
+                        in_place_of<led_ack>(route_word(id) | ((w << 16) & 0x00FF'FFFF'FF00'0000)));
                 }
             } else if ((head | 0x01'0000) == 0x03'1B04) {
                 // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
@@ -889,11 +930,16 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f, row_ar
             if (r.frames.has(feature::multiple_leds) && !to_global()) {
                 const std::uint64_t used = ~std::uint64_t{0} >> (64 - 4u * r.plane_leds);
                 if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
-                    const route at = route_of(id);
+                    // The route and the frame (1 for A700h, whose PDU format's bit 0 is set;
+                    // 2 for A600h) as one word.
+                    const auto v = static_cast<std::uint32_t>(route_word(id)) + 0x0200'0000 -
+                                   ((id << 8) & 0x0100'0000);
                     return answer<M>(
-                        multiple_leds{at.priority, at.destination, at.source,
-                                      colour_frame::make(at_pf == 0x80A7'0000 ? 1 : 2).value(),
-                                      multiple_leds::halves(w & used)});
+                        multiple_leds{.source = byte_of(v, 0),
+                                      .destination = byte_of(v, 1),
+                                      .priority = priority::make(byte_of(v, 2)).value(),
+                                      .frame = colour_frame::make(byte_of(v, 3)).value(),
+                                      .nibbles = multiple_leds::halves(w & used)});
                 }
             }
         } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000) {
@@ -1000,7 +1046,10 @@ template <model M>
 [[nodiscard]] POWERKEY_DETAIL_FLATTEN POWERKEY_DETAIL_HOT constexpr result<message> decode(
     const can::frame& f, keypad_address keypad = std::nullopt) noexcept {
     static_assert(detail::is_j1939_model(M), "M is a row of the J1939 model table");
-    return decode(f, M, keypad);
+    // The row by reference: a constant, whose fields the fast path reads where they are and whose
+    // address the out-of-line reader takes (a copy was made on every frame: 50.4 against 48.6
+    // instructions a frame on the J1939 mixed log).
+    return detail::decode_frame<message, const model_row&>(f, detail::j1939_row_of(M), keypad);
 }
 
 template <model M>

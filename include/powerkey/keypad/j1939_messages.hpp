@@ -6,11 +6,15 @@
 //                            set_led, set_led_code, multiple_leds, command,
 //                            switch_to_canopen>                        bus -> keypad
 //
-// Each struct follows the kind/fields convention (fields.hpp) and starts with the identifier's
-// "priority", "destination" and "source" (the keypad's address is the source of what it sends
-// and the destination of what it is sent; any address decodes). Field names are CANopen's where
-// the meaning is the same: "keys", "key", "level", "colour", "enabled", "startup_show",
-// "baud_rate", "period_10ms", "identifier" (the keypad identifier of 70h).
+// Each struct follows the kind/fields convention (fields.hpp), whose fields start with the
+// identifier's "priority", "destination" and "source" (the keypad's address is the source of what
+// it sends and the destination of what it is sent; any address decodes). Its members are laid out
+// as the frame is: `source` and `destination` (the identifier's bytes 0 and 1), `priority`, then
+// the data fields in the order of their bytes, so that the decoder answers the frequent frames
+// with a word or two (docs/performance.md); key_contact, led_ack and set_led are 4-aligned, 8
+// bytes, built as one word. Name the members when building one (designated initialisers). Field
+// names are CANopen's where the meaning is the same: "keys", "key", "level", "colour", "enabled",
+// "startup_show", "baud_rate", "period_10ms", "identifier" (the keypad identifier of 70h).
 #ifndef POWERKEY_KEYPAD_J1939_MESSAGES_HPP
 #define POWERKEY_KEYPAD_J1939_MESSAGES_HPP
 
@@ -62,13 +66,13 @@ constexpr void route_fields(Self& self, F& f) {
 // Key contact state (section 6): 04 1B 01 | key | 00h released, 01h pressed | identifier | FF FF.
 // Sent on every press and release (72h), for every key periodically (71h, 77h) and at power-up
 // (28h), to the destination set by 6Eh (FFh by default).
-struct key_contact {
+struct alignas(4) key_contact {
     POWERKEY_DETAIL_J1939_MESSAGE(key_contact);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key),
                            f("pressed", self.pressed), f("identifier", self.identifier));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     std::uint8_t key = 1;  // 01h..10h: periodic traffic may name keys past the model's (docs)
     bool pressed = false;
     std::uint8_t identifier = keypad_default_address;  // the keypad identifier of 70h, 00h..FEh
@@ -80,9 +84,9 @@ struct heartbeat {
     POWERKEY_DETAIL_J1939_MESSAGE(heartbeat);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("counter", self.counter),
                            f("keys", self.keys), f("identifier", self.identifier));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     std::uint8_t counter = 0;  // +1 each message
     key_set keys;
     std::uint8_t identifier = keypad_default_address;  // any byte (LI manual: FFh)
@@ -93,9 +97,9 @@ struct heartbeat {
 struct software_revision {
     POWERKEY_DETAIL_J1939_MESSAGE(software_revision);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("bytes", self.bytes));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     std::array<std::uint8_t, 5> bytes{};
     // The characters of the revision: the bytes before the first 00h (5 for "V2.10").
     [[nodiscard]] constexpr std::size_t length() const noexcept {
@@ -108,15 +112,15 @@ struct software_revision {
 // LED acknowledgement, SI form (section 19), when 73h enabled it: after each single-LED command,
 //   00h | state | LED | colour | secondary colour | FF FF FF
 // (no 04 1B header; the same identifier as the keypad's other frames).
-struct led_ack {
+struct alignas(4) led_ack {
     POWERKEY_DETAIL_J1939_MESSAGE(led_ack);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("mode", self.mode),
                            f("colour", self.colour), f("secondary", self.secondary));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
-    std::uint8_t key = 1;  // the LED number
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     led_mode mode = led_mode::off;
+    std::uint8_t key = 1;  // the LED number
     led_colour colour = led_colour::off;
     led_colour secondary = led_colour::off;
 };
@@ -127,9 +131,9 @@ struct led_ack {
 struct led_ack_code {
     POWERKEY_DETAIL_J1939_MESSAGE(led_ack_code);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("code", self.code));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     std::uint8_t key = 1;
     std::uint8_t code = 0;
 };
@@ -138,9 +142,9 @@ struct led_ack_code {
 struct address_claimed {
     POWERKEY_DETAIL_J1939_MESSAGE(address_claimed);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), j1939::name::fields(self.name, f));
-    j1939::priority priority = 6;
-    std::uint8_t destination = global_address;
     std::uint8_t source = keypad_default_address;
+    std::uint8_t destination = global_address;
+    j1939::priority priority = 6;
     j1939::name name;
 };
 
@@ -149,14 +153,14 @@ struct address_claimed {
 
 // Set single LED state, SI form (section 7a):
 //   04 1B 01 | LED | colour | state | secondary colour (alternate blink) | FFh
-struct set_led {
+struct alignas(4) set_led {
     POWERKEY_DETAIL_J1939_MESSAGE(set_led);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key),
                            f("colour", self.colour), f("mode", self.mode),
                            f("secondary", self.secondary));
-    j1939::priority priority = 6;
-    std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
+    std::uint8_t destination = keypad_default_address;
+    j1939::priority priority = 6;
     std::uint8_t key = 1;  // the LED number, one the model has
     led_colour colour = led_colour::off;
     led_mode mode = led_mode::off;
@@ -168,9 +172,9 @@ struct set_led {
 struct set_led_code {
     POWERKEY_DETAIL_J1939_MESSAGE(set_led_code);
     POWERKEY_DETAIL_FIELDS(detail::route_fields(self, f), f("key", self.key), f("code", self.code));
-    j1939::priority priority = 6;
-    std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
+    std::uint8_t destination = keypad_default_address;
+    j1939::priority priority = 6;
     std::uint8_t key = 1;
     std::uint8_t code = 0;
 };
@@ -198,9 +202,9 @@ struct multiple_leds {
                 [code](auto& s, const led_set& leds) { s.set_leds(code, leds); });
         }
     }
-    j1939::priority priority = 6;
-    std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
+    std::uint8_t destination = keypad_default_address;
+    j1939::priority priority = 6;
     colour_frame frame = 1;
     // LED k's code in bits 4(k-1)..4k-1 of the data word, 0 past the model's LEDs: LEDs 1..8 in
     // nibbles[0], 9..16 in nibbles[1]. Two 32-bit halves, not one 64-bit word: an 8-byte member
@@ -361,9 +365,9 @@ struct command {
             }
         }
     }
-    j1939::priority priority = 6;
-    std::uint8_t destination = keypad_default_address;
     std::uint8_t source = 0x00;
+    std::uint8_t destination = keypad_default_address;
+    j1939::priority priority = 6;
     command_code code = command_code::set_led_brightness;
     powerkey::level level = 0;
     bool enabled = false;
