@@ -789,6 +789,22 @@ POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, cano
     return word_frame(fn, node, 8, specifier | std::uint64_t{row.key} << 8 | data << 32);
 }
 
+// A kind whose value is its raw number (value_kinds' defaults: value() is {data, {}, 0}, pack()
+// is v.raw).
+template <class K>
+inline constexpr bool raw_kind =
+    &K::value == &kind_defaults::value&&& K::pack == &kind_defaults::pack;
+// Every row of such a kind has one size, 1..4 bytes (checked_sdo takes it as the size sent).
+constexpr bool raw_rows_sized() noexcept {
+    for (const codec_row& r : codec_rows)
+        if (r.key != no_codec_row.key && !visit_kind(r.kind, [&r](auto k) {
+                return !raw_kind<decltype(k)> || (r.size() >= 1 && r.size() <= 4);
+            }))
+            return false;
+    return true;
+}
+static_assert(raw_rows_sized());
+
 // The frame of an SDO read (40h), write (23h..2Fh), write reply (60h) or read reply (43h..4Fh) of
 // object `id` (value `v` for the two that carry one), checked. One function for the four: one
 // copy in a program.
@@ -810,6 +826,23 @@ constexpr result<can::frame> checked_sdo(const Layout& given, canopen::node_id n
     // What write_value builds and value_message reads, in one visit of the row's kind.
     return visit_row_kind(keypad, row.kind, [&](auto k) -> result<can::frame> {
         using K = decltype(k);
+        const auto specifier_of = [write](std::uint8_t size) {
+            // 23h / 43h with bits 2..3 the bytes not used (CiA 301)
+            return static_cast<std::uint8_t>((write ? 0x23 : 0x43) | ((4 - size) << 2));
+        };
+        if constexpr (raw_kind<K>) {
+            // The value is its raw number in the row's size (1..4: raw_rows_sized): the bytes read
+            // back as v exactly when v has no map and no size, so that is tested instead of the
+            // read-back; the checks, and their order, are the decoder's.
+            const std::uint8_t size = row.size();
+            const std::uint32_t data = v.raw;
+            if (data > largest_of_size[size]) return errc::reserved_not_zero;
+            if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
+            if ((v.map.red.mask() | v.map.green.mask() | v.map.blue.mask() | v.size) != 0)
+                return errc::value_out_of_range;
+            return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node, specifier_of(size),
+                             row, data);
+        }
         const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
         const auto sent = canopen::expedited_size::make(
                               row.size() != 0 ? row.size() : K::size(keypad, row, carried))
@@ -820,9 +853,8 @@ constexpr result<can::frame> checked_sdo(const Layout& given, canopen::node_id n
         if (data > largest_of_size[size]) return errc::reserved_not_zero;
         if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
         if (!(K::value(keypad, row, size, data) == v)) return errc::value_out_of_range;
-        // 23h / 43h with bits 2..3 the bytes not used (CiA 301)
-        const auto specifier = static_cast<std::uint8_t>((write ? 0x23 : 0x43) | ((4 - size) << 2));
-        return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node, specifier, row, data);
+        return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node, specifier_of(size), row,
+                         data);
     });
 }
 
@@ -840,23 +872,76 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
     else
         return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
-// A command: its bytes read back by read_command, the decoder's reading.
+// A command checks itself as read_command reads its bytes, without reading them back: its byte
+// names a command (unknown_command), each parameter its pair carries is in range (read_param on
+// the byte written: value_out_of_range), and the members it does not carry are at their defaults
+// (else the frame reads back as another command: value_out_of_range), tested in one masked
+// compare of the members as one word. A written parameter reads back as itself once in range.
+// The members a command may carry, one byte each in a word (command_word), and what a default
+// command holds there.
+constexpr std::uint64_t command_word(const command& c) noexcept {
+    return std::uint64_t{c.key} | std::uint64_t{static_cast<std::uint8_t>(c.state)} << 8 |
+           std::uint64_t{c.level.value()} << 16 |
+           std::uint64_t{static_cast<std::uint8_t>(c.colour)} << 24 |
+           std::uint64_t{c.enabled} << 32 | std::uint64_t{static_cast<std::uint8_t>(c.baud)} << 40 |
+           std::uint64_t{c.period_10ms} << 48 | std::uint64_t{c.node_id.value()} << 56;
+}
+// The byte of command_word that carries parameter p (none for none and show: show is tested apart).
+constexpr std::uint64_t command_word_bits(command_param p) noexcept {
+    switch (p) {
+        case command_param::key: return 0xFFull;
+        case command_param::state: return 0xFFull << 8;
+        case command_param::brightness: return 0xFFull << 16;
+        case command_param::colour: return 0xFFull << 24;
+        case command_param::flag: return 0xFFull << 32;
+        case command_param::baud: return 0xFFull << 40;
+        case command_param::period_10ms: return 0xFFull << 48;
+        case command_param::node: return 0xFFull << 56;
+        case command_param::show:
+        case command_param::none: break;
+    }
+    return 0;
+}
+// The frame of command v of parameter pair S (its row found: `row`).
+template <std::size_t S, class Layout>
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> command_frame(const Layout& keypad,
+                                                                  canopen::node_id node,
+                                                                  const codec_row& row,
+                                                                  const command& v) noexcept {
+    constexpr command_shape shape = command_shapes[S];
+    const std::uint8_t b1 = write_param(shape.p1, v);
+    const std::uint8_t b2 = write_param(shape.p2, v);
+    command back{};  // read_param's checks (what it stores is not used)
+    if (const errc e = read_param(keypad, shape.p1, b1, back); e != errc{}) return e;
+    if (const errc e = read_param(keypad, shape.p2, b2, back); e != errc{}) return e;
+    constexpr std::uint64_t others = ~(command_word_bits(shape.p1) | command_word_bits(shape.p2));
+    constexpr bool shows = shape.p1 == command_param::show || shape.p2 == command_param::show;
+    if (((command_word(v) ^ command_word(command{})) & others) != 0 ||
+        (!shows && v.show != command{}.show))
+        return errc::value_out_of_range;
+    return sdo_frame(
+        canopen::function::sdo_rx, node, 0x23, row,
+        static_cast<std::uint8_t>(v.code) | std::uint32_t{b1} << 8 | std::uint32_t{b2} << 16);
+}
 template <class Layout>
 constexpr result<can::frame> own_frame(const Layout& given, canopen::node_id node,
                                        const command& v) noexcept {
+    static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
     const auto& keypad = known(given);
     const std::uint8_t i = find_codec_row(keypad, object::command_module);
     if (i == 0) return errc::unknown_object;
-    const auto data = static_cast<std::uint32_t>(load_le<4>(write_command(v).bytes, 0));
-    const auto back = read_command(keypad, 4, data);
-    if (!back) return back.error();
-    command want = v;
-    want.form = frame_form::manual;
-    // (holds_alternative and get, not get_if: g++ 12 refuses a null test of the address in a
-    // constant expression)
-    if (!std::holds_alternative<command>(*back) || !(std::get<command>(*back) == want))
-        return errc::value_out_of_range;
-    return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_row_at(keypad, i), data);
+    const codec_row& row = codec_row_at(keypad, i);
+    switch (command_shape_index[static_cast<std::uint8_t>(v.code)]) {
+        case 1: return command_frame<0>(keypad, node, row, v);
+        case 2: return command_frame<1>(keypad, node, row, v);
+        case 3: return command_frame<2>(keypad, node, row, v);
+        case 4: return command_frame<3>(keypad, node, row, v);
+        case 5: return command_frame<4>(keypad, node, row, v);
+        case 6: return command_frame<5>(keypad, node, row, v);
+        case 7: return command_frame<6>(keypad, node, row, v);
+        case 8: return command_frame<7>(keypad, node, row, v);
+        default: return errc::unknown_command;
+    }
 }
 
 // The front. Every length test sends a frame of another length to misfit. With `j1939` false a
@@ -1185,14 +1270,13 @@ template <model M>
 // visit of the row's kind); the other PDOs are read back as encode(node, M, msg) reads them. None
 // but the last links a decoder.
 template <model M, detail::canopen_alternative T>
-requires detail::own_pdo<T>
-[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> encode(canopen::node_id node,
-                                                                          const T& msg) noexcept {
+requires(detail::own_pdo<T> || detail::own_sdo<T>) [[nodiscard]] POWERKEY_DETAIL_FLATTEN
+    constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
     static_assert(detail::is_model(M), "M is a row of the model table");
     return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
 }
 template <model M, detail::canopen_alternative T>
-requires(!detail::own_pdo<T>) [[nodiscard]] POWERKEY_DETAIL_INLINE
+requires(!detail::own_pdo<T> && !detail::own_sdo<T>) [[nodiscard]] POWERKEY_DETAIL_INLINE
     constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
     static_assert(detail::is_model(M), "M is a row of the model table");
     return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
