@@ -769,6 +769,16 @@ requires requires(const model_layout& k, const T& v) { own_check(k, v); }
 constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
                                        const T& v) noexcept {
     if (const errc e = own_check(keypad, v); e != errc{}) return e;
+    constexpr bool led_map = std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>;
+    if constexpr (led_map && is_fixed_layout<Layout>) {
+        // The check leaves each plane within the model's LEDs: with the model a constant,
+        // pack_leds' masks fold (one/led_on/encode 33 -> 30 instructions; with a run-time model
+        // the same assumptions cost the LED rows 1 to 10).
+        const std::uint64_t outside = ~std::uint64_t{keypad.led_mask};
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.red.mask() & outside) != 0);
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.green.mask() & outside) != 0);
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.blue.mask() & outside) != 0);
+    }
     return build_of(keypad, node, v);
 }
 
