@@ -838,14 +838,13 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& ke
         // The value is its raw number in the row's size (1..4: raw_rows_sized): the bytes read
         // back as v exactly when v has no map and no size, so that is tested instead of the
         // read-back; the checks, and their order, are the decoder's.
-        const std::uint8_t size = row.size();
-        const std::uint32_t data = v.raw;
-        if (data > largest_of_size[size]) return errc::reserved_not_zero;
-        if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
+        const std::uint8_t raw_size = row.size();
+        if (v.raw > largest_of_size[raw_size]) return errc::reserved_not_zero;
+        if (const errc e = K::check(keypad, row, raw_size, v.raw, write); e != errc{}) return e;
         if ((v.map.red.mask() | v.map.green.mask() | v.map.blue.mask() | v.size) != 0)
             return errc::value_out_of_range;
         return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node,
-                         value_specifier[write ? 1 : 0][size], row, data);
+                         value_specifier[write ? 1 : 0][raw_size], row, v.raw);
     }
     const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
     const auto sent =
