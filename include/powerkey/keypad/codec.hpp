@@ -859,8 +859,8 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& ke
     return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node,
                      value_specifier[write ? 1 : 0][size], row, data);
 }
-// value_frame of the kind visit_row_kind finds: inlined into the visit on speed (the write
-// rows' 113 -> 77.5 instructions), called from it under -Os (firmware (c): 520 bytes and 40 of
+// value_frame of the kind visit_row_kind finds: inlined into the visit on speed (one/sdo_write
+// 113 -> 76.5 instructions), called from it under -Os (firmware (c): 520 bytes and 40 of
 // stack less).
 template <class Layout>
 struct value_frame_of {
@@ -1331,10 +1331,11 @@ template <model M>
 
 // encode(node, M, msg) of one CANopen alternative with M's layout a constant. A key state or LED
 // map checks itself (detail::own_check) and is built inline with the model's facts as constants
-// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions); an SDO read, write,
-// reply or command checks itself too (detail::own_frame, one shared copy: its value checks are a
-// visit of the row's kind); the other PDOs are read back as encode(node, M, msg) reads them. None
-// but the last links a decoder.
+// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions; so is a command's); an
+// SDO read, write or reply checks itself too, inlined (detail::own_frame_inline: an object
+// written as a constant folds its row and kind; else its value checks are a visit of the row's
+// kind); the other PDOs are read back as encode(node, M, msg) reads them. None but the last links
+// a decoder.
 template <model M, detail::canopen_alternative T>
 requires(detail::own_pdo<T> || std::is_same_v<T, command>) [[nodiscard]] POWERKEY_DETAIL_FLATTEN
     constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
