@@ -234,6 +234,20 @@ inline void one_pkp_sdo_write_encode(std::size_t calls) {
 inline void one_pkp_command_encode(std::size_t calls) {
     encode_all<pkp_model>(pkp_commands, calls);
 }
+// The same write with its object a constant where it is written, as a firmware writes it
+// (encode<M>(node, sdo_write{object::heartbeat_time, v})): its row, kind and range fold at
+// compile time; the values (PKP 1017h: 50 ms, and 1000 ms) are not known.
+inline constexpr std::array<powerkey::object_value, 2> pkp_heartbeat_times{{
+    powerkey::number_value(50),
+    powerkey::number_value(1000),
+}};
+inline void one_pkp_sdo_write_known_object_encode(std::size_t calls) {
+    const auto n = opaque(node);
+    cycle(pkp_heartbeat_times, calls, [n](const powerkey::object_value& v) BENCH_INLINE {
+        return powerkey::encode<pkp_model>(
+            n, powerkey::sdo_write{powerkey::object::heartbeat_time, v});
+    });
+}
 inline void pkp_sdo_request_decode(std::size_t calls) {
     decode_all(pkp_sdo_request_frames, pkp_model, calls);
 }
@@ -259,6 +273,7 @@ inline constexpr op pkp_ops[] = {
     {"pkp2400/one/led_on/encode", one_pkp_led_on_encode},
     {"pkp2400/one/sdo_write/encode", one_pkp_sdo_write_encode},
     {"pkp2400/one/command/encode", one_pkp_command_encode},
+    {"pkp2400/one/sdo_write/encode_known_object", one_pkp_sdo_write_known_object_encode},
     {"pkp2400/sdo/decode_request", pkp_sdo_request_decode},
     {"pkp2400/sdo/decode_response", pkp_sdo_response_decode},
     {"pkp2400/sdo/encode", pkp_sdo_encode},

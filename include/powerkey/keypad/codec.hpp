@@ -769,6 +769,16 @@ requires requires(const model_layout& k, const T& v) { own_check(k, v); }
 constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
                                        const T& v) noexcept {
     if (const errc e = own_check(keypad, v); e != errc{}) return e;
+    constexpr bool led_map = std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>;
+    if constexpr (led_map && is_fixed_layout<Layout>) {
+        // The check leaves each plane within the model's LEDs: with the model a constant,
+        // pack_leds' masks fold (one/led_on/encode 33 -> 30 instructions; with a run-time model
+        // the same assumptions cost the LED rows 1 to 10).
+        const std::uint64_t outside = ~std::uint64_t{keypad.led_mask};
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.red.mask() & outside) != 0);
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.green.mask() & outside) != 0);
+        POWERKEY_DETAIL_ASSUME_NOT((v.map.blue.mask() & outside) != 0);
+    }
     return build_of(keypad, node, v);
 }
 
@@ -789,41 +799,105 @@ POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, cano
     return word_frame(fn, node, 8, specifier | std::uint64_t{row.key} << 8 | data << 32);
 }
 
+// A kind whose value is its raw number (value_kinds' defaults: value() is {data, {}, 0}, pack()
+// is v.raw).
+template <class K>
+inline constexpr bool raw_kind =
+    &K::value == &kind_defaults::value&&& K::pack == &kind_defaults::pack;
+// Every row of such a kind has one size, 1..4 bytes (checked_sdo takes it as the size sent).
+constexpr bool raw_rows_sized() noexcept {
+    for (const codec_row& r : codec_rows)
+        if (r.key != no_codec_row.key && !visit_kind(r.kind, [&r](auto k) {
+                return !raw_kind<decltype(k)> || (r.size() >= 1 && r.size() <= 4);
+            }))
+            return false;
+    return true;
+}
+static_assert(raw_rows_sized());
+
 // The frame of an SDO read (40h), write (23h..2Fh), write reply (60h) or read reply (43h..4Fh) of
 // object `id` (value `v` for the two that carry one), checked. One function for the four: one
 // copy in a program.
 enum class sdo_verb : std::uint8_t { read, write, write_reply, read_reply };
+// The specifier of an expedited write (23h) or read reply (43h) of `size` bytes, 1..4: bits 2..3
+// the bytes not used (CiA 301).
+inline constexpr std::uint8_t value_specifier[2][5] = {{0x43, 0x4F, 0x4B, 0x47, 0x43},
+                                                       {0x23, 0x2F, 0x2B, 0x27, 0x23}};
+// The frame of a write or read reply of row `row` of kind K with value v: what write_value builds
+// and value_message reads. Inlined where the kind is known (its case of checked_sdo's visit).
+template <class K, class Layout>
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& keypad,
+                                                                canopen::node_id node,
+                                                                const codec_row& row, sdo_verb verb,
+                                                                const object_value& v) noexcept {
+    using canopen::function;
+    const bool write = verb == sdo_verb::write;
+    if constexpr (std::is_same_v<K, value_kinds::commands>)
+        if (write) return errc::unknown_object;  // a `command`
+    if constexpr (raw_kind<K>) {
+        // The value is its raw number in the row's size (1..4: raw_rows_sized): the bytes read
+        // back as v exactly when v has no map and no size, so that is tested instead of the
+        // read-back; the checks, and their order, are the decoder's.
+        const std::uint8_t raw_size = row.size();
+        if (v.raw > largest_of_size[raw_size]) return errc::reserved_not_zero;
+        if (const errc e = K::check(keypad, row, raw_size, v.raw, write); e != errc{}) return e;
+        if ((v.map.red.mask() | v.map.green.mask() | v.map.blue.mask() | v.size) != 0)
+            return errc::value_out_of_range;
+        return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node,
+                         value_specifier[write ? 1 : 0][raw_size], row, v.raw);
+    }
+    const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
+    const auto sent =
+        canopen::expedited_size::make(row.size() != 0 ? row.size() : K::size(keypad, row, carried))
+            .value_or(canopen::expedited_size{4});
+    const std::uint8_t size = sent.value();
+    const std::uint32_t data = K::pack(keypad, row, v);
+    if (size != decoded_size(keypad, row, size)) return errc::size_mismatch;
+    if (data > largest_of_size[size]) return errc::reserved_not_zero;
+    if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
+    if (!(K::value(keypad, row, size, data) == v)) return errc::value_out_of_range;
+    return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node,
+                     value_specifier[write ? 1 : 0][size], row, data);
+}
+// value_frame of the kind visit_row_kind finds: inlined into the visit on speed (one/sdo_write
+// 113 -> 76.5 instructions), called from it under -Os (firmware (c): 520 bytes and 40 of
+// stack less).
 template <class Layout>
-constexpr result<can::frame> checked_sdo(const Layout& given, canopen::node_id node, object id,
-                                         sdo_verb verb, const object_value& v) noexcept {
+struct value_frame_of {
+    const Layout& keypad;
+    canopen::node_id node;
+    const codec_row& row;
+    sdo_verb verb;
+    const object_value& v;
+    template <class K>
+    POWERKEY_DETAIL_HOT constexpr result<can::frame> operator()(K) const noexcept {
+        return value_frame<K>(keypad, node, row, verb, v);
+    }
+};
+// Inlined into encode's entry points (a constant object folds its row and kind there); the one
+// out-of-line copy is checked_sdo's, below.
+template <class Layout>
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> checked_sdo_inline(
+    const Layout& given, canopen::node_id node, object id, sdo_verb verb,
+    const object_value& v) noexcept {
     using canopen::function;
     const auto& keypad = known(given);
     const std::uint8_t i = find_codec_row(keypad, id);
     if (i == 0) return errc::unknown_object;
     const codec_row& row = codec_row_at(keypad, i);
     const bool write = verb == sdo_verb::write || verb == sdo_verb::write_reply;
-    if (verb == sdo_verb::write && row.kind == value_kind::commands)
-        return errc::unknown_object;  // a `command`
+    // (a write of the command module is refused with unknown_object in its kind's case,
+    // value_frame: the module is writable in every dictionary, commands_writable)
     if (write ? !row.writable() : !row.readable()) return errc::unknown_command;
     if (verb == sdo_verb::read) return sdo_frame(function::sdo_rx, node, 0x40, row, 0);
     if (verb == sdo_verb::write_reply) return sdo_frame(function::sdo_tx, node, 0x60, row, 0);
-    // What write_value builds and value_message reads, in one visit of the row's kind.
-    return visit_row_kind(keypad, row.kind, [&](auto k) -> result<can::frame> {
-        using K = decltype(k);
-        const std::uint8_t carried = v.size >= 1 && v.size <= 4 ? v.size : std::uint8_t{4};
-        const auto sent = canopen::expedited_size::make(
-                              row.size() != 0 ? row.size() : K::size(keypad, row, carried))
-                              .value_or(canopen::expedited_size{4});
-        const std::uint8_t size = sent.value();
-        const std::uint32_t data = K::pack(keypad, row, v);
-        if (size != decoded_size(keypad, row, size)) return errc::size_mismatch;
-        if (data > largest_of_size[size]) return errc::reserved_not_zero;
-        if (const errc e = K::check(keypad, row, size, data, write); e != errc{}) return e;
-        if (!(K::value(keypad, row, size, data) == v)) return errc::value_out_of_range;
-        // 23h / 43h with bits 2..3 the bytes not used (CiA 301)
-        const auto specifier = static_cast<std::uint8_t>((write ? 0x23 : 0x43) | ((4 - size) << 2));
-        return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node, specifier, row, data);
-    });
+    return visit_row_kind(keypad, row.kind, value_frame_of<Layout>{keypad, node, row, verb, v});
+}
+
+template <class Layout>
+constexpr result<can::frame> checked_sdo(const Layout& keypad, canopen::node_id node, object id,
+                                         sdo_verb verb, const object_value& v) noexcept {
+    return checked_sdo_inline(keypad, node, id, verb, v);
 }
 
 // An SDO read, write or reply as its own type: its verb, and its value when it carries one.
@@ -840,23 +914,98 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
     else
         return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
-// A command: its bytes read back by read_command, the decoder's reading.
+// A command checks itself as read_command reads its bytes, without reading them back: its byte
+// names a command (unknown_command), each parameter its pair carries is in range (read_param on
+// the byte written: value_out_of_range), and the members it does not carry are at their defaults
+// (else the frame reads back as another command: value_out_of_range), tested in one masked
+// compare of the members as one word. A written parameter reads back as itself once in range.
+// The members a command may carry but `enabled`, one byte each in a word (in the order of the
+// struct: g++ reads each half with one load), and the byte that carries parameter p (none for
+// none and flag: `enabled` is tested apart).
+constexpr std::uint64_t command_word(const command& c) noexcept {
+    const std::uint32_t low = std::uint32_t{c.key} |
+                              std::uint32_t{static_cast<std::uint8_t>(c.state)} << 8 |
+                              std::uint32_t{c.level.value()} << 16 |
+                              std::uint32_t{static_cast<std::uint8_t>(c.colour)} << 24;
+    const std::uint32_t high = std::uint32_t{static_cast<std::uint8_t>(c.baud)} |
+                               std::uint32_t{c.period_10ms} << 8 |
+                               std::uint32_t{c.node_id.value()} << 16 |
+                               std::uint32_t{static_cast<std::uint8_t>(c.show)} << 24;
+    return low | std::uint64_t{high} << 32;
+}
+constexpr std::uint64_t command_word_bits(command_param p) noexcept {
+    switch (p) {
+        case command_param::key: return 0xFFull;
+        case command_param::state: return 0xFFull << 8;
+        case command_param::brightness: return 0xFFull << 16;
+        case command_param::colour: return 0xFFull << 24;
+        case command_param::baud: return 0xFFull << 32;
+        case command_param::period_10ms: return 0xFFull << 40;
+        case command_param::node: return 0xFFull << 48;
+        case command_param::show: return 0xFFull << 56;
+        case command_param::flag:
+        case command_param::none: break;
+    }
+    return 0;
+}
+// The frame of command v of parameter pair S (its row found: `row`).
+template <std::size_t S, class Layout>
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> command_frame(const Layout& keypad,
+                                                                  canopen::node_id node,
+                                                                  const codec_row& row,
+                                                                  const command& v) noexcept {
+    constexpr command_shape shape = command_shapes[S];
+    const std::uint8_t b1 = write_param(shape.p1, v);
+    const std::uint8_t b2 = write_param(shape.p2, v);
+    command back{};  // read_param's checks (what it stores is not used)
+    if (const errc e = read_param(keypad, shape.p1, b1, back); e != errc{}) return e;
+    if (const errc e = read_param(keypad, shape.p2, b2, back); e != errc{}) return e;
+    constexpr std::uint64_t others = ~(command_word_bits(shape.p1) | command_word_bits(shape.p2));
+    constexpr bool flag = shape.p1 == command_param::flag || shape.p2 == command_param::flag;
+    if (((command_word(v) ^ command_word(command{})) & others) != 0 ||
+        (!flag && v.enabled != command{}.enabled))
+        return errc::value_out_of_range;
+    return sdo_frame(
+        canopen::function::sdo_rx, node, 0x23, row,
+        static_cast<std::uint8_t>(v.code) | std::uint32_t{b1} << 8 | std::uint32_t{b2} << 16);
+}
 template <class Layout>
-constexpr result<can::frame> own_frame(const Layout& given, canopen::node_id node,
-                                       const command& v) noexcept {
+POWERKEY_DETAIL_INLINE constexpr result<can::frame> command_frame_inline(
+    const Layout& given, canopen::node_id node, const command& v) noexcept {
+    static_assert(command_shapes.size() == 8, "one case below per pair in command_shapes");
     const auto& keypad = known(given);
     const std::uint8_t i = find_codec_row(keypad, object::command_module);
     if (i == 0) return errc::unknown_object;
-    const auto data = static_cast<std::uint32_t>(load_le<4>(write_command(v).bytes, 0));
-    const auto back = read_command(keypad, 4, data);
-    if (!back) return back.error();
-    command want = v;
-    want.form = frame_form::manual;
-    // (holds_alternative and get, not get_if: g++ 12 refuses a null test of the address in a
-    // constant expression)
-    if (!std::holds_alternative<command>(*back) || !(std::get<command>(*back) == want))
-        return errc::value_out_of_range;
-    return sdo_frame(canopen::function::sdo_rx, node, 0x23, codec_row_at(keypad, i), data);
+    const codec_row& row = codec_row_at(keypad, i);
+    switch (command_shape_index[static_cast<std::uint8_t>(v.code)]) {
+        case 1: return command_frame<0>(keypad, node, row, v);
+        case 2: return command_frame<1>(keypad, node, row, v);
+        case 3: return command_frame<2>(keypad, node, row, v);
+        case 4: return command_frame<3>(keypad, node, row, v);
+        case 5: return command_frame<4>(keypad, node, row, v);
+        case 6: return command_frame<5>(keypad, node, row, v);
+        case 7: return command_frame<6>(keypad, node, row, v);
+        case 8: return command_frame<7>(keypad, node, row, v);
+        default: return errc::unknown_command;
+    }
+}
+template <class Layout>
+constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id node,
+                                       const command& v) noexcept {
+    return command_frame_inline(keypad, node, v);
+}
+// own_frame of an SDO message inlined into its caller: encode's entry points, where a constant
+// object or command code folds its row, kind and parameter pair (the controller calls own_frame,
+// one copy).
+template <class T, class Layout>
+requires own_sdo<T> POWERKEY_DETAIL_INLINE constexpr result<can::frame> own_frame_inline(
+    const Layout& keypad, canopen::node_id node, const T& v) noexcept {
+    if constexpr (std::is_same_v<T, command>)
+        return command_frame_inline(keypad, node, v);
+    else if constexpr (requires { v.value; })
+        return checked_sdo_inline(keypad, node, v.object, verb_of<T>, v.value);
+    else
+        return checked_sdo_inline(keypad, node, v.object, verb_of<T>, {});
 }
 
 // The front. Every length test sends a frame of another length to misfit. With `j1939` false a
@@ -1096,8 +1245,10 @@ template <class T, class Layout>
 POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_alternative(const Layout& keypad,
                                                                        canopen::node_id node,
                                                                        const T& msg) noexcept {
-    if constexpr (own_pdo<T> || own_sdo<T>)
+    if constexpr (own_pdo<T>)
         return own_frame(keypad, node, msg);
+    else if constexpr (own_sdo<T>)
+        return own_frame_inline(keypad, node, msg);
     else
         return encode_canopen<false>(node, keypad, message(msg));
 }
@@ -1180,19 +1331,19 @@ template <model M>
 
 // encode(node, M, msg) of one CANopen alternative with M's layout a constant. A key state or LED
 // map checks itself (detail::own_check) and is built inline with the model's facts as constants
-// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions); an SDO read, write,
-// reply or command checks itself too (detail::own_frame, one shared copy: its value checks are a
-// visit of the row's kind); the other PDOs are read back as encode(node, M, msg) reads them. None
-// but the last links a decoder.
+// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions; so is a command's); an
+// SDO read, write or reply checks itself too, inlined (detail::own_frame_inline: an object
+// written as a constant folds its row and kind; else its value checks are a visit of the row's
+// kind); the other PDOs are read back as encode(node, M, msg) reads them. None but the last links
+// a decoder.
 template <model M, detail::canopen_alternative T>
-requires detail::own_pdo<T>
-[[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<can::frame> encode(canopen::node_id node,
-                                                                          const T& msg) noexcept {
+requires(detail::own_pdo<T> || std::is_same_v<T, command>) [[nodiscard]] POWERKEY_DETAIL_FLATTEN
+    constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
     static_assert(detail::is_model(M), "M is a row of the model table");
     return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
 }
 template <model M, detail::canopen_alternative T>
-requires(!detail::own_pdo<T>) [[nodiscard]] POWERKEY_DETAIL_INLINE
+requires(!detail::own_pdo<T> && !std::is_same_v<T, command>) [[nodiscard]] POWERKEY_DETAIL_INLINE
     constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
     static_assert(detail::is_model(M), "M is a row of the model table");
     return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
