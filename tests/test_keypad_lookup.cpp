@@ -6,6 +6,7 @@
 // llvm-cov, which counts only run time, sees these builders run (docs/quality.md).
 #include <doctest/doctest.h>
 
+#include <powerkey/keypad/codec.hpp>
 #include <powerkey/keypad/lookup.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/names.hpp>
@@ -110,5 +111,34 @@ TEST_CASE("the address lookup: slot 0 is the sentinel no key matches; a key is i
             CHECK(detail::codec_rows[i].id == r.id);
             CHECK(detail::find_codec_row(d, opaque(key | 0xAB00'0000u)) == i);
         }
+    }
+}
+
+// Under -Os the address lookup scans the codec rows a dictionary has (scan_codec_row) and the
+// command decoder scans the command table (scan_command_shape): the same answers as the hash
+// slots and the byte table, for every key of every dictionary, every key one off a row's (index
+// and subindex), keys of no row, and every command byte.
+TEST_CASE("the firmware's lookups (-Os) answer as the hash slots and the byte table") {
+    for (const auto d : enum_values<dictionary>()) {
+        CAPTURE(to_string(d));
+        std::size_t found = 0;
+        for (const auto& other : detail::codec_rows) {
+            for (const std::uint32_t delta : {0u, 1u, 0x100u, 0xFFFF'FFFFu, 0xFFFF'FF00u}) {
+                const std::uint32_t key = opaque(other.key + delta);
+                CAPTURE(key);
+                const auto hashed = detail::find_codec_row(d, key);
+                CHECK(detail::scan_codec_row(d, key) == hashed);
+                found += hashed != 0 ? 1 : 0;
+            }
+        }
+        CHECK(found >= rows_of(d).size());  // every row's own key at least
+        CHECK(detail::scan_codec_row(d, opaque(0xFFFF'FFFFu)) == 0);
+        CHECK(detail::scan_codec_row(d, opaque(0x0012'3456u)) ==
+              detail::find_codec_row(d, opaque(0x0012'3456u)));
+    }
+    for (unsigned b = 0; b < 0x100; ++b) {
+        CAPTURE(b);
+        CHECK(detail::scan_command_shape(static_cast<std::uint8_t>(opaque(b))) ==
+              detail::command_shape_index[b]);
     }
 }

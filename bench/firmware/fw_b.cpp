@@ -40,7 +40,8 @@ namespace calls {
         const auto f = firmware::receive();
         if (!f) continue;
         const auto node = co::node_id::make(monitor().node);
-        const auto model = static_cast<powerkey::model>(monitor().model % powerkey::model_count);
+        // (a register value that is no model: the decoder's value_out_of_range, reported)
+        const auto model = static_cast<powerkey::model>(monitor().model & 0xFF);
         if (!node) continue;
         const auto r = calls::decode_any(*f, *node, model);
         monitor().result = r ? 1 + kind_of(*r) : 0x100 + static_cast<std::uint32_t>(r.error());

@@ -283,6 +283,30 @@ inline constexpr auto command_shape_index = [] {
             static_cast<std::uint8_t>(all_command_shapes.find({r.p1, r.p2}) + 1);
     return t;
 }();
+// The pair + 1 of each row of command_table.
+inline constexpr auto command_row_shapes = [] {
+    std::array<std::uint8_t, std::size(command_table)> t{};
+    for (std::size_t i = 0; i < t.size(); ++i)
+        t[i] = static_cast<std::uint8_t>(
+            all_command_shapes.find({command_table[i].p1, command_table[i].p2}) + 1);
+    return t;
+}();
+// The pair + 1 of command byte `byte`, 0 for none, by a scan of the command table's rows: the
+// same answer as command_shape_index (a test holds the two to it for every byte) in a byte a row,
+// not 256 bytes.
+constexpr std::uint8_t scan_command_shape(std::uint8_t byte) noexcept {
+    for (std::size_t i = 0; i < std::size(command_table); ++i)
+        if (static_cast<std::uint8_t>(command_table[i].code) == byte) return command_row_shapes[i];
+    return 0;
+}
+// The pair + 1 of command byte `byte`: the byte table, or under -Os (POWERKEY_DETAIL_SIZE, a
+// firmware) the scan.
+constexpr std::uint8_t command_shape_of(std::uint8_t byte) noexcept {
+    if constexpr (POWERKEY_DETAIL_SIZE)
+        return scan_command_shape(byte);
+    else
+        return command_shape_index[byte];
+}
 
 // The command `code` of parameter pair S in data bytes 4..7 (code, p1, p2, 00h). The pair is a
 // constant, so each read_param folds to its own check and store, and the command is built in
@@ -314,7 +338,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout
     if (size != 4) return errc::size_mismatch;
     const auto byte = static_cast<std::uint8_t>(data);
     const auto code = static_cast<command_code>(byte);  // a command's byte is its code
-    switch (command_shape_index[byte]) {
+    switch (command_shape_of(byte)) {
         case 1: return command_of<0>(keypad, code, data);
         case 2: return command_of<1>(keypad, code, data);
         case 3: return command_of<2>(keypad, code, data);
@@ -631,7 +655,7 @@ constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
                     keypad, r.kind, [&](auto k) { return decltype(k)::used_bits(keypad, r); });
                 return static_cast<std::uint8_t>(4 + bytes_of(bits & largest_of_size[size & 7u]));
             } else if constexpr (std::is_same_v<T, command>) {
-                const std::uint8_t pair = command_shape_index[static_cast<std::uint8_t>(v.code)];
+                const std::uint8_t pair = command_shape_of(static_cast<std::uint8_t>(v.code));
                 if (pair == 0) return 8;
                 const command_shape& shape = command_shapes[pair - 1u];
                 return static_cast<std::uint8_t>(5 + (shape.p1 != command_param::none ? 1 : 0) +
@@ -977,7 +1001,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> command_frame_inline(
     const std::uint8_t i = find_codec_row(keypad, object::command_module);
     if (i == 0) return errc::unknown_object;
     const codec_row& row = codec_row_at(keypad, i);
-    switch (command_shape_index[static_cast<std::uint8_t>(v.code)]) {
+    switch (command_shape_of(static_cast<std::uint8_t>(v.code))) {
         case 1: return command_frame<0>(keypad, node, row, v);
         case 2: return command_frame<1>(keypad, node, row, v);
         case 3: return command_frame<2>(keypad, node, row, v);

@@ -194,12 +194,39 @@ constexpr std::uint8_t matched_row(std::uint8_t s) noexcept {
     return s;
 }
 
+// Per dictionary, which codec rows it has: one bit per codec row number (bit n of word n / 32),
+// what scan_codec_row reads in place of the hash slots.
+inline constexpr std::size_t codec_row_words = (codec_rows.size() + 31) / 32;
+inline constexpr auto dictionary_codec_rows = [] {
+    std::array<std::array<std::uint32_t, codec_row_words>, dictionary_count> t{};
+    for (std::size_t d = 0; d < dictionary_count; ++d)
+        for (const auto& r : dictionary_rows[d]) {
+            const std::uint8_t n = codec_row_number(r);
+            t[d][n / 32] |= std::uint32_t{1} << (n % 32);
+        }
+    return t;
+}();
+
+// find_codec_row by a scan of the codec rows dictionary d has: the same answer (a test holds the
+// two to it for every key of every dictionary), in 20 bytes a dictionary rather than 256. A
+// firmware's lookup (-Os, POWERKEY_DETAIL_SIZE), where flash counts more than the hundreds of
+// instructions the scan takes.
+constexpr std::uint8_t scan_codec_row(dictionary d, std::uint32_t key) noexcept {
+    key &= 0xFF'FFFF;
+    const auto& has = dictionary_codec_rows[static_cast<std::size_t>(d)];
+    for (std::size_t n = 1; n < codec_rows.size(); ++n)
+        if (((has[n / 32] >> (n % 32)) & 1u) != 0 && codec_rows[n].key == key)
+            return matched_row(static_cast<std::uint8_t>(n));
+    return 0;
+}
+
 // The codec row number at wire address `key` (its low 24 bits, as wire_key makes it) in
 // dictionary d, 0 when it has none.
 // Two probes, unrolled: every address is found within two (find_multiplier). An empty slot is
 // row 0, the sentinel no key matches; a key whose home slot is empty is nowhere (it would have
-// been put there: no row is ever removed).
+// been put there: no row is ever removed). Under -Os, the scan above.
 constexpr std::uint8_t find_codec_row(dictionary d, std::uint32_t key) noexcept {
+    if constexpr (POWERKEY_DETAIL_SIZE) return scan_codec_row(d, key);
     key &= 0xFF'FFFF;
     const std::size_t table = static_cast<std::size_t>(d) * slots_per_dictionary;
     const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
