@@ -43,6 +43,12 @@ struct duration_ms {
 [[nodiscard]] constexpr bool reached(millis deadline, millis now) noexcept {
     return !before(now, deadline);
 }
+// Whether a peer last heard at `since` is lost at `now`: silent for longer than `after` (0:
+// never lost). Both controllers' lost_after.
+[[nodiscard]] constexpr bool silent_for_longer(millis since, millis now,
+                                               duration_ms after) noexcept {
+    return after.value != 0 && elapsed(since, now).value > after.value;
+}
 
 // A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
 // false) and counts the item in dropped(), so a caller that drains too slowly sees it.

@@ -707,8 +707,8 @@ private:
     // --- the time-driven part ---------------------------------------------------------------
 
     constexpr void run() noexcept {
-        if (state_ != controller_state::searching && cfg_.lost_after.value != 0 &&
-            elapsed(last_heard_, now_).value > cfg_.lost_after.value) {
+        if (state_ != controller_state::searching &&
+            silent_for_longer(last_heard_, now_, cfg_.lost_after)) {
             emit(event_kind::lost);
             release_all();
             state_ = controller_state::searching;
