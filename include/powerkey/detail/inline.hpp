@@ -5,8 +5,8 @@
 // line (docs/performance.md). Under -Os (firmware) one shared copy of each is smaller, so only
 // POWERKEY_DETAIL_INLINE, the dispatch itself, stays forced there, and POWERKEY_DETAIL_SIZE is
 // true: a function written twice for speed is written once, and a table kept only for speed
-// (the address hash slots, the command byte table) gives way to a scan. Compilers other than g++ and clang
-// get no hints.
+// (the address hash slots, the command byte table) gives way to a scan. Compilers other than g++
+// and clang get no hints.
 #ifndef POWERKEY_DETAIL_INLINE_HPP
 #define POWERKEY_DETAIL_INLINE_HPP
 
