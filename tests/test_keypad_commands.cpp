@@ -11,6 +11,7 @@
 #include "support.hpp"
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -223,6 +224,37 @@ TEST_CASE("every parameter byte of every command and every reserved bit, in ever
         }
     }
     CHECK(models >= 3);  // the PKP-2200, 2400 and 2600-LI
+}
+
+// codec.hpp's own check of a command compares its members as one word (detail::command_word)
+// outside the bytes its parameters own (detail::command_word_bits): the two lists must agree.
+// For the parameters of every command: every byte read_param accepts moves command_word within
+// the parameter's bits alone (one byte), some byte moves it, and `enabled` (flag, tested apart)
+// and none move nothing.
+TEST_CASE("each parameter's byte in the command word is the one command_word_bits names") {
+    const auto keypad = detail::layout_of(*info(model::pkp2400));
+    const std::uint64_t defaults = detail::command_word(command{});
+    std::size_t params = 0;
+    for (const command_row& row : detail::command_table)
+        for (const command_param p : {row.p1, row.p2}) {
+            ++params;
+            CAPTURE(static_cast<unsigned>(p));
+            const std::uint64_t bits = detail::command_word_bits(p);
+            std::uint64_t moved = 0;
+            for (unsigned b = 0; b < 0x100; ++b) {
+                command c{};
+                if (detail::read_param(keypad, p, static_cast<std::uint8_t>(b), c) != errc{})
+                    continue;
+                const std::uint64_t diff = detail::command_word(c) ^ defaults;
+                CAPTURE(b);
+                CHECK((diff & ~bits) == 0);
+                moved |= diff;
+            }
+            const bool outside = p == command_param::none || p == command_param::flag;
+            CHECK(bits == (outside ? 0 : 0xFFull << (std::countr_zero(bits) & ~7)));
+            CHECK((moved != 0) == !outside);
+        }
+    CHECK(params == 2 * std::size(detail::command_table));
 }
 
 // The command module's own codes of the shared values: PKP 13 e (baud rate: 00h 125k, 01h 250k,

@@ -945,7 +945,8 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
 // compare of the members as one word. A written parameter reads back as itself once in range.
 // The members a command may carry but `enabled`, one byte each in a word (in the order of the
 // struct: g++ reads each half with one load), and the byte that carries parameter p (none for
-// none and flag: `enabled` is tested apart).
+// none and flag: `enabled` is tested apart); tests/test_keypad_commands.cpp holds the two to
+// each other.
 constexpr std::uint64_t command_word(const command& c) noexcept {
     const std::uint32_t low = std::uint32_t{c.key} |
                               std::uint32_t{static_cast<std::uint8_t>(c.state)} << 8 |
