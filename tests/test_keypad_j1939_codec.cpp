@@ -350,7 +350,7 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                                                         .identifier = 0xFF}));
                 for (const std::string_view text :
                      {"V2.10", "V2.1", "", "\x1F", "\x7F", "ab\0c", "\xFF\xFF\xFF\xFF\xFF",
-                      "\xFF\xFF\xFF\xFF\xFE"}) {
+                      "\xFF\xFF\xFF\xFF\xFE", "V2.1\xFF"}) {
                     software_revision v{
                         .source = from, .destination = to, .priority = 6, .bytes = {}};
                     for (std::size_t b = 0; b < text.size() && b < 5; ++b)
