@@ -42,7 +42,7 @@ struct op {
 // Marks an operation's lambda: its library call is inlined into the loop of `cycle`, as the floor
 // reads its frame inline, whichever other operations share the lambda's type (the decode_all<N>
 // of two operations with N inputs each share one closure, which g++ otherwise calls out of line:
-// +13..16 instructions per call on those rows only, docs/performance.md).
+// +13..16 instructions per call on those rows only, CHANGELOG.md "How we got here").
 #define BENCH_INLINE __attribute__((always_inline))
 
 // Runs fn on inputs[0], inputs[1], ... (wrapping) `calls` times, keeping every result.

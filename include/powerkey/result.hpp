@@ -31,7 +31,7 @@ public:
     constexpr result(errc e) noexcept : error_(e) {}
     // The value built in place from args (for result<variant>: std::in_place_type<A>, args of A),
     // so that a decoder writes its answer straight into the caller's result instead of building
-    // a T and moving it in (docs/performance.md).
+    // a T and moving it in (CHANGELOG.md "How we got here").
     template <class... A>
     requires std::is_constructible_v<T, A...>
     constexpr explicit result(std::in_place_t,

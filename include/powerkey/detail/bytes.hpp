@@ -5,7 +5,7 @@
 //   store_le<N>(bytes, at, v)    the inverse
 //   low_bits(n)                  the mask of the n low bits of a 64-bit word (n >= 64: all)
 // Written as one expression per width rather than a loop: g++ -O2 merges it into a single load
-// (a byte loop cost ~55 instructions, docs/performance.md).
+// (a byte loop cost ~55 instructions, CHANGELOG.md "How we got here").
 #ifndef POWERKEY_DETAIL_BYTES_HPP
 #define POWERKEY_DETAIL_BYTES_HPP
 

@@ -83,7 +83,7 @@ constexpr result<message> lift(const result<T>& r, const can::frame& f,
 // (a per-colour SI plane: the model's stride / 8; the keys of an SI keypad without a manual: 2
 // bytes, or 1 on 8 keys or fewer; a string piece: what it carries). The kinds of size 0 are
 // tested here rather than through visit_kind: a jump on every SDO value cost
-// 4 instructions a frame (docs/performance.md); the static_assert keeps the shortcut honest.
+// 4 instructions a frame (CHANGELOG.md); the static_assert keeps the shortcut honest.
 constexpr std::uint8_t row_size(const model_layout& keypad, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();

@@ -188,7 +188,7 @@ inline constexpr auto address_slots = [] {
 
 // Row s, whose key a 24-bit key matched: not the sentinel. Telling the compiler so (g++ and clang)
 // drops the callers' `== 0` tests from the path of a known address (-3 instructions per SDO frame,
-// docs/performance.md).
+// CHANGELOG.md "How we got here").
 constexpr std::uint8_t matched_row(std::uint8_t s) noexcept {
     POWERKEY_DETAIL_ASSUME_NOT(s == 0);
     return s;

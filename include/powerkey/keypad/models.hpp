@@ -401,7 +401,7 @@ template <class Row>  // model_info, or the codec's detail::model_layout
 }
 
 // The map in a bit string of the model; errc::reserved_not_zero for a set bit that names no LED.
-// The planes written out rather than looped: this runs for every LED PDO (docs/performance.md).
+// The planes written out rather than looped: this runs for every LED PDO (CHANGELOG.md).
 template <class Row>
 [[nodiscard]] constexpr result<leds> unpack_leds(const Row& keypad, std::uint64_t v,
                                                  unsigned planes) noexcept {
