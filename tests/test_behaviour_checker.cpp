@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -272,6 +273,69 @@ TEST_CASE("checker: one small log per problem kind") {
            pk::refused_frame,
            {static_cast<std::uint32_t>(errc::value_out_of_range), 0x18EF2100, 8}},
           {2, pk::refused_frame, {static_cast<std::uint32_t>(errc::wrong_length), 0x18EF2100, 3}}}},
+        // Issue 21: the J1939 keypad's periodic frames and address claims.
+        {"J1939: heartbeat silence longer than 75h allows (section 21: 500 ms)",
+         model::pkp2600si,
+         {{0, "18EF2100#041B750132FFFFFF"},
+          {10, "18EFFF21#041BF9038000FF21"},
+          {500, "18EFFF21#041BF9038000FF21"},
+          {1300, "18EF2100#041B0220FFFFFFFF"}},
+         {{4, pk::heartbeat_silence, {800, 500, 3}}}},
+        {"J1939: another keypad's heartbeat is not the followed keypad's",
+         model::pkp2600si,
+         {{0, "18EF2100#041B750132FFFFFF"},
+          {10, "18EFFF21#041BF9038000FF21"},
+          {500, "18EFFF22#041BF9038000FF22"},
+          {800, "18EF2100#041B0220FFFFFFFF"}},
+         {{4, pk::heartbeat_silence, {790, 500, 2}}}},
+        {"J1939: no heartbeat judged before the log shows 75h, nor after 75h 00h",
+         model::pkp2600si,
+         {{0, "18EFFF21#041BF9038000FF21"},
+          {5000, "18EFFF21#041BF9038000FF21"},
+          {5001, "18EF2100#041B750132FFFFFF"},
+          {5010, "18EFFF21#041BF9038000FF21"},
+          {5100, "18EF2100#041B7500FFFFFFFF"},
+          {9000, "18EFFF21#041BF9038000FF21"}},
+         {}},
+        {"J1939: 80h and the keypad's address claim restart the timing at its next frame",
+         model::pkp2600si,
+         {{0, "18EF2100#041B750132FFFFFF"},
+          {10, "18EFFF21#041BF9038000FF21"},
+          {20, "18EEFF21#3F426F1A00823CC0"},
+          {1000, "18EF2100#041B0220FFFFFFFF"},
+          {1010, "18EFFF21#041BF9038000FF21"},
+          {1100, "18EF2100#041B8000FFFFFFFF"},
+          {5000, "715#00"}},
+         {}},
+        {"J1939: the key contact states stop while 71h enables them (sections 17, 22: 100 ms)",
+         model::pkp2600si,
+         {{0, "18EF2100#041B7101FFFFFFFF"},
+          {10, "18EFFF21#041B01010121FFFF"},
+          {100, "18EFFF21#041B01010021FFFF"},
+          {300, "18EF2100#041B0220FFFFFFFF"}},
+         {{4, pk::key_state_silence, {200, 100, 3}}}},
+        {"J1939: no key state judged while 71h is not shown, nor after 71h 00h",
+         model::pkp2600si,
+         {{0, "18EF2100#041B770AFFFFFFFF"},
+          {10, "18EFFF21#041B01010121FFFF"},
+          {2000, "18EFFF21#041B01010021FFFF"},
+          {2001, "18EF2100#041B7101FFFFFFFF"},
+          {2010, "18EFFF21#041B01010121FFFF"},
+          {2100, "18EF2100#041B7100FFFFFFFF"},
+          {9000, "18EFFF21#041B01010021FFFF"}},
+         {}},
+        {"J1939: two claims of 21h with different NAMEs (section 20); the same NAME again, another "
+         "address and the cannot-claim address FEh are fine",
+         model::pkp2600si,
+         {{0, "18EEFF21#3F426F1A00823CC0"},
+          {10, "18EEFF21#3F426F1A00823CC0"},
+          {20, "18EEFF21#40426F1A00823CC0"},
+          {30, "18EEFF22#40426F1A00823CC0"},
+          {40, "18EEFFFE#3F426F1A00823CC0"},
+          {50, "18EEFFFE#40426F1A00823CC0"},
+          {60, "18EEFF21#3F426F1A00823CC0"}},
+         {{3, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 2}},
+          {7, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 3}}}},
         {"J1939: a command the model's manual does not have (37h on a PKP-2200-SI) is refused",
          model::pkp2200si,
          {{0, "18EF2100#041B3702FFFFFFFF"}, {10, "18EF2100#041B021FFFFFFFFF"}},
@@ -292,8 +356,8 @@ TEST_CASE("checker: every problem kind has a test row and a name") {
         CHECK(!summary_of(k).empty());
         CHECK(problem_kinds[static_cast<std::size_t>(k)].kind == k);
     }
-    CHECK(enum_values<problem_kind>().size() == 15);
-    CHECK(problem_kind_count == 15);
+    CHECK(enum_values<problem_kind>().size() == 16);
+    CHECK(problem_kind_count == 16);
 }
 
 TEST_CASE("checker: severities: only frames not in the manual's form are warnings") {
@@ -445,6 +509,9 @@ TEST_CASE("checker: explanations") {
         {{3, pk::j1939_no_keypad, {0x18EF2100, 0x21, 0x02}},
          "J1939 frame 18EF2100h to address 21h, which no keypad holds (the keypad is at 02h): "
          "nobody acts on it"},
+        {{3, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 2}},
+         "J1939 frame 18EEFF21h claims address 21h, which line 2 claimed with another NAME: two "
+         "devices want one address"},
     };
     for (const auto& r : rows) {
         std::array<char, 160> buf{};
@@ -469,6 +536,34 @@ TEST_CASE("checker: a time that goes back restarts the timers") {
                                     {150, "715#05"}};
     const auto got = check(model::pk1000, log);
     CHECK_MESSAGE(got.empty(), text_of(got));
+    // The same in J1939: the heartbeat of 75h (500 ms) and the key states of 71h (100 ms).
+    const std::vector<entry> j1939 = {
+        {0, "18EF2100#041B750132FFFFFF"},   {1, "18EF2100#041B7101FFFFFFFF"},
+        {10, "18EFFF21#041BF9038000FF21"},  {500, "18EFFF21#041BF9038000FF21"},
+        {501, "18EFFF21#041B01010121FFFF"}, {50, "18EF2100#041B0220FFFFFFFF"},
+        {150, "18EFFF21#041B01010021FFFF"}, {250, "18EFFF21#041B01010121FFFF"},
+        {350, "18EFFF21#041B01010021FFFF"}, {450, "18EFFF21#041B01010121FFFF"},
+        {540, "18EFFF21#041BF9038000FF21"}, {550, "18EFFF21#041B01010021FFFF"}};
+    const auto got_j1939 = check(model::pkp2600si, j1939);
+    CHECK_MESSAGE(got_j1939.empty(), text_of(got_j1939));
+}
+
+TEST_CASE("checker: the last claims of 16 J1939 addresses are kept, the oldest given up") {
+    // 17 addresses claimed with the manuals' NAME (section 20), then 01h and 11h with another:
+    // 01h was forgotten for 11h, which is still known.
+    std::vector<std::string> frames;
+    for (unsigned a = 1; a <= 0x11; ++a) {
+        std::array<char, 3> hex{};
+        std::snprintf(hex.data(), hex.size(), "%02X", a);
+        frames.push_back("18EEFF" + std::string(hex.data()) + "#3F426F1A00823CC0");
+    }
+    frames.push_back("18EEFF01#40426F1A00823CC0");
+    frames.push_back("18EEFF11#40426F1A00823CC0");
+    std::vector<entry> log;
+    for (std::size_t i = 0; i < frames.size(); ++i)
+        log.push_back({static_cast<std::uint32_t>(10 * i), frames[i]});
+    CHECK(check(model::pkp2600si, log) ==
+          std::vector<problem>{{19, pk::j1939_address_conflict, {0x18EEFF11, 0x11, 17}}});
 }
 
 TEST_CASE("checker: NMT pre-operational, reset node and reset communication stop the PDOs") {
@@ -541,6 +636,37 @@ TEST_CASE("checker: every timer the millisecond before, at and after its deadlin
         CHECK(at(84).empty());
         CHECK(at(85).empty());
         CHECK(at(86) == std::vector<problem>{{3, pk::key_state_silence, {76, 50, 2}}});
+    }
+    SUBCASE("the J1939 heartbeat: 1.5 periods of 75h (section 21)") {
+        const auto at = [](std::uint32_t ms) {
+            return check(model::pkp2600si, {{0, "18EF2100#041B750132FFFFFF"},
+                                            {10, "18EFFF21#041BF9038000FF21"},
+                                            {ms, "18EF2100#041B0220FFFFFFFF"}});
+        };
+        CHECK(at(759).empty());
+        CHECK(at(760).empty());
+        CHECK(at(761) == std::vector<problem>{{3, pk::heartbeat_silence, {751, 500, 2}}});
+    }
+    SUBCASE("the J1939 key state: 1.5 periods, 100 ms by default (sections 17, 22)") {
+        const auto at = [](std::uint32_t ms) {
+            return check(model::pkp2600si, {{0, "18EF2100#041B7101FFFFFFFF"},
+                                            {10, "18EFFF21#041B01010121FFFF"},
+                                            {ms, "18EF2100#041B0220FFFFFFFF"}});
+        };
+        CHECK(at(159).empty());
+        CHECK(at(160).empty());
+        CHECK(at(161) == std::vector<problem>{{3, pk::key_state_silence, {151, 100, 2}}});
+    }
+    SUBCASE("the J1939 key state: 1.5 periods of 77h (1 s, section 22)") {
+        const auto at = [](std::uint32_t ms) {
+            return check(model::pkp1600si, {{0, "18EF2100#041B7764FFFFFFFF"},
+                                            {1, "18EF2100#041B7101FFFFFFFF"},
+                                            {10, "18EFFF21#041B01010121FFFF"},
+                                            {ms, "18EF2100#041B021FFFFFFFFF"}});
+        };
+        CHECK(at(1509).empty());
+        CHECK(at(1510).empty());
+        CHECK(at(1511) == std::vector<problem>{{4, pk::key_state_silence, {1501, 1000, 3}}});
     }
     SUBCASE("the consumer heartbeat (1016h): LEDs ignored only past its period") {
         const auto at = [](std::uint32_t ms) {

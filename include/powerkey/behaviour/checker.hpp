@@ -88,7 +88,9 @@ enum class severity : std::uint8_t { POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_D
     X(j1939_multiple_leds_off, problem, "a J1939 multiple-LED command while LED management (37h) is single LED only", \
       "") /* detail: identifier, line of the 37h (0: the default), 0 */ \
     X(j1939_no_keypad, problem, "a J1939 command to an address no keypad holds", \
-      "") /* detail: identifier, destination, the keypad's address */
+      "") /* detail: identifier, destination, the keypad's address */ \
+    X(j1939_address_conflict, problem, "two J1939 address claims of one address with different NAMEs", \
+      "") /* detail: identifier, the address, line of the other claim */
 // clang-format on
 #define POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR(name, ...) name,
 enum class problem_kind : std::uint8_t {
@@ -148,12 +150,13 @@ struct checker_config {
 template <std::size_t TextCapacity = 64>
 class checker {
 public:
-    // The most problems one step() finds: the three the time brings (sdo_no_reply,
-    // heartbeat_silence, key_state_silence) and two the frame does (a segment response with the
-    // wrong toggle that ends an upload of the wrong size, which is never trimmed or padded: it
-    // uses all 8 bytes; a refused request sent while another is outstanding; any other frame
-    // shows at most one). finish() finds at most four: the three of the time and wrong_model.
-    static constexpr std::size_t max_problems_per_frame = 5;
+    // The most problems one step() finds: the five the time brings (sdo_no_reply, and
+    // heartbeat_silence and key_state_silence of CANopen and of J1939, timed apart) and two the
+    // frame does (a segment response with the wrong toggle that ends an upload of the wrong size,
+    // which is never trimmed or padded: it uses all 8 bytes; a refused request sent while
+    // another is outstanding; any other frame shows at most one). finish() finds at most six:
+    // the five of the time and wrong_model.
+    static constexpr std::size_t max_problems_per_frame = 7;
 
     constexpr explicit checker(const checker_config& c) noexcept
         : cfg_(c),
@@ -258,6 +261,7 @@ private:
             if (consumer_last_) consumer_last_ = now_;
             if (hb_last_) hb_last_->time = now_;
             if (ks_last_) ks_last_->time = now_;
+            j1939_.restart(now_);
         }
         last_time_ = now_;
         if (pending_ && elapsed(pending_->sent, now_).value >= cfg_.sdo_timeout.value) {
@@ -286,6 +290,14 @@ private:
             ks_reported_ = true;
             report(line_, problem_kind::key_state_silence, elapsed(ks_last_->time, now_).value,
                    ks_period_, ks_last_->line);
+        }
+        // J1939 (j1939_checks.hpp): the same kinds, from 75h, 71h and 77h.
+        for (const auto t : {j1939_timer::heartbeat, j1939_timer::key_state}) {
+            if (const auto d = j1939_.overdue(t, now_, allowed(j1939_.period(t))))
+                report(line_,
+                       t == j1939_timer::heartbeat ? problem_kind::heartbeat_silence
+                                                   : problem_kind::key_state_silence,
+                       (*d)[0], (*d)[1], (*d)[2]);
         }
     }
 
@@ -330,7 +342,7 @@ private:
     // J1939 frames always have 8 bytes: none is trimmed or padded.
     constexpr void j1939(const can::frame& f, const session_event& e,
                          std::uint8_t address) noexcept {
-        const auto r = j1939_.step(f, e, address, session_.j1939_address(), line_);
+        const auto r = j1939_.step(f, e, address, session_.j1939_address(), line_, now_);
         if (e.decoded)
             ++keypad_frames_;
         else if (r.keypads && e.decoded.error() != errc::wrong_id)  // not another keypad's
@@ -347,9 +359,10 @@ private:
         switch (k) {
             case j1939_fault::bad_header: return problem_kind::j1939_bad_header;
             case j1939_fault::multiple_leds_off: return problem_kind::j1939_multiple_leds_off;
-            case j1939_fault::no_keypad: break;
+            case j1939_fault::no_keypad: return problem_kind::j1939_no_keypad;
+            case j1939_fault::address_conflict: break;
         }
-        return problem_kind::j1939_no_keypad;
+        return problem_kind::j1939_address_conflict;
     }
 
     // A host frame to the node id the keypad left (PK1000 23, PKP 13 h): nobody answers it.
@@ -626,6 +639,8 @@ constexpr void explain(const problem& p, text_writer& w) noexcept {
             return explain_j1939(j1939_fault::multiple_leds_off, p.detail, w);
         case problem_kind::j1939_no_keypad:
             return explain_j1939(j1939_fault::no_keypad, p.detail, w);
+        case problem_kind::j1939_address_conflict:
+            return explain_j1939(j1939_fault::address_conflict, p.detail, w);
         default: break;
     }
     if (static_cast<std::size_t>(p.kind) >= problem_kind_count) return;
