@@ -33,6 +33,17 @@ virtual_keypad<> in_j1939(model m, millis t = {0}) {
     return k;
 }
 
+// A keypad of model m sold as a J1939 one (keypad_options::start_in_j1939) at J1939 address
+// `address`, powered on at 0.
+virtual_keypad<> j1939_keypad_at(model m, std::uint8_t address = 0x21) {
+    behaviour::keypad_options o{true, 0};
+    o.start_in_j1939 = true;
+    o.j1939_address = behaviour::j1939_source_address::make(address).value();
+    virtual_keypad<> k(m, canopen::default_node_id, o);
+    k.power_on(millis{0});
+    return k;
+}
+
 // A frame to the keypad at t, and what it sends in answer.
 strings hear(virtual_keypad<>& k, std::string_view frame, millis t) {
     k.receive(frame_of(frame), t);
@@ -405,6 +416,137 @@ TEST_CASE("J1939 faults: silence and lost frames apply to the J1939 frames too")
     k.drop_received(1);
     CHECK(hear(k, "18EF2100#041B2AFFFFFFFFFF", {220}).empty());
     CHECK(hear(k, "18EF2100#041B2AFFFFFFFFFF", {230}) == strings{"18EFFF21#041B2A56322E3130"});
+}
+
+// The PKP LI keypads sold as J1939 keypads (issue 21): their J1939 row (docs/j1939.md, the
+// PKP-2400-LI J1939 manual's pages and its layout inferred for the PKP-2200-LI and PKP-2600)
+// from power-on, the LED command and acknowledgement in the LI (code) form, and no switch back.
+struct li_case {
+    model m;
+    std::string_view last_key_pressed;  // its last key's key contact state, pressed
+    std::string_view beat_last_key;     // the heartbeat (counter 00h) with its last key held
+    std::string_view led_beyond;        // an LI LED command to the LED after its last
+};
+constexpr li_case li_cases[] = {
+    {model::pkp2200, "18EFFF21#041B01040121FFFF", "18EFFF21#041BF9000800FF21",
+     "18EF2100#041B010505FFFFFF"},
+    {model::pkp2400, "18EFFF21#041B01080121FFFF", "18EFFF21#041BF9008000FF21",
+     "18EF2100#041B010905FFFFFF"},
+    {model::pkp2600, "18EFFF21#041B010C0121FFFF", "18EFFF21#041BF9000008FF21",
+     "18EF2100#041B010D05FFFFFF"},
+};
+
+TEST_CASE("J1939 from power-on: the PKP LI keypads, their LI frames, no switch back") {
+    for (const auto& c : li_cases) {
+        CAPTURE(c.m);
+        REQUIRE(behaviour::speaks_j1939(c.m));
+        REQUIRE_FALSE(info(c.m)->j1939);  // no 20FFh on their CANopen side
+        const unsigned last = info(c.m)->keys;
+        auto k = j1939_keypad_at(c.m);
+        CHECK(k.state() == run_state::j1939);
+        CHECK(drain(k).empty());  // no boot-up, no address claim (74h off, section 5)
+        CHECK(k.baud() == baud_rate::kbit_250);
+        CHECK(k.j1939().settings() == behaviour::j1939_settings{});
+        CHECK(k.read(object::protocol_j1939) == std::nullopt);  // not in their dictionary
+        // The key contact state (ref 5, inferred layout).
+        k.press(last, millis{10});
+        CHECK(drain(k) == strings{std::string(c.last_key_pressed)});
+        // The LI LED command (ref 6.4, inferred): the code kept as it came, no look; without
+        // 73h no acknowledgement; with it the LI acknowledgement (ref 6.3, page 11).
+        CHECK_FALSE(k.j1939().led_code(3));
+        CHECK(hear(k, "18EF2100#041B010305FFFFFF", {20}).empty());
+        CHECK(k.j1939().led_code(3) == std::optional<std::uint8_t>{0x05});
+        CHECK(k.j1939().led(3) == j1939::led_look{});
+        CHECK(hear(k, "18EF2100#041B7301FFFFFFFF", {30}).empty());
+        CHECK(hear(k, "18EF2100#041B010305FFFFFF", {40}) == strings{"18EFFF21#00FF0305FFFFFFFF"});
+        CHECK(hear(k, "18EF2100#041B0101A7FFFFFF", {45}) == strings{"18EFFF21#00FF01A7FFFFFFFF"});
+        CHECK(k.j1939().led_code(1) == std::optional<std::uint8_t>{0xA7});
+        // The SI form is not an LI keypad's (reserved_not_ff): not heard; nor an LED it lacks.
+        CHECK(hear(k, "18EF2100#041B0102010100FF", {50}).empty());
+        CHECK_FALSE(k.j1939().led_code(2));
+        CHECK(hear(k, c.led_beyond, {55}).empty());
+        // Levels (ref 7: 02h, 03h).
+        CHECK(hear(k, "18EF2100#041B0220FFFFFFFF", {60}).empty());
+        CHECK(hear(k, "18EF2100#041B033FFFFFFFFF", {70}).empty());
+        CHECK(k.j1939().brightness() == lv(0x20));
+        CHECK(k.j1939().backlight_level() == lv(0x3F));
+        // The heartbeat (75h, 100 ms; ref 8: the PKP-2400-LI's byte 5, its key bits).
+        CHECK(hear(k, "18EF2100#041B75010AFFFFFF", {100}).empty());
+        CHECK(at(k, millis{199}).empty());
+        CHECK(at(k, millis{200}) == strings{std::string(c.beat_last_key)});
+        // The switch back is unknown on an LI keypad (the codec: undocumented): ignored.
+        CHECK(
+            j1939::decode(frame_of("18EF2100#041B8000FFFFFFFF"), c.m, std::uint8_t{0x21}).error() ==
+            errc::undocumented);
+        CHECK(hear(k, "18EF2100#041B8000FFFFFFFF", {210}).empty());
+        CHECK(k.state() == run_state::j1939);
+        // 70h (ref 7): it sends from and answers at the new address; the identifier stays.
+        CHECK(hear(k, "18EF2100#041B7030FFFFFFFF", {220}).empty());
+        CHECK(k.j1939().address() == 0x30);
+        k.release(last, millis{230});
+        CHECK(drain(k) == strings{"18EFFF30#041B01" +
+                                  std::string(c.last_key_pressed.substr(15, 2)) + "0021FFFF"});
+        CHECK(hear(k, "18EF2100#041B2AFFFFFFFFFF", {240}).empty());
+        CHECK(hear(k, "18EF3000#041B2AFFFFFFFFFF", {250}) == strings{"18EFFF30#041B2A56322E3130"});
+        // A power cycle: J1939 and the address stored, the LED codes gone with the LEDs.
+        k.power_cycle(millis{1000});
+        CHECK(k.state() == run_state::j1939);
+        CHECK(k.j1939().address() == 0x30);
+        CHECK_FALSE(k.j1939().led_code(1));
+        CHECK(hear(k, "18EF3000#041B010105FFFFFF", {1010}) == strings{"18EFFF30#00FF0105FFFFFFFF"});
+    }
+}
+
+TEST_CASE("J1939 from power-on at any address: keypad_options::j1939_address") {
+    // An SI keypad at 30h: its frames from 30h, commands to 30h its own, to 21h not.
+    auto k = j1939_keypad_at(model::pkp1600si, 0x30);
+    CHECK(k.state() == run_state::j1939);
+    CHECK(drain(k).empty());
+    CHECK(k.j1939().address() == 0x30);
+    CHECK(k.j1939().settings().identifier == 0x21);  // 70h byte 4 keeps its default
+    k.press(1, millis{10});
+    CHECK(drain(k) == strings{"18EFFF30#041B01010121FFFF"});
+    CHECK(hear(k, "18EF2100#041B2AFFFFFFFFFF", {20}).empty());
+    CHECK(hear(k, "18EF3000#041B2AFFFFFFFFFF", {30}) == strings{"18EFFF30#041B2A56322E3130"});
+    CHECK(hear(k, "18EF3000#041B7301FFFFFFFF", {40}).empty());
+    CHECK(hear(k, "18EF3000#041B0101040305FF", {50}) == strings{"18EFFF30#0003010405FFFFFF"});
+    // The switch back goes to its address; in CANopen the address changes nothing.
+    CHECK(hear(k, "18EF2100#041B8000FFFFFFFF", {60}).empty());
+    CHECK(hear(k, "18EF3000#041B8000FFFFFFFF", {70}) == strings{"715#00"});
+    CHECK(k.state() == run_state::pre_operational);
+    // A keypad switched by 20FFh starts at the given address too (it is its stored one).
+    behaviour::keypad_options o{true, 0};
+    o.j1939_address = behaviour::j1939_source_address::make(0xFD).value();
+    virtual_keypad<> s(model::pkp2600si, canopen::default_node_id, o);
+    s.power_on(millis{0});
+    CHECK(drain(s) == strings{"715#00"});
+    powerkey_tests::switch_to_j1939(s, millis{10});
+    s.press(12, millis{20});
+    CHECK(drain(s) == strings{"18EFFFFD#041B010C0121FFFF"});
+    // The address claim from the given address (section 20's NAME).
+    auto c = j1939_keypad_at(model::pkp2400, 0x42);
+    CHECK(hear(c, "18EF4200#041B7401FFFFFFFF", {10}).empty());
+    c.power_cycle(millis{100});
+    CHECK(drain(c) == strings{"18EEFF42#3F426F1A00823CC0"});
+    // The default: 21h; an address 70h refuses is no j1939_source_address.
+    CHECK(behaviour::keypad_options{}.j1939_address.value() == 0x21);
+    CHECK_FALSE(behaviour::j1939_source_address::make(0x00));
+    CHECK_FALSE(behaviour::j1939_source_address::make(0xFE));
+    CHECK(behaviour::j1939_source_address::make(0x01));
+    CHECK(behaviour::j1939_source_address::make(0xFD));
+}
+
+TEST_CASE("J1939 from power-on: every model whose key contact state a source shows") {
+    for (const auto m : enum_values<model>()) {
+        CAPTURE(m);
+        REQUIRE(j1939::row(m)->frames.has(j1939::feature::key_contact));  // every model today
+        CHECK(behaviour::speaks_j1939(m));
+        auto k = j1939_keypad_at(m, 0x22);
+        CHECK(k.state() == run_state::j1939);
+        (void)drain(k);
+        k.press(1, millis{10});
+        CHECK(drain(k) == strings{"18EFFF22#041B01010121FFFF"});
+    }
 }
 
 namespace {

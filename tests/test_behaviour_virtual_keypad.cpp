@@ -2,6 +2,7 @@
 // model by model; one test per behaviour; every model answering every readable object. Its runs
 // against the controller are in test_behaviour_controller.cpp.
 #include "behaviour_support.hpp"
+#include "j1939_rows.hpp"
 #include "pk1000_rows.hpp"
 #include "pkp_rows.hpp"
 #include "support.hpp"
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -1092,6 +1094,56 @@ std::vector<std::string> answers(model m) {
     take(frame_of("615#40FF5F0000000000"));
     return out;
 }
+// The same for a keypad of model M in J1939 from power-on (keypad_options::start_in_j1939): the
+// acknowledgements, the heartbeat and the periodic key state on, every frame of the J1939 rows (the
+// manuals' and the other models', the LI forms among them) for keypad 21h, each key pressed and
+// released, the timers run.
+template <class Keypad>
+std::vector<std::string> j1939_answers(model m) {
+    behaviour::keypad_options o;
+    o.start_in_j1939 = true;
+    virtual_keypad<64, Keypad> k(m, canopen::default_node_id, o);
+    std::vector<std::string> out;
+    millis t{0};
+    const auto drain_to = [&](millis until) {
+        k.advance(until);
+        while (const auto r = k.transmit()) out.emplace_back(text_of(*r));
+    };
+    const auto take = [&](std::string_view f) {
+        k.receive(frame_of(f), t);
+        t = t + duration_ms{3};
+        drain_to(t);
+    };
+    k.power_on(t);
+    take("18EF2100#041B7301FFFFFFFF");
+    take("18EF2100#041B75010AFFFFFF");
+    for (const auto& rows : {std::span<const j1939_rows::row>(j1939_rows::pkp1600si_rows),
+                             std::span<const j1939_rows::row>(j1939_rows::pkp2600si_rows),
+                             std::span<const j1939_rows::row>(j1939_rows::other_rows)})
+        for (const auto& r : rows)
+            // every frame for keypad 21h but 70h, 80h and address claims of 21h, which would
+            // move it, switch it or silence it
+            if (r.keypad == 0x21 && !r.frame.starts_with("18EE") &&
+                r.frame.find("#041B70") == std::string_view::npos &&
+                r.frame.find("#041B80") == std::string_view::npos)
+                take(r.frame);
+    // the rows turned the events and the heartbeat off: on again, and the periodic key state
+    take("18EF2100#041B7201FFFFFFFF");
+    take("18EF2100#041B75010AFFFFFF");
+    take("18EF2100#041B7101FFFFFFFF");
+    take("18EF2100#041B7301FFFFFFFF");
+    take("18EF2100#041B0101010100FF");  // LED 1 red on, SI form
+    take("18EF2100#041B010105FFFFFF");  // LED 1 code 05h, LI form
+    for (unsigned key = 1; key <= info(m)->keys; ++key) {
+        (void)k.press(key, t);
+        t = t + duration_ms{1};
+        (void)k.release(key, t);
+        drain_to(t);
+    }
+    for (unsigned i = 0; i < 100; ++i) drain_to(t = t + duration_ms{10});
+    return out;
+}
+
 template <std::size_t... I>
 void one_model_keypads_agree(std::index_sequence<I...>) {
     (
@@ -1101,6 +1153,9 @@ void one_model_keypads_agree(std::index_sequence<I...>) {
             const auto run_time = answers<any_model>(m);
             CHECK(run_time == answers<model_constant<m>>(m));
             CHECK(run_time.size() > 40);  // it answered
+            const auto j1939_run_time = j1939_answers<any_model>(m);
+            CHECK(j1939_run_time == j1939_answers<model_constant<m>>(m));
+            CHECK(j1939_run_time.size() > 40);  // it answered in J1939
         }(),
         ...);
 }

@@ -129,8 +129,52 @@ for m in pkp1600si pkp2600si; do
   "$pk" decode --model $m "$tmp/out" > "$tmp/text" 2>/dev/null
   grep -q "error:" "$tmp/text" && fail "j1939-$m: decode: $(grep -m3 'error:' "$tmp/text")"
 done
-# A model whose virtual keypad does not speak J1939 (no 20FFh): a usage error.
-sim --model pkp2400 --j1939 < /dev/null > /dev/null 2>&1; [ $? -eq 2 ] || fail "--j1939 pkp2400: exit status not 2"
+# An LI keypad sold as a J1939 one (issue 21), at --address 0x30: its LI frames (docs/j1939.md:
+# the acknowledgement of the PKP-2400-LI J1939 manual page 11, its LED command inferred), from
+# 30h, commands to 21h not its own, and the switch back (80h, unknown on an LI keypad: decode
+# refuses it, undocumented) ignored: no boot-up, the heartbeats go on.
+cat > "$tmp/li-ctl.log" <<'IN'
+(0.000000) can0 18EF3000#041B7301FFFFFFFF
+(0.010000) can0 18EF3000#041B010305FFFFFF
+(0.020000) can0 18EF3000#041B2AFFFFFFFFFF
+(0.030000) can0 18EF3000#041B75010AFFFFFF
+(0.040000) can0 18EF2100#041B2AFFFFFFFFFF
+(0.090000) can0 18EF3000#041B8000FFFFFFFF
+IN
+sim --model pkp2400 --j1939 --address 0x30 --press 0.05:8 --release 0.07:8 --until 0.25 \
+  "$tmp/li-ctl.log" > "$tmp/out" 2> "$tmp/err" || fail "j1939 LI: exit status $?"
+cat > "$tmp/want" <<'OUT'
+(0.010000) can0 18EFFF30#00FF0305FFFFFFFF
+(0.020000) can0 18EFFF30#041B2A56322E3130
+(0.050000) can0 18EFFF30#041B01080121FFFF
+(0.070000) can0 18EFFF30#041B01080021FFFF
+(0.130000) can0 18EFFF30#041BF9000000FF21
+(0.230000) can0 18EFFF30#041BF9010000FF21
+OUT
+diff "$tmp/want" "$tmp/out" || fail "j1939 LI output differs"
+[ -s "$tmp/err" ] && fail "j1939 LI: $(cat "$tmp/err")"
+sort -m "$tmp/li-ctl.log" "$tmp/out" | "$pk" decode --model pkp2400 --address 0x30 > "$tmp/text" 2> "$tmp/err"
+grep -qx "powerkey: summary: 12 frames: 10 decoded, 1 of other nodes or no keypad, 1 refused (undocumented 1)" "$tmp/err" ||
+  fail "j1939 LI decode summary: $(cat "$tmp/err")"
+grep -q "18EFFF30#00FF0305FFFFFFFF .*J1939 LED ack code .*source: 30h  key: 3  code: 05h$" "$tmp/text" ||
+  fail "j1939 LI decode: no LI acknowledgement: $(cat "$tmp/text")"
+# Every model speaks J1939 from power-on (its key contact state documented or inferred): key 1.
+for m in $("$pk" models | awk '{ print $1 }'); do
+  sim --model "$m" --j1939 --address 0x22 --press 0.01:1 --until 0.02 < /dev/null > "$tmp/out" 2> "$tmp/err" ||
+    fail "j1939 $m: exit status $? $(cat "$tmp/err")"
+  [ "$(cat "$tmp/out")" = "(0.010000) can0 18EFFF22#041B01010121FFFF" ] || fail "j1939 $m: $(cat "$tmp/out")"
+done
+# --address: with --j1939 only; 00h is no keypad's (70h's range 01h..FDh), FEh and FFh no one's.
+sim --model pkp1600si --address 0x30 < /dev/null > /dev/null 2> "$tmp/err"; [ $? -eq 2 ] ||
+  fail "--address without --j1939: exit status not 2"
+grep -q "^powerkey: --address: the J1939 address the keypad starts at, with --j1939 only" "$tmp/err" ||
+  fail "--address without --j1939: $(cat "$tmp/err")"
+sim --model pkp2400 --j1939 --address 0 < /dev/null > /dev/null 2> "$tmp/err"; [ $? -eq 2 ] ||
+  fail "--address 0: exit status not 2"
+grep -q "^powerkey: --address: a keypad's J1939 address is 01h..FDh (70h's range), not 00h" "$tmp/err" ||
+  fail "--address 0: $(cat "$tmp/err")"
+sim --model pkp2400 --j1939 --address 0xFE < /dev/null > /dev/null 2>&1; [ $? -eq 2 ] ||
+  fail "--address 0xFE: exit status not 2"
 
 # Usage errors: exit status 2.
 sim > /dev/null 2>&1; [ $? -eq 2 ] || fail "no --model: exit status not 2"

@@ -33,6 +33,9 @@ struct command_spec {
     std::string_view summary;   // one line: what it does
     std::string_view help;      // its own options, one per line ("  --json  ..."), may be empty
     model_use model = model_use::optional;
+    // What --address means to it, when not the common narrowing to one keypad's J1939 frames:
+    // the rest of its usage line after "--address A  " (simulate: where its keypad starts).
+    std::string_view address = {};
 };
 
 class registry {

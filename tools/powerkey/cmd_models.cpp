@@ -1,7 +1,7 @@
 // powerkey models [NAME]: the models --model takes, one per line, from the library's model table:
-// the name, the keys, the object dictionary and whether it speaks J1939. With NAME, the one name
-// of the model NAME stands for (PKP-2400-LI: pkp2400), as --model reads it; scripts use that
-// (scripts/run.sh).
+// the name, the keys, the object dictionary and whether its CANopen side has the J1939 switch
+// (20FFh; every model speaks J1939 in simulate --j1939). With NAME, the one name of the model
+// NAME stands for (PKP-2400-LI: pkp2400), as --model reads it; scripts use that (scripts/run.sh).
 #include "cli.hpp"
 #include "commands.hpp"
 

@@ -1,11 +1,12 @@
-// powerkey simulate --model M [--node N] [--j1939] [--press T:K] [--release T:K] [--until T]
-//                   [FILE...]
+// powerkey simulate --model M [--node N] [--j1939 [--address A]] [--press T:K] [--release T:K]
+//                   [--until T] [FILE...]
 //
 // Runs the virtual keypad (include/powerkey/behaviour/virtual_keypad.hpp) as a filter: reads the
 // frames a controller sends from any log (input.hpp), and writes the frames the keypad sends as
 // candump log lines in time order, starting with its boot-up (docs/cli.md, docs/virtual-keypad.md).
-// With --j1939 the keypad is a J1939 one from power-on (behaviour/j1939_keypad.hpp): no boot-up,
-// its key contact states, heartbeats and answers in J1939.
+// With --j1939 the keypad is a J1939 one from power-on (behaviour/j1939_keypad.hpp), at J1939
+// address A (--address, default 21h): no boot-up, its key contact states, heartbeats and answers
+// in J1939; every model, the PKP LI ones too (sold as J1939 keypads, no switch back).
 //
 // Time: the keypad powers on at the first time of the input (0 when it has none); times are
 // honoured to the millisecond. A frame without a time comes `untimed_step` after the frame
@@ -92,10 +93,25 @@ public:
 int run_simulate(const options& c, const simulate_options& o) {
     std::vector<key_event> keys;
     const auto mi = info(c.keypad).value();
-    if (o.j1939 && !mi.j1939)
+    if (o.j1939 && !behaviour::speaks_j1939(c.keypad))
         return usage_error("--j1939: the virtual " + std::string(to_string(c.keypad)) +
-                           " does not speak J1939 (its CANopen manual has no switch, 20FFh; "
-                           "docs/virtual-keypad.md)");
+                           " does not speak J1939 (no source shows its J1939 key contact state; "
+                           "docs/j1939.md)");
+    // --address is where the keypad starts in J1939: only a keypad in J1939 from power-on has
+    // one to start at (one switched by the log's 20FFh is at 21h, as the manuals' default).
+    if (c.address && !o.j1939)
+        return usage_error(
+            "--address: the J1939 address the keypad starts at, with --j1939 only (without it "
+            "the keypad starts in CANopen; a log's 20FFh switches it to J1939 at 21h)");
+    std::optional<behaviour::j1939_source_address> address;
+    if (c.address) {  // main.cpp refuses FEh and FFh; 00h is the controllers', 70h refuses it
+        const auto a = behaviour::j1939_source_address::make(*c.address);
+        if (!a.has_value())
+            return usage_error(
+                "--address: a keypad's J1939 address is 01h..FDh (70h's range), "
+                "not 00h");
+        address = *a;
+    }
     for (const auto* list : {&o.press, &o.release}) {
         for (const auto& text : *list) {
             const auto colon = text.find(':');
@@ -178,9 +194,12 @@ int run_simulate(const options& c, const simulate_options& o) {
     const std::string iface = in.interface.empty() ? std::string("can0") : in.interface;
     behaviour::keypad_options ko;
     ko.start_in_j1939 = o.j1939;
+    if (address) ko.j1939_address = *address;
     behaviour::virtual_keypad<64> k(c.keypad, c.node, ko);
     // The conversation as a checker sees it, to say which requests the keypad drops.
-    behaviour::checker<> conversation({c.keypad, c.node});
+    behaviour::checker_config cc{.keypad_model = c.keypad, .node = c.node};
+    cc.j1939_address = c.address;
+    behaviour::checker<> conversation(cc);
     const auto where = [&](std::uint32_t index) {
         const auto& f = frames[index - 1];
         return in.labels[f.input] + ":" + std::to_string(f.line);
@@ -258,17 +277,17 @@ int run_simulate(const options& c, const simulate_options& o) {
 
 void add_simulate(registry& r) {
     static simulate_options o;
-    auto& sub =
-        r.add({"simulate",
-               "--model M [--node N] [--j1939] [--press T:K] [--release T:K]\n"
-               "  [--until T] [FILE...]",
-               "a virtual keypad answering a controller's frames (docs/virtual-keypad.md)",
-               "  --j1939      the keypad is in J1939 from power-on (no boot-up)\n"
-               "  --press T:K  press key K at T seconds after power-on (repeatable)\n"
-               "  --release T:K  release key K at T seconds (repeatable)\n"
-               "  --until T    run until T seconds (default: 100 ms after the last input)\n",
-               model_use::required},
-              [&r] { return run_simulate(r.common(), o); });
+    auto& sub = r.add(
+        {"simulate",
+         "--model M [--node N] [--j1939 [--address A]] [--press T:K]\n"
+         "  [--release T:K] [--until T] [FILE...]",
+         "a virtual keypad answering a controller's frames (docs/virtual-keypad.md)",
+         "  --j1939      the keypad is in J1939 from power-on (no boot-up), any model\n"
+         "  --press T:K  press key K at T seconds after power-on (repeatable)\n"
+         "  --release T:K  release key K at T seconds (repeatable)\n"
+         "  --until T    run until T seconds (default: 100 ms after the last input)\n",
+         model_use::required, "with --j1939: the keypad's J1939 address, 01h..FDh (default 21h)"},
+        [&r] { return run_simulate(r.common(), o); });
     sub.add_option("--press", o.press)->allow_extra_args(false);
     sub.add_option("--release", o.release)->allow_extra_args(false);
     sub.add_option("--until", o.until);

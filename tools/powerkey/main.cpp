@@ -36,7 +36,7 @@ std::string wrapped_models(std::size_t indent, std::size_t first_width) {
     return out + line;
 }
 
-std::string common_options_text(model_use use) {
+std::string common_options_text(model_use use, std::string_view address = {}) {
     if (use == model_use::none) return {};
     std::string s = "  --model M    " + wrapped_models(15, 81) +
                     ";\n               in any case, as the manuals write them (PKP-2400-LI, "
@@ -44,7 +44,11 @@ std::string common_options_text(model_use use) {
     if (use == model_use::or_auto) s += "; or auto";
     if (use == model_use::required) s += "; required";
     s += "\n  --node N     the keypad's node id 1..127: 0x15 (default), 15h or 21\n";
-    s += "  --address A  J1939 frames of the keypad at address A only (00h..FDh; default any)\n";
+    s += "  --address A  " +
+         (address.empty()
+              ? std::string("J1939 frames of the keypad at address A only (00h..FDh; default any)")
+              : std::string(address)) +
+         "\n";
     return s;
 }
 
@@ -109,8 +113,9 @@ std::string usage_text(const tool::registry& r) {
 }
 
 std::string command_help(const tool::command_spec& c) {
-    return synopsis(c, true) + std::string(c.summary) + "\n\n" + common_options_text(c.model) +
-           std::string(c.help) + "\n" + std::string(input_text);
+    return synopsis(c, true) + std::string(c.summary) + "\n\n" +
+           common_options_text(c.model, c.address) + std::string(c.help) + "\n" +
+           std::string(input_text);
 }
 
 void print(const std::string& s, std::FILE* to) { std::fwrite(s.data(), 1, s.size(), to); }

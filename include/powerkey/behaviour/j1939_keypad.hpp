@@ -8,11 +8,17 @@
 // source shows on the model is neither heard nor sent. docs/virtual-keypad.md#j1939 lists what it
 // does, section by section, and what is inferred.
 //
+// A keypad sold as a J1939 one starts here at power-on, on every model whose J1939 key contact
+// state a source shows (speaks_j1939): the LI models too, whose CANopen side has no switch; they
+// speak the frames their J1939 row covers, the LED command and acknowledgement in the LI (code)
+// form, and, their 80h unknown to the codec, never switch back.
+//
 // It owns no outbox: each call that may send takes the caller's `send(const can::frame&)`.
 #ifndef POWERKEY_BEHAVIOUR_J1939_KEYPAD_HPP
 #define POWERKEY_BEHAVIOUR_J1939_KEYPAD_HPP
 
 #include <powerkey/behaviour/clock.hpp>
+#include <powerkey/bounded.hpp>
 #include <powerkey/can/frame.hpp>
 #include <powerkey/j1939/id.hpp>
 #include <powerkey/j1939/name.hpp>
@@ -28,6 +34,19 @@
 #include <variant>
 
 namespace powerkey::behaviour {
+
+struct j1939_source_address_tag;
+// An address a keypad may hold, as 70h takes it (section 16): 01h..FDh (FEh is J1939's null
+// address, FFh the global one, and 70h refuses 00h).
+using j1939_source_address = bounded<j1939_source_address_tag, std::uint8_t, 1, 0xFD>;
+
+// A keypad of model m may be a J1939 keypad from power-on (issue 21: every PowerKey keypad is
+// sold in a CANopen and a J1939 version): its J1939 key contact state is documented or inferred
+// (docs/j1939.md), whether or not its CANopen side has the switch (20FFh).
+[[nodiscard]] constexpr bool speaks_j1939(powerkey::model m) noexcept {
+    const auto r = j1939::row(m);
+    return r && r->frames.has(j1939::feature::key_contact);
+}
 
 // The keypad's J1939 settings, at the defaults of section 5. All are stored (the manuals'
 // "changes take effect immediately and are stored in non-volatile memory"): they survive a power
@@ -77,8 +96,14 @@ class j1939_keypad {
 public:
     enum class heard : std::uint8_t { nothing, to_canopen };
 
-    constexpr explicit j1939_keypad(powerkey::model m) noexcept
-        : model_(m), row_(j1939::row(m).value_or(j1939::model_row{})) {}
+    // A keypad of model m whose J1939 address is `address` until a 70h moves it (its
+    // identifier, 70h byte 4, stays 21h).
+    constexpr explicit j1939_keypad(
+        powerkey::model m,
+        j1939_source_address address = j1939_source_address{j1939::keypad_default_address}) noexcept
+        : model_(m), row_(j1939::row(m).value_or(j1939::model_row{})) {
+        settings_.address = address.value();
+    }
 
     // A start in J1939: a power-up with J1939 stored, or the switch from CANopen (then at the
     // J1939 default bit rate). The run-time state starts from the stored defaults (7Bh..7Dh);
@@ -87,6 +112,7 @@ public:
     constexpr void boot(millis t, key_set keys, bool switched, Send&& send) noexcept {
         if (switched) settings_.baud = baud_rate::kbit_250;
         leds_ = {};
+        codes_ = {};
         planes_ = {j1939::multiple_leds{}, j1939::multiple_leds{}};
         brightness_ = settings_.default_brightness;
         backlight_ = settings_.default_backlight;
@@ -123,6 +149,17 @@ public:
                                     .key = l->key,
                                     .colour = l->colour,
                                     .secondary = l->secondary},
+                     send);
+        } else if (const auto* code = std::get_if<j1939::set_led_code>(&*m)) {
+            // The LI form (inferred, docs/j1939.md): the code kept as it came, and repeated in
+            // the LI acknowledgement.
+            if (code->key >= 1 && code->key <= codes_.size()) codes_[code->key - 1u] = code->code;
+            if (settings_.led_ack)
+                emit(j1939::led_ack_code{.source = settings_.address,
+                                         .destination = j1939::global_address,
+                                         .priority = 6,
+                                         .key = code->key,
+                                         .code = code->code},
                      send);
         } else if (const auto* p = std::get_if<j1939::multiple_leds>(&*m)) {
             if (settings_.multiple_leds) set_planes(*p);
@@ -180,6 +217,12 @@ public:
     // the model's LEDs).
     [[nodiscard]] constexpr j1939::led_look led(unsigned k) const noexcept {
         return k >= 1 && k <= leds_.size() ? leds_[k - 1] : j1939::led_look{};
+    }
+    // LED k's code as the last LI LED command (set_led_code) gave it: kept as it came, its table
+    // being in no source (so led(k) stays off); nullopt before one since the start, or outside
+    // the model's LEDs.
+    [[nodiscard]] constexpr std::optional<std::uint8_t> led_code(unsigned k) const noexcept {
+        return k >= 1 && k <= codes_.size() ? codes_[k - 1] : std::nullopt;
     }
     [[nodiscard]] constexpr powerkey::level brightness() const noexcept { return brightness_; }
     [[nodiscard]] constexpr powerkey::level backlight_level() const noexcept { return backlight_; }
@@ -349,6 +392,7 @@ private:
     j1939::model_row row_;
     j1939_settings settings_{};
     std::array<j1939::led_look, 16> leds_{};
+    std::array<std::optional<std::uint8_t>, 16> codes_{};  // the LI form's LED codes
     std::array<j1939::multiple_leds, 2> planes_{};
     powerkey::level brightness_ = 0x3F;
     powerkey::level backlight_ = 0;

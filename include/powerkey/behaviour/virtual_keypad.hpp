@@ -46,7 +46,8 @@ namespace powerkey::behaviour {
 // --- the keypad ---------------------------------------------------------------------------------
 
 // Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
-// switched to J1939 (PK1000 49), where behaviour/j1939_keypad.hpp speaks for it.
+// in J1939, switched (PK1000 49) or a J1939 keypad from power-on (keypad_options), where
+// behaviour/j1939_keypad.hpp speaks for it.
 // clang-format off
 #define POWERKEY_BEHAVIOUR_RUN_STATE_LIST(X) \
     X(off) \
@@ -69,8 +70,13 @@ struct keypad_options {
     // once (and then no request can find the keypad busy).
     std::uint32_t sdo_response_ms = 1;
     // The keypad is a J1939 one: J1939 is its stored protocol (20FFh/1 = 1) from the start, so
-    // power_on() starts it in J1939. Ignored for a model without the switch (the PKP LI models).
+    // power_on() starts it in J1939. Every model whose J1939 key contact state a source shows
+    // (speaks_j1939: all of them today), the PKP LI models too, which have no 20FFh: sold as
+    // J1939 keypads, they start in J1939 and stay there (no 80h, docs/virtual-keypad.md#j1939).
     bool start_in_j1939 = false;
+    // The J1939 address the keypad is at when it first speaks J1939 (from power-on, or switched
+    // by 20FFh), until a 70h moves it; 21h, the manuals' default (section 5), unless given.
+    j1939_source_address j1939_address = j1939_source_address{j1939::keypad_default_address};
 };
 
 // The backlight as the keypad shows it (PK1000 15, 19 b/c; PKP 13 b/c, 30).
@@ -111,11 +117,11 @@ public:
         : model_(model_of(m)),
           info_(fixed ? nullptr : &powerkey::detail::row_of(model_)),
           options_(options),
-          j1939_(model_) {
+          j1939_(model_, options.j1939_address) {
         factory_defaults();
         value_[idx(object::node_id)] = node.value();
         node_ = node;
-        if (options.start_in_j1939 && model_row().j1939) value_[idx(object::protocol_j1939)] = 1;
+        if (options.start_in_j1939 && speaks_j1939(model_)) value_[idx(object::protocol_j1939)] = 1;
     }
 
     // --- power and faults -------------------------------------------------------------------
@@ -412,7 +418,9 @@ private:
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         // keys_ stay: a key held through a reboot is still held
         boot_time_ = t;
-        if (value(object::protocol_j1939) != 0 && model_row().j1939) {
+        // J1939 stored: by 20FFh on a model with the switch, or from the factory on any model
+        // that speaks J1939 (keypad_options::start_in_j1939).
+        if (value(object::protocol_j1939) != 0 && speaks_j1939(model_)) {
             reset_communication(t, run_state::j1939);
             j1939_.boot(t, keys_, false, sink());
             return;
