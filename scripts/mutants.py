@@ -297,7 +297,8 @@ def main():
     survivors, lines = [], []
     with concurrent.futures.ThreadPoolExecutor(jobs) as ex:
         for m, verdict, spent in ex.map(run, chosen):
-            line = f"{'KILLED ' if verdict else 'ALIVE  '} {m.label()}  " \
+            alive = "ALIVE   (marked equivalent)" if m.equivalent else "ALIVE  "
+            line = f"{'KILLED ' if verdict else alive} {m.label()}  " \
                    f"[{verdict or 'no test failed'}, {spent:.0f} s]"
             print(line, flush=True)
             lines.append(line)
@@ -308,22 +309,30 @@ def main():
             if not verdict:
                 survivors.append(m)
 
+    # An equivalent mutant chosen by --only or --survivors is run as a check of its reason: it is
+    # counted apart, and one that a test kills is reported (its reason is wrong).
     equivalent = [m for m in mutants if m.equivalent]
-    killed = len(chosen) - len(survivors)
-    score = 100.0 * killed / len(chosen) if chosen else 100.0
-    summary = (f"score: {killed} of {len(chosen)} non-equivalent mutants killed ({score:.1f} %); "
+    scored = [m for m in chosen if not m.equivalent]
+    survivors_run = [m for m in survivors if not m.equivalent]
+    killed = len(scored) - len(survivors_run)
+    score = 100.0 * killed / len(scored) if scored else 100.0
+    summary = (f"score: {killed} of {len(scored)} non-equivalent mutants killed ({score:.1f} %); "
                f"{len(equivalent)} equivalent")
     print(summary)
-    for m in survivors:
+    for m in survivors_run:
         print(f"SURVIVOR {m.label()}")
+    wrong = [m for m in chosen if m.equivalent and m not in survivors]
+    for m in wrong:
+        print(f"KILLED BUT MARKED EQUIVALENT {m.label()}: {m.equivalent}")
     if not args.only and not args.survivors:
         for m in equivalent:
             print(f"EQUIVALENT {m.label()}: {m.equivalent}")
+    survivors = survivors_run
     saved.write_text(json.dumps({s.name: v for s, v in seconds.items()}))
     kills_file.write_text(json.dumps({f"{h} {s.name}": n for (h, s), n in kills.items()}))
     (OUT / "results.txt").write_text("\n".join(lines + [summary]) + "\n")
     (OUT / "survivors.txt").write_text(" ".join(str(m.number) for m in survivors) + "\n")
-    return 0 if not survivors else 2
+    return 0 if not survivors and not wrong else 2
 
 
 if __name__ == "__main__":
