@@ -40,7 +40,7 @@ struct j1939_source_address_tag;
 // address, FFh the global one, and 70h refuses 00h).
 using j1939_source_address = bounded<j1939_source_address_tag, std::uint8_t, 1, 0xFD>;
 
-// A keypad of model m may be a J1939 keypad from power-on (issue 21: every PowerKey keypad is
+// A keypad of model m may be a J1939 keypad from power-on (every PowerKey keypad is
 // sold in a CANopen and a J1939 version): its J1939 key contact state is documented or inferred
 // (docs/j1939.md), whether or not its CANopen side has the switch (20FFh).
 [[nodiscard]] constexpr bool speaks_j1939(powerkey::model m) noexcept {
