@@ -945,13 +945,23 @@ PYBIND11_MODULE(_powerkey, mod) {
 
     // --- the virtual keypad --------------------------------------------------------------------
     py::class_<keypad_type>(mod, "VirtualKeypad")
-        .def(py::init([](py::handle md, py::handle node, bool drop, py::handle response_ms) {
+        .def(py::init([](py::handle md, py::handle node, bool drop, py::handle response_ms,
+                         bool j1939, py::handle j1939_address) {
+                 const auto address =
+                     pb::j1939_source_address::make(static_cast<std::uint8_t>(int_arg(
+                                                        j1939_address, "j1939_address", 1, 0xFD)))
+                         .value();
                  return new keypad_type(
                      model_from_py(md), node_from_py(node),
-                     pb::keypad_options{drop, duration_arg(response_ms, "sdo_response_ms").value});
+                     pb::keypad_options{
+                         .drop_sdo_while_busy = drop,
+                         .sdo_response_ms = duration_arg(response_ms, "sdo_response_ms").value,
+                         .start_in_j1939 = j1939,
+                         .j1939_address = address});
              }),
              py::kw_only(), py::arg("model"), py::arg("node") = 0x15,
-             py::arg("drop_sdo_while_busy") = true, py::arg("sdo_response_ms") = 1)
+             py::arg("drop_sdo_while_busy") = true, py::arg("sdo_response_ms") = 1,
+             py::arg("start_in_j1939") = false, py::arg("j1939_address") = 0x21)
         .def("power_on", [](keypad_type& k, py::handle t) { k.power_on(millis_arg(t)); })
         .def("power_off", [](keypad_type& k) { k.power_off(); })
         .def("power_cycle", [](keypad_type& k, py::handle t) { k.power_cycle(millis_arg(t)); })

@@ -82,3 +82,21 @@ def test_keypad_alone():
     sent = [powerkey.decode(f, model="pkp2400", node=0x20) for f in k.transmit_all()]
     assert [m.pressed_keys() for m in sent if m.kind == "key_state"] == [[5]]
     assert isinstance(k.read("led_brightness"), int)
+
+
+def test_keypad_sold_as_j1939_at_another_address():
+    # A PKP-2400-LI from power-on in J1939 at 30h (docs/virtual-keypad.md#j1939): its frames are
+    # the J1939 manuals' with the source address 30h, the identifier byte staying 21h.
+    k = powerkey.VirtualKeypad(model="pkp2400", start_in_j1939=True, j1939_address=0x30)
+    k.power_on(0)
+    assert k.state == "j1939"
+    assert k.transmit_all() == []
+    assert k.press(8, 50)
+    sent = k.transmit_all()
+    assert [(f.arbitration_id, f.is_extended_id, bytes(f.data).hex().upper()) for f in sent] == [
+        (0x18EFFF30, True, "041B01080121FFFF")]
+    m = powerkey.decode(sent[0], model="pkp2400", address=0x30)
+    assert m.kind == "j1939_key_contact" and m.pressed_keys() == [8]
+    for bad in (0, 0xFE, 0x100):
+        with pytest.raises(powerkey.ArgumentError):
+            powerkey.VirtualKeypad(model="pkp2400", start_in_j1939=True, j1939_address=bad)
