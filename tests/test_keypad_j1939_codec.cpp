@@ -406,6 +406,19 @@ TEST_CASE("j1939: encode of every other message answers as reading its frame bac
                     l.nibbles[1] = 0;
                     CHECK(encodes_as_by_decode(m, l));
                 }
+                // Each LED's code alone at every value, the others 0h: codes Ah..Eh and a code
+                // past the model's LEDs refused, as the decoder refuses their frame.
+                for (unsigned k = 0; k < 16; ++k)
+                    for (std::uint64_t code = 0; code < 16; ++code) {
+                        CAPTURE(k);
+                        CAPTURE(code);
+                        const multiple_leds l{.source = from,
+                                              .destination = to,
+                                              .priority = 6,
+                                              .frame = 1,
+                                              .nibbles = multiple_leds::halves(code << (4 * k))};
+                        CHECK(encodes_as_by_decode(m, l));
+                    }
             }
         }
         // The commands over four routes (to the keypad, to every address, from the keypad to
