@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The mutation check of include/ (docs/quality.md, "Mutation score"): every mutant of
 # tests/mutants.txt applied on its own to a copy of include/, the doctest files built with g++ -O0
-# in build/mutants/ and run until one kills it. Outside CI: it takes an hour or more on two cores.
+# in build/mutants/ and run until one kills it. Outside CI: about 40 minutes on two cores.
 #   bash scripts/mutants.sh                  every mutant; the score and the survivors
 #   bash scripts/mutants.sh --check          only the stale check (each snippet occurs once)
 #   bash scripts/mutants.sh --survivors      the survivors of the last run again
