@@ -160,6 +160,20 @@ FAULTS = [
         "status": 1,
     },
     {
+        "name": "j1939-address-conflict",
+        "model": "pkp2600si",
+        "what": "a controller that claims the keypad's address 21h (EE00h, section 20) with its own "
+                "NAME after the keypad claimed it",
+        "frames": [
+            (0, "18EEFF21#3F426F1A00823CC0"),
+            (10, "18EEFF21#0200000000010080"),
+        ],
+        "expected": [
+            "2: j1939_address_conflict: J1939 frame 18EEFF21h claims address 21h, which line 1 claimed with another NAME: two devices want one address",
+        ],
+        "status": 1,
+    },
+    {
         "name": "j1939-refused",
         "model": "pkp2600si",
         "what": "J1939 frames to the keypad that the decoder refuses: LED 13 of a 12-key keypad, "
