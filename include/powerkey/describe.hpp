@@ -1,14 +1,6 @@
-// powerkey: a one-line, human-readable description of any message, written into a buffer the
-// caller provides, without allocation and usable at compile time:
-//
-//   node 15h  LED on  red: 1 7  green: -  blue: -
-//
-// The text is generated from the message's kind and fields: the kind with spaces for underscores
-// (led, sdo, nmt, pdo, rgb, j1939 in capitals), then every field as `name: value`. Values: key and
-// LED sets as their numbers (1 7, 1-28, or -), raw bytes in hex, enumerators by name; numbers in
-// hex with h (node ids, COB-IDs, indexes, levels, words: 15h, 0215h, 2003h, 3Fh), except counts
-// and times, which are decimal (tick, period_ms, period_10ms, size, bits, key, subindex, unused,
-// priority, the encoder fields, and every name ending in _ms or _mv).
+// powerkey: a one-line description of any message (`node 15h  LED on  red: 1 7  green: -`),
+// written into the caller's buffer, usable at compile time. The format: docs/decoder.md,
+// "The description writer".
 #ifndef POWERKEY_DESCRIBE_HPP
 #define POWERKEY_DESCRIBE_HPP
 
@@ -26,9 +18,7 @@
 
 namespace powerkey {
 
-// The characters that hold the description of every message of every model (the longest is a
-// J1939 address claim with every NAME field at its widest: 286 at node 7Fh;
-// tests/test_describe.cpp).
+// Holds the description of every message of every model (tests/test_describe.cpp).
 inline constexpr std::size_t description_capacity = 320;
 
 // Appends text to a caller's buffer; remembers when something did not fit.
@@ -102,8 +92,7 @@ constexpr std::string_view decimal_fields[] = {
 
 }  // namespace detail
 
-// Whether describe() writes the numbers of field `name` in decimal (counts and times: the list
-// above, and names ending in _ms or _mv) rather than in hex with h.
+// Whether describe() writes field `name`'s numbers in decimal (counts and times) or in hex with h.
 [[nodiscard]] constexpr bool is_decimal_field(std::string_view name) noexcept {
     for (auto d : detail::decimal_fields)
         if (d == name) return true;
@@ -173,9 +162,8 @@ constexpr void describe_value(text_writer& w, std::string_view name, const T& v)
     detail::put_value(w, name, v);
 }
 
-// Writes the description of m, sent to or by keypad `node`, into `out`. Returns the text (a view
-// of `out`), or errc::buffer_too_small when it does not fit (`out` then holds the beginning).
-// description_capacity characters hold every message of every model.
+// Writes the description of msg, sent to or by keypad `node`, into `out`: a view of `out`, or
+// errc::buffer_too_small (`out` then holds the beginning).
 template <class M>
 [[nodiscard]] constexpr result<std::string_view> describe(const M& msg, canopen::node_id node,
                                                           std::span<char> out) noexcept {

@@ -23,26 +23,20 @@ struct enum_names;
 // An enum and its names from one list of rows X(name) or X(name, value), written once:
 //   #define POWERKEY_ERRC_LIST(X) X(wrong_id_format, 1) X(wrong_id) ...
 //   enum class errc : std::uint8_t { POWERKEY_ERRC_LIST(POWERKEY_DETAIL_ENUMERATOR) };
-//   template <> struct enum_names<errc> {
-//       using value_type = errc;
-//       static constexpr enum_name_entry<errc> entries[] =
-//       {POWERKEY_ERRC_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-//   };
-// An enum whose values have second names lists them after the first (POWERKEY_DETAIL_ENUM_ALIAS).
+//   POWERKEY_DETAIL_ENUM_NAMES(powerkey::errc, POWERKEY_ERRC_LIST);  // at global scope
+// A table with aliases lists them after the first names (POWERKEY_DETAIL_ENUM_ALIAS).
 #define POWERKEY_DETAIL_ENUMERATOR(name, ...) name __VA_OPT__(= __VA_ARGS__),
 #define POWERKEY_DETAIL_ENUM_NAME(name, ...) {value_type::name, #name},
 // A second name for a value, read as well as the first (which is the one written).
 #define POWERKEY_DETAIL_ENUM_ALIAS(name, alias) {value_type::name, alias},
-// The name table of enum E (its qualified name) from its list, at global scope:
-//   POWERKEY_DETAIL_ENUM_NAMES(powerkey::behaviour::run_state, POWERKEY_BEHAVIOUR_RUN_STATE_LIST);
-#define POWERKEY_DETAIL_ENUM_NAMES(E, LIST)                        \
-    template <>                                                    \
-    struct powerkey::enum_names<E> {                               \
-        using value_type = E;                                      \
-        static constexpr enum_name_entry<value_type> entries[] = { \
-            LIST(POWERKEY_DETAIL_ENUM_NAME)};                      \
+// The name table of enum E (its qualified name) from its list, then any aliases:
+//   POWERKEY_DETAIL_ENUM_NAMES(E, LIST, POWERKEY_DETAIL_ENUM_ALIAS(kbit_125, "125k"))
+#define POWERKEY_DETAIL_ENUM_NAMES(E, LIST, ...)                                                  \
+    template <>                                                                                   \
+    struct powerkey::enum_names<E> {                                                              \
+        using value_type = E;                                                                     \
+        static constexpr enum_name_entry<value_type> entries[] = {LIST(POWERKEY_DETAIL_ENUM_NAME) \
+                                                                      __VA_ARGS__};               \
     }
-
-namespace powerkey {}  // namespace powerkey
 
 #endif  // POWERKEY_ENUM_NAMES_HPP

@@ -30,13 +30,8 @@ namespace powerkey {
 // clang-format on
 enum class errc : std::uint8_t { POWERKEY_ERRC_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<errc> {
-    using value_type = errc;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_ERRC_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::errc, POWERKEY_ERRC_LIST);
 
 #endif  // POWERKEY_ERROR_HPP

@@ -1,9 +1,6 @@
-// powerkey: generic access to messages through the kind/fields convention. Every message struct
+// powerkey: generic access to messages through the kind/fields convention (every message struct
 // has `static constexpr std::string_view kind` and `fields(self, f)`, which calls f(name, member)
-// for every field the frame carries. powerkey::message is a std::variant of such structs;
-// visit_message finds the struct inside (through nested variants too, for users' own types). The
-// description writer, the session follower and the command-line tool (JSON both ways) are all
-// written on top of this, so a new message needs no code outside its own header.
+// for each field): docs/decoder.md, "The message type".
 #ifndef POWERKEY_FIELDS_HPP
 #define POWERKEY_FIELDS_HPP
 
@@ -50,10 +47,8 @@ template <class M>
     return visit_message(msg, [](const auto& s) { return std::string_view{s.kind}; });
 }
 
-// A message's kind is its struct's name (a J1939 message's with `j1939_` before it: several share a
-// name with a CANopen message). A reader of text written before the names were made so (the tool's
-// JSON and encode input, Python) maps the former spellings with current_kind; CHANGELOG.md lists
-// them.
+// A message's kind is its struct's name (a J1939 one's with `j1939_` before it); text written
+// before that (JSON, Python) is read through current_kind: docs/decoder.md, "The message type".
 inline constexpr std::string_view former_kinds[][2] = {
     {"nmt", "nmt_message"},
     {"sync", "sync_message"},
@@ -94,23 +89,19 @@ template <class M, class S>
         return true;
     } else if constexpr (detail::is_variant<M>::value) {
         return [&]<class... Ts>(std::type_identity<std::variant<Ts...>>) {
-            bool done = false;
-            (void)((done =
-                        [&] {
-                            if constexpr (std::is_same_v<Ts, S>) {
-                                m = s;
-                                return true;
-                            } else if constexpr (detail::is_variant<Ts>::value) {
-                                Ts inner{};
-                                if (!assign_message(inner, s)) return false;
-                                m = std::move(inner);
-                                return true;
-                            } else {
-                                return false;
-                            }
-                        }()) ||
-                   ...);
-            return done;
+            return ([&] {
+                if constexpr (std::is_same_v<Ts, S>) {
+                    m = s;
+                    return true;
+                } else if constexpr (detail::is_variant<Ts>::value) {
+                    Ts inner{};
+                    if (!assign_message(inner, s)) return false;
+                    m = std::move(inner);
+                    return true;
+                } else {
+                    return false;
+                }
+            }() || ...);
         }(std::type_identity<M>{});
     } else {
         return false;

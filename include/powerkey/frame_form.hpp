@@ -1,7 +1,5 @@
-// powerkey: how a decoded frame was written (docs/decoder.md, "Tolerant and strict reading").
-// Controllers send frames the keypads act on but the manuals do not print: cut after their last
-// used byte, or padded with zeros to eight bytes. The decoder reads them with the meaning of the
-// manual's form and says so in each message's `form`; the strict reading refuses them.
+// powerkey: how a decoded frame was written: in the manual's form, trimmed or padded
+// (docs/decoder.md, "Tolerant and strict reading").
 #ifndef POWERKEY_FRAME_FORM_HPP
 #define POWERKEY_FRAME_FORM_HPP
 
@@ -19,13 +17,6 @@ namespace powerkey {
 // clang-format on
 enum class frame_form : std::uint8_t { POWERKEY_FRAME_FORM_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<frame_form> {
-    using value_type = frame_form;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_FRAME_FORM_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 // How decode reads a frame whose length is not the manual's.
 enum class reading : std::uint8_t {
     tolerant,  // trimmed and padded frames decode, their message's `form` says so (the default)
@@ -33,5 +24,7 @@ enum class reading : std::uint8_t {
 };
 
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::frame_form, POWERKEY_FRAME_FORM_LIST);
 
 #endif  // POWERKEY_FRAME_FORM_HPP

@@ -1,15 +1,6 @@
-// powerkey: names of enumerators, from one table per enum. Each named enum E specialises
-// enum_names<E> with a list of {value, name} pairs (the first pair of a value is its name; any
-// later pair with the same value is an alias that from_string also accepts, such as the PK1000
-// manual's "white_light_blue" for the backlight colour the PKP manual calls "white"):
-//
-//   to_string(backlight_colour::white)            "white"
-//   from_string<backlight_colour>("white_light_blue")   backlight_colour::white
-//   enum_values<backlight_colour>()               every value, in table order, once
-//
-// A value with no name prints as "" (the one spelling for "no such name"), and from_string
-// returns nullopt for text that names nothing. The tables are only odr-used by
-// code that asks for a name, so firmware that never prints keeps none of them (--gc-sections).
+// powerkey: names of enumerators, from one table per enum (enum_names<E>: {value, name} pairs,
+// the first of a value its name, later ones aliases from_string also accepts): to_string,
+// from_string, enum_values. docs/decoder.md, "Names".
 #ifndef POWERKEY_NAMES_HPP
 #define POWERKEY_NAMES_HPP
 
@@ -47,15 +38,19 @@ template <named_enum E>
 }
 
 namespace detail {
+// Whether the value of entry i is already an earlier entry's (an alias).
+template <named_enum E>
+constexpr bool is_alias(std::size_t i) noexcept {
+    const auto& t = enum_names<E>::entries;
+    for (std::size_t j = 0; j < i; ++j)
+        if (t[j].value == t[i].value) return true;
+    return false;
+}
 template <named_enum E>
 constexpr std::size_t distinct_values() noexcept {
     std::size_t count = 0;
-    const auto& t = enum_names<E>::entries;
-    for (std::size_t i = 0; i < std::size(t); ++i) {
-        bool seen = false;
-        for (std::size_t j = 0; j < i; ++j) seen = seen || t[j].value == t[i].value;
-        count += seen ? 0 : 1;
-    }
+    for (std::size_t i = 0; i < std::size(enum_names<E>::entries); ++i)
+        if (!is_alias<E>(i)) ++count;
     return count;
 }
 }  // namespace detail
@@ -65,12 +60,8 @@ template <named_enum E>
 [[nodiscard]] constexpr auto enum_values() noexcept {
     std::array<E, detail::distinct_values<E>()> out{};
     std::size_t k = 0;
-    const auto& t = enum_names<E>::entries;
-    for (std::size_t i = 0; i < std::size(t); ++i) {
-        bool seen = false;
-        for (std::size_t j = 0; j < i; ++j) seen = seen || t[j].value == t[i].value;
-        if (!seen) out[k++] = t[i].value;
-    }
+    for (std::size_t i = 0; i < std::size(enum_names<E>::entries); ++i)
+        if (!detail::is_alias<E>(i)) out[k++] = enum_names<E>::entries[i].value;
     return out;
 }
 

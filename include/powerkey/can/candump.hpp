@@ -1,9 +1,6 @@
-// powerkey: the candump / cansend text form of a frame, both ways, usable at compile time.
-//   615#4000200100000000    standard id: exactly 3 hex digits
-//   18EF2100#041B8000FFFFFFFF  extended id: exactly 8 hex digits
-//   080#                    no data
-// Data are 0..8 bytes of two hex digits each; upper or lower case; no separators, no remote
-// frames (R), no CAN FD (##). Formatting writes upper case, as candump does.
+// powerkey: the candump / cansend text form of a frame (615#4000200100000000, 18EF2100#041B80,
+// 080#: an id of exactly 3 or 8 hex digits, 0..8 data bytes, no R, no ##), both ways, at compile
+// time too. Formatting writes upper case, as candump does.
 #ifndef POWERKEY_CAN_CANDUMP_HPP
 #define POWERKEY_CAN_CANDUMP_HPP
 
@@ -47,15 +44,8 @@ inline void candump_literal_is_malformed() noexcept {}
         if (hi < 0 || lo < 0) return errc::syntax_error;
         p[i] = static_cast<std::uint8_t>((hi << 4) | lo);
     }
-    const auto length = dlc::make(n).value();
-    if (id_text.size() == 3) {
-        const auto sid = standard_id::make(id);
-        if (!sid) return errc::value_out_of_range;
-        return frame(*sid, length, p);
-    }
-    const auto eid = extended_id::make(id);
-    if (!eid) return errc::value_out_of_range;
-    return frame(*eid, length, p);
+    return make_frame(id, std::span(p.data(), n),
+                      id_text.size() == 3 ? id_format::standard : id_format::extended);
 }
 
 // A frame written as a literal in the candump form; malformed text does not compile.

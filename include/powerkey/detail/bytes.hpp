@@ -1,11 +1,6 @@
-// powerkey detail: the one little-endian load and store, by shifts only, so that they work in
-// constant evaluation and do not depend on the host's byte order. Never public API.
-//   load_le<N>(bytes, at)        N bytes from `at`, N known at compile time (1..8)
-//   load_le(bytes, at, width)    the same with a run-time width (0..8): bit maps of any model
-//   store_le<N>(bytes, at, v)    the inverse
-//   low_bits(n)                  the mask of the n low bits of a 64-bit word (n >= 64: all)
-// Written as one expression per width rather than a loop: g++ -O2 merges it into a single load
-// (a byte loop cost ~55 instructions, CHANGELOG.md "How we got here").
+// powerkey detail: the one little-endian load and store (load_le, store_le) and low_bits, by
+// shifts, in constant evaluation too and whatever the host's byte order. Written out per width:
+// g++ -O2 merges them into one load or store (a byte loop cost ~55 instructions).
 #ifndef POWERKEY_DETAIL_BYTES_HPP
 #define POWERKEY_DETAIL_BYTES_HPP
 

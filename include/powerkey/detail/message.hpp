@@ -1,7 +1,5 @@
-// powerkey detail: what every message struct has and takes from its name: its kind, the struct's
-// name (fields.hpp's kind_of; a J1939 keypad message's with `j1939_` before it, as several share a
-// name with a CANopen message), and member-wise equality. Written once here, so a kind can never
-// differ from its struct's name; and the shape of its fields(self, f), written once.
+// powerkey detail: what every message struct takes from its name (its kind, the struct's name,
+// `j1939_` before a J1939 one's; member-wise equality) and the shape of its fields(self, f).
 #ifndef POWERKEY_DETAIL_MESSAGE_HPP
 #define POWERKEY_DETAIL_MESSAGE_HPP
 
