@@ -117,6 +117,19 @@ static_assert([] {
     return true;
 }());
 
+namespace detail {
+// The J1939 kinds are the last, in j1939_fault's order: kind = offset + fault.
+inline constexpr std::size_t j1939_kind_offset =
+    static_cast<std::size_t>(problem_kind::j1939_bad_header);
+constexpr problem_kind j1939_kind(j1939_fault f) noexcept {
+    return static_cast<problem_kind>(j1939_kind_offset + static_cast<std::size_t>(f));
+}
+static_assert(j1939_kind(j1939_fault::multiple_leds_off) == problem_kind::j1939_multiple_leds_off &&
+              j1939_kind(j1939_fault::no_keypad) == problem_kind::j1939_no_keypad &&
+              j1939_kind(j1939_fault::address_conflict) == problem_kind::j1939_address_conflict &&
+              problem_kind_count == j1939_kind_offset + 4);
+}  // namespace detail
+
 [[nodiscard]] constexpr severity severity_of(problem_kind k) noexcept {
     return problem_kinds[static_cast<std::size_t>(k) % problem_kind_count].severity;
 }
@@ -162,8 +175,8 @@ public:
         : cfg_(c),
           session_(make_session(c)),
           j1939_(c.keypad_model, session_.j1939_address()),
-          hb_period_(c.heartbeat_period.value),
-          ks_period_(c.key_state_period.value) {}
+          hb_{c.heartbeat_period.value, std::nullopt, false},
+          ks_{c.key_state_period.value, std::nullopt, false} {}
 
     // One frame of the log, received at `t`, from input line `line`: the problems it shows.
     [[nodiscard]] constexpr std::span<const problem> step(const can::frame& f, millis t,
@@ -259,9 +272,10 @@ private:
         if (before(now_, last_time_)) {
             if (pending_) pending_->sent = now_;
             if (consumer_last_) consumer_last_ = now_;
-            if (hb_last_) hb_last_->time = now_;
-            if (ks_last_) ks_last_->time = now_;
-            j1939_.restart(now_);
+            hb_.restart(now_);
+            ks_.restart(now_);
+            for (const auto t : {j1939_timer::heartbeat, j1939_timer::key_state})
+                j1939_.timer(t).restart(now_);
         }
         last_time_ = now_;
         if (pending_ && elapsed(pending_->sent, now_).value >= cfg_.sdo_timeout.value) {
@@ -269,12 +283,7 @@ private:
                    pending_->address.subindex, elapsed(pending_->sent, now_).value);
             pending_.reset();
         }
-        if (hb_period_ != 0 && hb_last_ && !hb_reported_ &&
-            elapsed(hb_last_->time, now_).value > allowed(hb_period_)) {
-            hb_reported_ = true;
-            report(line_, problem_kind::heartbeat_silence, elapsed(hb_last_->time, now_).value,
-                   hb_period_, hb_last_->line);
-        }
+        silence(hb_, problem_kind::heartbeat_silence, allowed(hb_.period));
         // PK1000 28 note 2: when the heartbeat the keypad consumes (1016h) stops for longer than
         // the consumer time, the keypad turns its LEDs off and goes pre-operational until a new
         // NMT start. Its PDOs are then ignored (pdo_not_operational says so).
@@ -284,21 +293,17 @@ private:
             if (state_ == canopen::nmt_state::operational)
                 set_state(canopen::nmt_state::pre_operational);
         }
-        if (ks_period_ != 0 && ks_last_ && !ks_reported_ &&
-            state_ == canopen::nmt_state::operational &&
-            elapsed(ks_last_->time, now_).value > allowed(ks_period_)) {
-            ks_reported_ = true;
-            report(line_, problem_kind::key_state_silence, elapsed(ks_last_->time, now_).value,
-                   ks_period_, ks_last_->line);
-        }
+        if (state_ == canopen::nmt_state::operational)
+            silence(ks_, problem_kind::key_state_silence, allowed(ks_.period));
         // J1939 (j1939_checks.hpp): the same kinds, from 75h, 71h and 77h.
-        for (const auto t : {j1939_timer::heartbeat, j1939_timer::key_state}) {
-            if (const auto d = j1939_.overdue(t, now_, allowed(j1939_.period(t))))
-                report(line_,
-                       t == j1939_timer::heartbeat ? problem_kind::heartbeat_silence
-                                                   : problem_kind::key_state_silence,
-                       (*d)[0], (*d)[1], (*d)[2]);
-        }
+        auto& jh = j1939_.timer(j1939_timer::heartbeat);
+        silence(jh, problem_kind::heartbeat_silence, allowed(jh.period));
+        auto& jk = j1939_.timer(j1939_timer::key_state);
+        silence(jk, problem_kind::key_state_silence, allowed(jk.period));
+    }
+    // A silence of s longer than `limit` ms: a problem of kind k.
+    constexpr void silence(silence_timer& s, problem_kind k, std::uint32_t limit) noexcept {
+        if (const auto d = s.overdue(now_, limit)) report(line_, k, (*d)[0], (*d)[1], (*d)[2]);
     }
 
     // How the frame was written, and whether the keypad can act on it. A frame of the keypad that
@@ -348,21 +353,12 @@ private:
         else if (r.keypads && e.decoded.error() != errc::wrong_id)  // not another keypad's
             count_refused();
         if (r.finding) {
-            report(line_, j1939_kind(r.finding->fault), r.finding->detail[0], r.finding->detail[1],
-                   r.finding->detail[2]);
+            report(line_, detail::j1939_kind(r.finding->fault), r.finding->detail[0],
+                   r.finding->detail[1], r.finding->detail[2]);
         } else if (r.to_keypad && !e.decoded && e.decoded.error() != errc::wrong_id) {
             report(line_, problem_kind::refused_frame,
                    static_cast<std::uint32_t>(e.decoded.error()), f.raw_id(), f.size());
         }
-    }
-    static constexpr problem_kind j1939_kind(j1939_fault k) noexcept {
-        switch (k) {
-            case j1939_fault::bad_header: return problem_kind::j1939_bad_header;
-            case j1939_fault::multiple_leds_off: return problem_kind::j1939_multiple_leds_off;
-            case j1939_fault::no_keypad: return problem_kind::j1939_no_keypad;
-            case j1939_fault::address_conflict: break;
-        }
-        return problem_kind::j1939_address_conflict;
     }
 
     // A host frame to the node id the keypad left (PK1000 23, PKP 13 h): nobody answers it.
@@ -454,7 +450,7 @@ private:
 
     constexpr void set_state(canopen::nmt_state s) noexcept {
         if (state_ != s) pdo_reported_ = false;
-        if (s != canopen::nmt_state::operational) ks_last_.reset();
+        if (s != canopen::nmt_state::operational) ks_.last.reset();
         state_ = s;
     }
 
@@ -479,18 +475,17 @@ private:
                                   : canopen::nmt_state::pre_operational);
                 pending_.reset();
                 segmented_ = false;
-                hb_last_.reset();
+                hb_.last.reset();
+                hb_.reported = false;
             } else {
                 set_state(h->state);
-                hb_last_ = seen{now_, line_};
+                hb_.heard(now_, line_);
             }
-            hb_reported_ = false;
             return;
         }
         if (std::holds_alternative<key_state>(msg)) {
             set_state(canopen::nmt_state::operational);  // it sends key states only then
-            ks_last_ = seen{now_, line_};
-            ks_reported_ = false;
+            ks_.heard(now_, line_);
             return;
         }
         if (std::holds_alternative<led_on>(msg) || std::holds_alternative<led_blink>(msg) ||
@@ -505,11 +500,11 @@ private:
         // The settings the checker follows, from the host's writes.
         if (const auto* w = std::get_if<sdo_write>(&msg)) {
             if (w->object == object::heartbeat_time) {
-                hb_period_ = w->value.raw;
-                hb_reported_ = false;
+                hb_.period = w->value.raw;
+                hb_.reported = false;
             } else if (w->object == object::tpdo1_event_timer) {
-                ks_period_ = w->value.raw;
-                ks_reported_ = false;
+                ks_.period = w->value.raw;
+                ks_.reported = false;
             } else if (w->object == object::active_on_startup) {
                 active_ = w->value.raw != 0;
             } else if (w->object == object::consumer_heartbeat) {
@@ -519,8 +514,8 @@ private:
             }
         } else if (const auto* k = std::get_if<command>(&msg)) {
             if (k->code == command_code::set_periodic_transmission) {
-                ks_period_ = k->enabled ? 10u * k->period_10ms : 0u;
-                ks_reported_ = false;
+                ks_.period = k->enabled ? 10u * k->period_10ms : 0u;
+                ks_.reported = false;
             } else if (k->code == command_code::set_active_on_startup) {
                 active_ = k->enabled;
             }
@@ -532,11 +527,6 @@ private:
         millis sent;
         canopen::sdo_address address;
     };
-    struct seen {
-        millis time;
-        std::uint32_t line;
-    };
-
     checker_config cfg_;
     session<TextCapacity> session_;
     j1939_checks j1939_;
@@ -552,15 +542,11 @@ private:
     bool active_ = false;
     bool pdo_reported_ = false;
     std::optional<canopen::node_id> old_;
-    std::uint32_t hb_period_ = 0;
-    std::optional<seen> hb_last_;
-    bool hb_reported_ = false;
+    silence_timer hb_;                   // the CANopen heartbeat (1017h)
     std::uint32_t consumer_period_ = 0;  // 1016h sub 1: the heartbeat the keypad consumes
     std::uint8_t consumer_producer_ = 0;
     std::optional<millis> consumer_last_;
-    std::uint32_t ks_period_ = 0;
-    std::optional<seen> ks_last_;
-    bool ks_reported_ = false;
+    silence_timer ks_;  // the key state (PK1000 1800h sub 5, PKP command 12h)
     std::uint32_t keypad_frames_ = 0;
     std::uint32_t refused_ = 0;
     std::uint32_t first_refused_line_ = 0;
@@ -632,19 +618,11 @@ constexpr void put_field(text_writer& w, std::string_view f,
 
 // The explanation of p, one sentence without the line number (the caller prints that first).
 constexpr void explain(const problem& p, text_writer& w) noexcept {
-    switch (p.kind) {
-        case problem_kind::j1939_bad_header:
-            return explain_j1939(j1939_fault::bad_header, p.detail, w);
-        case problem_kind::j1939_multiple_leds_off:
-            return explain_j1939(j1939_fault::multiple_leds_off, p.detail, w);
-        case problem_kind::j1939_no_keypad:
-            return explain_j1939(j1939_fault::no_keypad, p.detail, w);
-        case problem_kind::j1939_address_conflict:
-            return explain_j1939(j1939_fault::address_conflict, p.detail, w);
-        default: break;
-    }
-    if (static_cast<std::size_t>(p.kind) >= problem_kind_count) return;
-    const std::string_view text = detail::explanations[static_cast<std::size_t>(p.kind)];
+    const auto k = static_cast<std::size_t>(p.kind);
+    if (k >= problem_kind_count) return;
+    if (k >= detail::j1939_kind_offset)
+        return explain_j1939(static_cast<j1939_fault>(k - detail::j1939_kind_offset), p.detail, w);
+    const std::string_view text = detail::explanations[k];
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (text[i] != '{') {
             w.put(text[i]);

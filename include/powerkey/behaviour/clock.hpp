@@ -50,6 +50,37 @@ struct duration_ms {
     return after.value != 0 && elapsed(since, now).value > after.value;
 }
 
+// A peer's periodic frame as a checker times it: its period in ms (0: not judged), the last one
+// heard (none before the first) and whether the present silence was said.
+struct silence_timer {
+    struct seen {
+        millis time;
+        std::uint32_t line;
+    };
+    std::uint32_t period = 0;
+    std::optional<seen> last;
+    bool reported = false;
+
+    // The silence at `now` when longer than `allowed` ms and not said yet (said then, once per
+    // silence): {ms silent, the period, line of the last frame}.
+    [[nodiscard]] constexpr std::optional<std::array<std::uint32_t, 3>> overdue(
+        millis now, std::uint32_t allowed) noexcept {
+        if (period == 0 || !last || reported || elapsed(last->time, now).value <= allowed)
+            return std::nullopt;
+        reported = true;
+        return std::array<std::uint32_t, 3>{elapsed(last->time, now).value, period, last->line};
+    }
+    // A periodic frame at `t`, from input line `line`.
+    constexpr void heard(millis t, std::uint32_t line) noexcept {
+        last = seen{t, line};
+        reported = false;
+    }
+    // A time before the last one (two logs in a row): the silence counts from `now`.
+    constexpr void restart(millis now) noexcept {
+        if (last) last->time = now;
+    }
+};
+
 // A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
 // false) and counts the item in dropped(), so a caller that drains too slowly sees it.
 template <class T, std::size_t N>
