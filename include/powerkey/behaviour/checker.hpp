@@ -1,16 +1,6 @@
-// powerkey: a bus-log checker. It follows one keypad through a log with the session follower
-// (session.hpp: decoding for the current node id, SDO pairing, node changes, segmented uploads)
-// and reports what the host did that the keypad will not do as asked, or what the keypad did
-// that breaks its promises, each with the input line it happened on:
-//
-//   checker<> c({model::pkp2400, canopen::node_id{0x15}});
-//   for (const auto& [frame, time, line] : log)
-//       for (const problem& p : c.step(frame, time, line)) print(p);
-//   for (const problem& p : c.finish()) print(p);
-//   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
-//
-// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST; docs/checker.md gives the manual
-// behaviour each comes from. No heap, no I/O: problems are small structs, explain() writes text.
+// powerkey: a bus-log checker: it follows one keypad through a log (session.hpp) and reports what
+// the host or the keypad did that breaks the keypad's behaviour, each with its input line
+// (docs/checker.md: each kind, with the manual behaviour it comes from).
 #ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
 
@@ -147,16 +137,14 @@ struct problem {
 struct checker_config {
     model keypad_model = model::pk1000;
     canopen::node_id node = canopen::default_node_id;
-    // A request unanswered this long is sdo_no_reply, and a request after it is no overlap. The
-    // keypads answer within a few ms; 200 ms is below the controller's 300 ms retry.
+    // A request unanswered this long is sdo_no_reply (docs/checker.md, "The checker").
     duration_ms sdo_timeout{200};
     // Silence allowed beyond a configured period, in percent of it (50: 1.5 periods).
     std::uint32_t tolerance_percent = 50;
     // Periods in force before the log starts (0: not known; the log's own writes set them).
     duration_ms heartbeat_period{0};  // 1017h
     duration_ms key_state_period{0};  // PK1000 1800h sub 5, PKP command 12h
-    // The keypad's J1939 address: its frames only (session::narrow_j1939), or nullopt for any
-    // keypad's, the followed one at 21h (the default) until a 70h or an address claim moves it.
+    // The keypad's J1939 address (session::narrow_j1939), or nullopt for any (docs/checker.md).
     j1939::keypad_address j1939_address = std::nullopt;
 };
 
@@ -284,9 +272,7 @@ private:
             pending_.reset();
         }
         silence(hb_, problem_kind::heartbeat_silence, allowed(hb_.period));
-        // PK1000 28 note 2: when the heartbeat the keypad consumes (1016h) stops for longer than
-        // the consumer time, the keypad turns its LEDs off and goes pre-operational until a new
-        // NMT start. Its PDOs are then ignored (pdo_not_operational says so).
+        // PK1000 28 note 2: the heartbeat the keypad consumes (1016h) stopped: pre-operational.
         if (consumer_period_ != 0 && consumer_last_ &&
             elapsed(*consumer_last_, now_).value > consumer_period_) {
             consumer_last_.reset();
@@ -306,13 +292,8 @@ private:
         if (const auto d = s.overdue(now_, limit)) report(line_, k, (*d)[0], (*d)[1], (*d)[2]);
     }
 
-    // How the frame was written, and whether the keypad can act on it. A frame of the keypad that
-    // decode refuses counts towards wrong_model; one to the keypad (NMT, its SDO requests and
-    // RPDOs) is also refused_frame, with decode's reason: the keypad ignores it (or aborts it; a
-    // request still waits for its reply: session.hpp reads it zero-filled). Not a SYNC with data:
-    // CiA 301 allows a counter byte there, which the keypads' manuals do not show (decode refuses
-    // it) but no keypad is known to mind. A frame decode reads as trimmed or padded is
-    // not_manual_form.
+    // How the frame was written, and whether the keypad can act on it: refused_frame (not a SYNC
+    // with data), wrong_model's count, not_manual_form (docs/checker.md, the table).
     constexpr void form(const can::frame& f, const session_event& e) noexcept {
         if (e.decoded) {
             ++keypad_frames_;
@@ -342,9 +323,7 @@ private:
         if (refused_++ == 0) first_refused_line_ = line_;
     }
 
-    // A 29-bit frame (j1939_checks.hpp): a keypad's frame counts as the CANopen ones do; one to
-    // the keypad that decode refuses is refused_frame, unless it is a J1939 fault of its own.
-    // J1939 frames always have 8 bytes: none is trimmed or padded.
+    // A 29-bit frame (j1939_checks.hpp; docs/checker.md, "J1939").
     constexpr void j1939(const can::frame& f, const session_event& e,
                          std::uint8_t address) noexcept {
         const auto r = j1939_.step(f, e, address, session_.j1939_address(), line_, now_);
