@@ -12,9 +12,8 @@
 
 namespace powerkey::behaviour {
 
-// A point in time in milliseconds from a free-running 32-bit counter (a firmware tick, or the
-// candump timestamp in ms). The counter wraps after 49.7 days: compare points with before() /
-// elapsed(), which are right across the wrap as long as the two points are < 2^31 ms apart.
+// A point in time in milliseconds from a free-running 32-bit counter that wraps: compare points
+// with before() / elapsed() (docs/controller.md, "Time and outboxes").
 struct millis {
     std::uint32_t value = 0;
     friend constexpr bool operator==(millis, millis) noexcept = default;
@@ -81,8 +80,8 @@ struct silence_timer {
     }
 };
 
-// A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
-// false) and counts the item in dropped(), so a caller that drains too slowly sees it.
+// A fixed-capacity FIFO (outboxes, event queues): push() on a full queue refuses (returns false)
+// and counts the item in dropped().
 template <class T, std::size_t N>
 class fixed_queue {
     static_assert(N > 0, "a fixed_queue holds at least one item");

@@ -550,11 +550,8 @@ private:
             return;
         }
         if (boot) {  // it rebooted (power, reset, node change): everything again
-            if (awaiting_boot_from_new_) {
-                awaiting_boot_from_new_ = false;
-            } else {
-                emit(event_kind::rebooted);
-            }
+            if (!awaiting_boot_from_new_) emit(event_kind::rebooted);
+            awaiting_boot_from_new_ = false;
             release_all();
             begin_setup(false);
             return;
@@ -824,13 +821,10 @@ private:
     constexpr bool begin_node_change() noexcept {
         const auto n = *pending_node_change_;
         pending_node_change_.reset();
-        bool started = false;
-        if (keypad().dictionary == dictionary::pkp_li) {
-            started = begin_command<command_code::set_node_id>(n, sdo_origin::node_change);
-        } else {
-            started = begin_write<object::node_id>(n, sdo_origin::node_change);
-        }
-        if (!started) return false;
+        if (!(keypad().dictionary == dictionary::pkp_li
+                  ? begin_command<command_code::set_node_id>(n, sdo_origin::node_change)
+                  : begin_write<object::node_id>(n, sdo_origin::node_change)))
+            return false;
         job_->new_node = n;
         if (replies_from_new_id()) job_->reply_node = n;  // PK1000 23
         return true;
@@ -846,8 +840,7 @@ private:
         dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
         return mine;
     }
-    // Whether the model's dictionary has object O (a constant for a model_constant), and an
-    // object's address.
+    // Whether the model's dictionary has object O (a constant for a model_constant); o's address.
     template <object O>
     constexpr bool has() const noexcept {
         if constexpr (fixed) {
@@ -867,8 +860,7 @@ private:
         return keypad().backlight_pdo && keypad().backlight_colour;
     }
 
-    // Starts a configuration entry's SDO request; false when the model cannot carry it (reported,
-    // nothing sent) or it is no SDO request (skipped).
+    // Starts a configuration entry's request; false when refused (reported) or skipped.
     constexpr bool begin_job(const entry& e, sdo_origin origin, std::uint16_t step) noexcept {
         if constexpr (fixed) {
             if (e.skipped()) return false;
@@ -917,8 +909,7 @@ private:
         return powerkey::detail::own_frame(keypad(), node_, Make(v));
     }
 
-    // Starts an SDO request of object `what` with its frame f (or the error that refuses it:
-    // reported, nothing sent).
+    // Starts an SDO request of object `what` with its frame f, or reports the error in f.
     constexpr bool begin_request(const result<can::frame>& f, object what, bool read,
                                  sdo_origin origin, std::uint16_t step) noexcept {
         // Built in place (no request is in flight here): a copy on the stack cost firmware (c)'s
@@ -987,8 +978,7 @@ private:
     }
     constexpr bool send_frame(const can::frame& f) noexcept { return outbox_.push(f); }
 
-    // The model's layout (the codec's part of its row) and dictionary lookups: M's alone for a
-    // model_constant, every model's for any_model.
+    // The model's layout (the codec's part of its row): M's alone for a model_constant.
     constexpr const auto& keypad() const noexcept {
         if constexpr (fixed)
             return powerkey::detail::fixed_layout_v<Keypad::value>;
@@ -1031,8 +1021,7 @@ private:
             return powerkey::pressed_keys(*m);  // TPDO1 decodes as a key state or not at all
         }
     }
-    // Every message it sends checks its own fields (encode's own checks): no decoder is needed
-    // to build them.
+    // Every message it sends checks its own fields (encode's own checks): no decoder needed.
     template <class T>
     constexpr result<can::frame> frame_of(const T& msg) const noexcept {
         if (!fixed && !powerkey::detail::is_model(model_)) return errc::value_out_of_range;
