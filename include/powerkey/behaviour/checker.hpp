@@ -217,8 +217,7 @@ public:
     [[nodiscard]] constexpr std::uint32_t count(problem_kind k) const noexcept {
         return counts_[static_cast<std::size_t>(k) % problem_kind_count];
     }
-    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and its J1939
-    // frames), and how many of them the decoder refused.
+    // The frames of the keypad seen, and how many of them the decoder refused (docs/checker.md).
     [[nodiscard]] constexpr std::uint32_t keypad_frames() const noexcept { return keypad_frames_; }
     [[nodiscard]] constexpr std::uint32_t refused_frames() const noexcept { return refused_; }
 
@@ -349,8 +348,7 @@ private:
             report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
-    // The SDO frames as the session read them (e.sdo_frame: what each is and its object; the
-    // segment's toggle and the abort's code from what decode returned).
+    // The SDO frames as the session read them (e.sdo_frame), with what decode returned.
     constexpr void on_request(const session_event& e) noexcept {
         if (!e.sdo_frame) return;
         const auto op = e.sdo_frame->op;

@@ -127,8 +127,7 @@ enum class controller_state : std::uint8_t {
     POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
-// The most events one call (step() or tick()) reports for a keypad with `keys` keys
-// (docs/controller.md, "Events").
+// The most events one call reports for a keypad with `keys` keys (docs/controller.md, "Events").
 [[nodiscard]] constexpr std::size_t events_per_call(std::size_t keys) noexcept {
     return 2 * keys + 13;
 }
@@ -140,8 +139,7 @@ inline constexpr std::size_t default_event_capacity = events_per_call(key_set::m
 inline constexpr std::size_t max_configuration = 65535;
 
 // An entry of the configuration list of a controller of model_constant<M>: a request checked and
-// built for M when the entry is made (docs/controller.md, "One model, known when the program is
-// built").
+// built for M when the entry is made (docs/controller.md, "One model").
 template <model M>
 class configuration_entry {
 public:
@@ -194,8 +192,7 @@ private:
 
 namespace detail {
 
-// The controller's own requests as functions of one value: the SDO read of O, the write of O, and
-// command C.
+// The controller's own requests as functions of one value: the read of O, write of O, command C.
 template <object O>
 constexpr sdo_read read_of(std::monostate) noexcept {
     return sdo_read{O};

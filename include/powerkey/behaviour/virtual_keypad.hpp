@@ -52,11 +52,9 @@ struct keypad_options {
     // Drop an SDO request that arrives while it still answers another (issue 12: field logs); off,
     // the later request is answered after the earlier one.
     bool drop_sdo_while_busy = true;
-    // How long the keypad takes to answer an SDO request, in ms (inferred); 0 answers at once
-    // (and then no request can find the keypad busy).
+    // How long the keypad takes to answer an SDO request, in ms (inferred); 0: at once.
     std::uint32_t sdo_response_ms = 1;
-    // A J1939 keypad: power_on() starts it in J1939, on every model that speaks_j1939
-    // (docs/virtual-keypad.md, "J1939").
+    // A J1939 keypad from power-on, on every model that speaks_j1939 (docs/virtual-keypad.md).
     bool start_in_j1939 = false;
     // The J1939 address it first speaks J1939 at, until a 70h moves it (21h: section 5).
     j1939_source_address j1939_address = j1939_source_address{j1939::keypad_default_address};
@@ -170,9 +168,8 @@ public:
         if (state_ == run_state::j1939) j1939_.advance(t, keys_, sink());
         if (state_ == run_state::off || state_ == run_state::j1939) return;
         release_reply(t);
-        // heartbeat producer (PK1000 29, PKP 9/17): every heartbeat_time ms, the NMT state
+        // heartbeat producer (PK1000 29, PKP 9/17); a caller that wakes late gets one heartbeat
         const std::uint32_t hb = value(object::heartbeat_time);
-        // A caller that wakes late gets one heartbeat, not every missed one.
         if (hb != 0 && reached(next_heartbeat_, t)) {
             send_heartbeat(nmt_byte());
             next_heartbeat_ = next_heartbeat_ + duration_ms{hb};
@@ -213,8 +210,7 @@ public:
         return due;
     }
 
-    // Scripted keys: press or release key k (1..the model's keys) at t; false for a key the
-    // model lacks.
+    // Scripted keys: key k (1..the model's keys) at t; false for a key the model lacks.
     constexpr bool press(unsigned k, millis t) noexcept { return set_key(k, true, t); }
     constexpr bool release(unsigned k, millis t) noexcept { return set_key(k, false, t); }
     constexpr bool set_key(unsigned k, bool pressed, millis t) noexcept {
@@ -642,8 +638,7 @@ private:
         reply(sdo_payload(0x60, a), t, then);
     }
 
-    // Checks a written value against its row as the codec does (value_kinds.hpp) and applies it;
-    // the abort code when refused.
+    // Checks a written value as the codec does (value_kinds.hpp), applies it; the abort, if any.
     using refusal = std::optional<canopen::sdo_abort_code>;
     constexpr refusal check_and_apply(const object_row& r, const can::frame& f, std::uint32_t v,
                                       after_reply& then, millis t) noexcept {
