@@ -137,7 +137,7 @@ struct problem {
 struct checker_config {
     model keypad_model = model::pk1000;
     canopen::node_id node = canopen::default_node_id;
-    // A request unanswered this long is sdo_no_reply (docs/checker.md, "The checker").
+    // Unanswered this long, a request is sdo_no_reply, and one after it no overlap (checker.md).
     duration_ms sdo_timeout{200};
     // Silence allowed beyond a configured period, in percent of it (50: 1.5 periods).
     std::uint32_t tolerance_percent = 50;
