@@ -1,16 +1,6 @@
-// powerkey: a bus-log checker. It follows one keypad through a log with the session follower
-// (session.hpp: decoding for the current node id, SDO pairing, node changes, segmented uploads)
-// and reports what the host did that the keypad will not do as asked, or what the keypad did
-// that breaks its promises, each with the input line it happened on:
-//
-//   checker<> c({model::pkp2400, canopen::node_id{0x15}});
-//   for (const auto& [frame, time, line] : log)
-//       for (const problem& p : c.step(frame, time, line)) print(p);
-//   for (const problem& p : c.finish()) print(p);
-//   ...  explain(p, buffer) -> "SDO request 1017h/0 sent while 2003h/1 (line 12) is unanswered ..."
-//
-// Each kind is a row of POWERKEY_BEHAVIOUR_PROBLEM_KIND_LIST; docs/checker.md gives the manual
-// behaviour each comes from. No heap, no I/O: problems are small structs, explain() writes text.
+// powerkey: a bus-log checker: it follows one keypad through a log (session.hpp) and reports what
+// the host or the keypad did that breaks the keypad's behaviour, each with its input line
+// (docs/checker.md: each kind, with the manual behaviour it comes from).
 #ifndef POWERKEY_BEHAVIOUR_CHECKER_HPP
 #define POWERKEY_BEHAVIOUR_CHECKER_HPP
 
@@ -117,6 +107,19 @@ static_assert([] {
     return true;
 }());
 
+namespace detail {
+// The J1939 kinds are the last, in j1939_fault's order: kind = offset + fault.
+inline constexpr std::size_t j1939_kind_offset =
+    static_cast<std::size_t>(problem_kind::j1939_bad_header);
+constexpr problem_kind j1939_kind(j1939_fault f) noexcept {
+    return static_cast<problem_kind>(j1939_kind_offset + static_cast<std::size_t>(f));
+}
+static_assert(j1939_kind(j1939_fault::multiple_leds_off) == problem_kind::j1939_multiple_leds_off &&
+              j1939_kind(j1939_fault::no_keypad) == problem_kind::j1939_no_keypad &&
+              j1939_kind(j1939_fault::address_conflict) == problem_kind::j1939_address_conflict &&
+              problem_kind_count == j1939_kind_offset + 4);
+}  // namespace detail
+
 [[nodiscard]] constexpr severity severity_of(problem_kind k) noexcept {
     return problem_kinds[static_cast<std::size_t>(k) % problem_kind_count].severity;
 }
@@ -134,16 +137,14 @@ struct problem {
 struct checker_config {
     model keypad_model = model::pk1000;
     canopen::node_id node = canopen::default_node_id;
-    // A request unanswered this long is sdo_no_reply, and a request after it is no overlap. The
-    // keypads answer within a few ms; 200 ms is below the controller's 300 ms retry.
+    // Unanswered this long, a request is sdo_no_reply, and one after it no overlap (checker.md).
     duration_ms sdo_timeout{200};
     // Silence allowed beyond a configured period, in percent of it (50: 1.5 periods).
     std::uint32_t tolerance_percent = 50;
     // Periods in force before the log starts (0: not known; the log's own writes set them).
     duration_ms heartbeat_period{0};  // 1017h
     duration_ms key_state_period{0};  // PK1000 1800h sub 5, PKP command 12h
-    // The keypad's J1939 address: its frames only (session::narrow_j1939), or nullopt for any
-    // keypad's, the followed one at 21h (the default) until a 70h or an address claim moves it.
+    // The keypad's J1939 address (session::narrow_j1939), or nullopt for any (docs/checker.md).
     j1939::keypad_address j1939_address = std::nullopt;
 };
 
@@ -162,8 +163,8 @@ public:
         : cfg_(c),
           session_(make_session(c)),
           j1939_(c.keypad_model, session_.j1939_address()),
-          hb_period_(c.heartbeat_period.value),
-          ks_period_(c.key_state_period.value) {}
+          hb_{c.heartbeat_period.value, std::nullopt, false},
+          ks_{c.key_state_period.value, std::nullopt, false} {}
 
     // One frame of the log, received at `t`, from input line `line`: the problems it shows.
     [[nodiscard]] constexpr std::span<const problem> step(const can::frame& f, millis t,
@@ -216,8 +217,7 @@ public:
     [[nodiscard]] constexpr std::uint32_t count(problem_kind k) const noexcept {
         return counts_[static_cast<std::size_t>(k) % problem_kind_count];
     }
-    // The frames of the keypad seen (decoded or refused: its own COB-IDs, NMT, SYNC and its J1939
-    // frames), and how many of them the decoder refused.
+    // The frames of the keypad seen, and how many of them the decoder refused (docs/checker.md).
     [[nodiscard]] constexpr std::uint32_t keypad_frames() const noexcept { return keypad_frames_; }
     [[nodiscard]] constexpr std::uint32_t refused_frames() const noexcept { return refused_; }
 
@@ -259,9 +259,10 @@ private:
         if (before(now_, last_time_)) {
             if (pending_) pending_->sent = now_;
             if (consumer_last_) consumer_last_ = now_;
-            if (hb_last_) hb_last_->time = now_;
-            if (ks_last_) ks_last_->time = now_;
-            j1939_.restart(now_);
+            hb_.restart(now_);
+            ks_.restart(now_);
+            for (const auto t : {j1939_timer::heartbeat, j1939_timer::key_state})
+                j1939_.timer(t).restart(now_);
         }
         last_time_ = now_;
         if (pending_ && elapsed(pending_->sent, now_).value >= cfg_.sdo_timeout.value) {
@@ -269,45 +270,29 @@ private:
                    pending_->address.subindex, elapsed(pending_->sent, now_).value);
             pending_.reset();
         }
-        if (hb_period_ != 0 && hb_last_ && !hb_reported_ &&
-            elapsed(hb_last_->time, now_).value > allowed(hb_period_)) {
-            hb_reported_ = true;
-            report(line_, problem_kind::heartbeat_silence, elapsed(hb_last_->time, now_).value,
-                   hb_period_, hb_last_->line);
-        }
-        // PK1000 28 note 2: when the heartbeat the keypad consumes (1016h) stops for longer than
-        // the consumer time, the keypad turns its LEDs off and goes pre-operational until a new
-        // NMT start. Its PDOs are then ignored (pdo_not_operational says so).
+        silence(hb_, problem_kind::heartbeat_silence, allowed(hb_.period));
+        // PK1000 28 note 2: the heartbeat the keypad consumes (1016h) stopped: pre-operational.
         if (consumer_period_ != 0 && consumer_last_ &&
             elapsed(*consumer_last_, now_).value > consumer_period_) {
             consumer_last_.reset();
             if (state_ == canopen::nmt_state::operational)
                 set_state(canopen::nmt_state::pre_operational);
         }
-        if (ks_period_ != 0 && ks_last_ && !ks_reported_ &&
-            state_ == canopen::nmt_state::operational &&
-            elapsed(ks_last_->time, now_).value > allowed(ks_period_)) {
-            ks_reported_ = true;
-            report(line_, problem_kind::key_state_silence, elapsed(ks_last_->time, now_).value,
-                   ks_period_, ks_last_->line);
-        }
+        if (state_ == canopen::nmt_state::operational)
+            silence(ks_, problem_kind::key_state_silence, allowed(ks_.period));
         // J1939 (j1939_checks.hpp): the same kinds, from 75h, 71h and 77h.
-        for (const auto t : {j1939_timer::heartbeat, j1939_timer::key_state}) {
-            if (const auto d = j1939_.overdue(t, now_, allowed(j1939_.period(t))))
-                report(line_,
-                       t == j1939_timer::heartbeat ? problem_kind::heartbeat_silence
-                                                   : problem_kind::key_state_silence,
-                       (*d)[0], (*d)[1], (*d)[2]);
-        }
+        auto& jh = j1939_.timer(j1939_timer::heartbeat);
+        silence(jh, problem_kind::heartbeat_silence, allowed(jh.period));
+        auto& jk = j1939_.timer(j1939_timer::key_state);
+        silence(jk, problem_kind::key_state_silence, allowed(jk.period));
+    }
+    // A silence of s longer than `limit` ms: a problem of kind k.
+    constexpr void silence(silence_timer& s, problem_kind k, std::uint32_t limit) noexcept {
+        if (const auto d = s.overdue(now_, limit)) report(line_, k, (*d)[0], (*d)[1], (*d)[2]);
     }
 
-    // How the frame was written, and whether the keypad can act on it. A frame of the keypad that
-    // decode refuses counts towards wrong_model; one to the keypad (NMT, its SDO requests and
-    // RPDOs) is also refused_frame, with decode's reason: the keypad ignores it (or aborts it; a
-    // request still waits for its reply: session.hpp reads it zero-filled). Not a SYNC with data:
-    // CiA 301 allows a counter byte there, which the keypads' manuals do not show (decode refuses
-    // it) but no keypad is known to mind. A frame decode reads as trimmed or padded is
-    // not_manual_form.
+    // How the frame was written, and whether the keypad can act on it: refused_frame (not a SYNC
+    // with data), wrong_model's count, not_manual_form (docs/checker.md, the table).
     constexpr void form(const can::frame& f, const session_event& e) noexcept {
         if (e.decoded) {
             ++keypad_frames_;
@@ -337,9 +322,7 @@ private:
         if (refused_++ == 0) first_refused_line_ = line_;
     }
 
-    // A 29-bit frame (j1939_checks.hpp): a keypad's frame counts as the CANopen ones do; one to
-    // the keypad that decode refuses is refused_frame, unless it is a J1939 fault of its own.
-    // J1939 frames always have 8 bytes: none is trimmed or padded.
+    // A 29-bit frame (j1939_checks.hpp; docs/checker.md, "J1939").
     constexpr void j1939(const can::frame& f, const session_event& e,
                          std::uint8_t address) noexcept {
         const auto r = j1939_.step(f, e, address, session_.j1939_address(), line_, now_);
@@ -348,21 +331,12 @@ private:
         else if (r.keypads && e.decoded.error() != errc::wrong_id)  // not another keypad's
             count_refused();
         if (r.finding) {
-            report(line_, j1939_kind(r.finding->fault), r.finding->detail[0], r.finding->detail[1],
-                   r.finding->detail[2]);
+            report(line_, detail::j1939_kind(r.finding->fault), r.finding->detail[0],
+                   r.finding->detail[1], r.finding->detail[2]);
         } else if (r.to_keypad && !e.decoded && e.decoded.error() != errc::wrong_id) {
             report(line_, problem_kind::refused_frame,
                    static_cast<std::uint32_t>(e.decoded.error()), f.raw_id(), f.size());
         }
-    }
-    static constexpr problem_kind j1939_kind(j1939_fault k) noexcept {
-        switch (k) {
-            case j1939_fault::bad_header: return problem_kind::j1939_bad_header;
-            case j1939_fault::multiple_leds_off: return problem_kind::j1939_multiple_leds_off;
-            case j1939_fault::no_keypad: return problem_kind::j1939_no_keypad;
-            case j1939_fault::address_conflict: break;
-        }
-        return problem_kind::j1939_address_conflict;
     }
 
     // A host frame to the node id the keypad left (PK1000 23, PKP 13 h): nobody answers it.
@@ -374,8 +348,7 @@ private:
             report(line_, problem_kind::old_node_traffic, f.raw_id(), o, session_.node().value());
     }
 
-    // The SDO frames as the session read them (e.sdo_frame: what each is and its object; the
-    // segment's toggle and the abort's code from what decode returned).
+    // The SDO frames as the session read them (e.sdo_frame), with what decode returned.
     constexpr void on_request(const session_event& e) noexcept {
         if (!e.sdo_frame) return;
         const auto op = e.sdo_frame->op;
@@ -454,7 +427,7 @@ private:
 
     constexpr void set_state(canopen::nmt_state s) noexcept {
         if (state_ != s) pdo_reported_ = false;
-        if (s != canopen::nmt_state::operational) ks_last_.reset();
+        if (s != canopen::nmt_state::operational) ks_.last.reset();
         state_ = s;
     }
 
@@ -479,18 +452,17 @@ private:
                                   : canopen::nmt_state::pre_operational);
                 pending_.reset();
                 segmented_ = false;
-                hb_last_.reset();
+                hb_.last.reset();
+                hb_.reported = false;
             } else {
                 set_state(h->state);
-                hb_last_ = seen{now_, line_};
+                hb_.heard(now_, line_);
             }
-            hb_reported_ = false;
             return;
         }
         if (std::holds_alternative<key_state>(msg)) {
             set_state(canopen::nmt_state::operational);  // it sends key states only then
-            ks_last_ = seen{now_, line_};
-            ks_reported_ = false;
+            ks_.heard(now_, line_);
             return;
         }
         if (std::holds_alternative<led_on>(msg) || std::holds_alternative<led_blink>(msg) ||
@@ -505,11 +477,11 @@ private:
         // The settings the checker follows, from the host's writes.
         if (const auto* w = std::get_if<sdo_write>(&msg)) {
             if (w->object == object::heartbeat_time) {
-                hb_period_ = w->value.raw;
-                hb_reported_ = false;
+                hb_.period = w->value.raw;
+                hb_.reported = false;
             } else if (w->object == object::tpdo1_event_timer) {
-                ks_period_ = w->value.raw;
-                ks_reported_ = false;
+                ks_.period = w->value.raw;
+                ks_.reported = false;
             } else if (w->object == object::active_on_startup) {
                 active_ = w->value.raw != 0;
             } else if (w->object == object::consumer_heartbeat) {
@@ -519,8 +491,8 @@ private:
             }
         } else if (const auto* k = std::get_if<command>(&msg)) {
             if (k->code == command_code::set_periodic_transmission) {
-                ks_period_ = k->enabled ? 10u * k->period_10ms : 0u;
-                ks_reported_ = false;
+                ks_.period = k->enabled ? 10u * k->period_10ms : 0u;
+                ks_.reported = false;
             } else if (k->code == command_code::set_active_on_startup) {
                 active_ = k->enabled;
             }
@@ -532,11 +504,6 @@ private:
         millis sent;
         canopen::sdo_address address;
     };
-    struct seen {
-        millis time;
-        std::uint32_t line;
-    };
-
     checker_config cfg_;
     session<TextCapacity> session_;
     j1939_checks j1939_;
@@ -552,15 +519,11 @@ private:
     bool active_ = false;
     bool pdo_reported_ = false;
     std::optional<canopen::node_id> old_;
-    std::uint32_t hb_period_ = 0;
-    std::optional<seen> hb_last_;
-    bool hb_reported_ = false;
+    silence_timer hb_;                   // the CANopen heartbeat (1017h)
     std::uint32_t consumer_period_ = 0;  // 1016h sub 1: the heartbeat the keypad consumes
     std::uint8_t consumer_producer_ = 0;
     std::optional<millis> consumer_last_;
-    std::uint32_t ks_period_ = 0;
-    std::optional<seen> ks_last_;
-    bool ks_reported_ = false;
+    silence_timer ks_;  // the key state (PK1000 1800h sub 5, PKP command 12h)
     std::uint32_t keypad_frames_ = 0;
     std::uint32_t refused_ = 0;
     std::uint32_t first_refused_line_ = 0;
@@ -632,19 +595,11 @@ constexpr void put_field(text_writer& w, std::string_view f,
 
 // The explanation of p, one sentence without the line number (the caller prints that first).
 constexpr void explain(const problem& p, text_writer& w) noexcept {
-    switch (p.kind) {
-        case problem_kind::j1939_bad_header:
-            return explain_j1939(j1939_fault::bad_header, p.detail, w);
-        case problem_kind::j1939_multiple_leds_off:
-            return explain_j1939(j1939_fault::multiple_leds_off, p.detail, w);
-        case problem_kind::j1939_no_keypad:
-            return explain_j1939(j1939_fault::no_keypad, p.detail, w);
-        case problem_kind::j1939_address_conflict:
-            return explain_j1939(j1939_fault::address_conflict, p.detail, w);
-        default: break;
-    }
-    if (static_cast<std::size_t>(p.kind) >= problem_kind_count) return;
-    const std::string_view text = detail::explanations[static_cast<std::size_t>(p.kind)];
+    const auto k = static_cast<std::size_t>(p.kind);
+    if (k >= problem_kind_count) return;
+    if (k >= detail::j1939_kind_offset)
+        return explain_j1939(static_cast<j1939_fault>(k - detail::j1939_kind_offset), p.detail, w);
+    const std::string_view text = detail::explanations[k];
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (text[i] != '{') {
             w.put(text[i]);

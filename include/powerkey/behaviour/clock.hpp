@@ -12,9 +12,8 @@
 
 namespace powerkey::behaviour {
 
-// A point in time in milliseconds from a free-running 32-bit counter (a firmware tick, or the
-// candump timestamp in ms). The counter wraps after 49.7 days: compare points with before() /
-// elapsed(), which are right across the wrap as long as the two points are < 2^31 ms apart.
+// A point in time in milliseconds from a free-running 32-bit counter that wraps: compare points
+// with before() / elapsed() (docs/controller.md, "Time and outboxes").
 struct millis {
     std::uint32_t value = 0;
     friend constexpr bool operator==(millis, millis) noexcept = default;
@@ -50,8 +49,39 @@ struct duration_ms {
     return after.value != 0 && elapsed(since, now).value > after.value;
 }
 
-// A fixed-capacity FIFO (outboxes, event queues), no heap: push() on a full queue refuses (returns
-// false) and counts the item in dropped(), so a caller that drains too slowly sees it.
+// A peer's periodic frame as a checker times it: its period in ms (0: not judged), the last one
+// heard (none before the first) and whether the present silence was said.
+struct silence_timer {
+    struct seen {
+        millis time;
+        std::uint32_t line;
+    };
+    std::uint32_t period = 0;
+    std::optional<seen> last;
+    bool reported = false;
+
+    // The silence at `now` when longer than `allowed` ms and not said yet (said then, once per
+    // silence): {ms silent, the period, line of the last frame}.
+    [[nodiscard]] constexpr std::optional<std::array<std::uint32_t, 3>> overdue(
+        millis now, std::uint32_t allowed) noexcept {
+        if (period == 0 || !last || reported || elapsed(last->time, now).value <= allowed)
+            return std::nullopt;
+        reported = true;
+        return std::array<std::uint32_t, 3>{elapsed(last->time, now).value, period, last->line};
+    }
+    // A periodic frame at `t`, from input line `line`.
+    constexpr void heard(millis t, std::uint32_t line) noexcept {
+        last = seen{t, line};
+        reported = false;
+    }
+    // A time before the last one (two logs in a row): the silence counts from `now`.
+    constexpr void restart(millis now) noexcept {
+        if (last) last->time = now;
+    }
+};
+
+// A fixed-capacity FIFO (outboxes, event queues): push() on a full queue refuses (returns false)
+// and counts the item in dropped().
 template <class T, std::size_t N>
 class fixed_queue {
     static_assert(N > 0, "a fixed_queue holds at least one item");

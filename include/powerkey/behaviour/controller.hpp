@@ -1,19 +1,6 @@
-// powerkey: the host side of one keypad, as a state machine the caller steps. It owns no clock and
-// does no I/O: the caller hands it each received frame and the time, drains the frames it wants
-// to send from its outbox, and polls the events it reports. No heap, no exceptions, no callbacks.
-//
-//   controller<> c(cfg);                               // cfg: model, node, configuration list ...
-//   for (;;) {
-//       if (const auto f = can_receive()) c.step(*f, now()); else c.tick(now());
-//       while (const auto out = c.next_frame()) can_send(*out);
-//       while (const auto e = c.poll()) handle(*e);    // key_pressed, lost, ready ...
-//       c.set_led(3, colour::green);                  // sent when it changes, refreshed, resent
-//   }
-//
-// It finds the keypad (boot-up, heartbeat, or an SDO probe), identifies it (100Bh), runs the setup
-// and the caller's configuration one SDO request at a time, starts it, keeps a shadow of its LEDs,
-// brightness and backlight, reports it lost, turns its key states into key events and follows a
-// node-id change: docs/controller.md lists each behaviour with the manual section it comes from.
+// powerkey: the host side of one keypad, a state machine the caller steps with each frame received
+// and the time, that sends from an outbox and reports events (docs/controller.md: the loop, and
+// each behaviour with the manual section it comes from).
 #ifndef POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 #define POWERKEY_BEHAVIOUR_CONTROLLER_HPP
 
@@ -58,9 +45,8 @@ enum class start_mode : std::uint8_t {
     POWERKEY_BEHAVIOUR_START_MODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
-// Entry: what the configuration list holds. controller<> takes messages (controller_config) and
-// checks each when it sends it; a controller of model_constant<M> takes configuration_entry<M>,
-// requests checked when they are made (below).
+// Entry: what the configuration list holds: messages for controller<>, configuration_entry<M> for
+// a controller of model_constant<M> (docs/controller.md, "Configuration").
 template <class Entry>
 struct basic_controller_config {
     model keypad_model = model::pk1000;  // used unless 100Bh names another model
@@ -68,9 +54,8 @@ struct basic_controller_config {
     bool any_node = false;  // adopt the first boot-up of any node instead of `node`'s
     bool identify = true;   // read 100Bh and take the model it reports
     start_mode start = start_mode::nmt_start;
-    // Read and written in order, one request at a time, after the keypad is found and again after
-    // each reboot: sdo_read, sdo_write or command messages (others are skipped), or the entries
-    // made from them. Caller-owned.
+    // Run in order after the keypad is found and after each reboot (others than sdo_read,
+    // sdo_write and command are skipped). Caller-owned.
     std::span<const Entry> configuration{};
     duration_ms keypad_heartbeat{200};  // written to 1017h during setup; 0: leave 1017h alone
     duration_ms lost_after{600};        // silence that makes the keypad lost; 0: never lost
@@ -142,27 +127,19 @@ enum class controller_state : std::uint8_t {
     POWERKEY_BEHAVIOUR_CONTROLLER_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
-// The most events one call (step() or tick()) reports for a keypad with `keys` keys: each key
-// twice and 13 others (docs/controller.md, "Events"). A queue of at least this many loses no event
-// when the application polls after every call; a refused configuration entry and the ready that
-// ends the setup wait for room rather than being dropped.
+// The most events one call reports for a keypad with `keys` keys (docs/controller.md, "Events").
 [[nodiscard]] constexpr std::size_t events_per_call(std::size_t keys) noexcept {
     return 2 * keys + 13;
 }
 // Enough for any model: a key set holds 16 keys (the table's largest keypads have 15).
 inline constexpr std::size_t default_event_capacity = events_per_call(key_set::max);
 
-// The longest configuration list the controller runs: its events number the entries 0..65534
-// (controller_event::step). The entries of a longer list past these are not run, and one
-// sdo_refused event with step max_configuration and value value_out_of_range says so.
+// The longest configuration list the controller runs (controller_event::step numbers 0..65534);
+// past it, one sdo_refused with step max_configuration and value_out_of_range (docs/controller.md).
 inline constexpr std::size_t max_configuration = 65535;
 
-// An entry of the configuration list of a controller of model_constant<M>: an sdo_read, sdo_write
-// or command checked for model M and built when the entry is made, as controller<> checks and
-// builds a message when it sends it (the same frame, or the same refusal: its sdo_refused event's
-// errc; another message is skipped). Made in a constexpr list, the checks run when the program is
-// built and the firmware holds the requests' bytes, not the checks of every kind of value
-// (firmware (c) of docs/performance.md).
+// An entry of the configuration list of a controller of model_constant<M>: a request checked and
+// built for M when the entry is made (docs/controller.md, "One model").
 template <model M>
 class configuration_entry {
 public:
@@ -215,8 +192,7 @@ private:
 
 namespace detail {
 
-// The controller's own requests as functions of one value: the SDO read of O, the write of O, and
-// command C.
+// The controller's own requests as functions of one value: the read of O, write of O, command C.
 template <object O>
 constexpr sdo_read read_of(std::monostate) noexcept {
     return sdo_read{O};
@@ -296,11 +272,9 @@ constexpr std::uint8_t raw_of(V v) noexcept {
         return v.value();  // a level or a node id
 }
 
-// A request of one small value proven when the program is built: its frame, as the encoder's own
-// checks build it (powerkey::detail::own_frame), was built for every value, and it is one SDO
-// request's bytes with the value's byte at `at` for the values lo..hi, and the one refusal
-// `refused` for every other. Then frame() builds it with no check in the program. proven is false
-// when that is not so (the request then checks itself when it is sent).
+// A request of one small value proven when the program is built (docs/controller.md, "One model,
+// known when the program is built"): the bytes `data` with the value's byte at `at` for the values
+// lo..hi, the one refusal `refused` for every other; proven false when that is not so.
 struct byte_request {
     bool proven = false;
     can::payload data{};
@@ -381,17 +355,15 @@ struct entry_of<any_model> {
 
 }  // namespace detail
 
-// Keypad: any_model, the model a value (cfg.keypad_model, or what 100Bh reports), or
-// model_constant<M>, a controller of model M alone that links M's rows only (firmware (c) of
-// docs/performance.md); it keeps M whatever 100Bh reports, and cfg.keypad_model is not read.
+// Keypad: any_model, or model_constant<M>, a controller of model M alone (docs/controller.md, "One
+// model, known when the program is built").
 template <std::size_t OutboxCapacity = 8, std::size_t EventCapacity = default_event_capacity,
           class Keypad = any_model>
 class controller {
     static constexpr bool fixed = !std::is_same_v<Keypad, any_model>;
 
 public:
-    // Its configuration: controller_config (messages) for any_model, the entries checked when they
-    // are made (configuration_entry<M>) for model_constant<M>.
+    // Its configuration: messages for any_model, configuration_entry<M> for model_constant<M>.
     using entry = typename detail::entry_of<Keypad>::type;
     using config = basic_controller_config<entry>;
 
@@ -420,8 +392,7 @@ public:
     [[nodiscard]] constexpr std::optional<controller_event> poll() noexcept {
         return events_.pop();
     }
-    // Events refused because the queue was full: the application polled too slowly, or one call
-    // reported more than EventCapacity (see events_per_call).
+    // Events refused because the queue was full (see events_per_call).
     [[nodiscard]] constexpr std::size_t events_dropped() const noexcept {
         return events_.dropped();
     }
@@ -430,8 +401,7 @@ public:
     // --- what the application shows ---------------------------------------------------------
 
     // LED k (1..the model's LEDs) in colour c, steady or blinking; false (nothing changed) for
-    // an LED it lacks, or a colour its planes cannot show (blue, cyan, magenta and white on a
-    // keypad of red and green, or a value that is no colour).
+    // an LED it lacks, or a colour its planes cannot show.
     constexpr bool set_led(unsigned k, colour c, bool blink = false) noexcept {
         if (k < 1 || k > keypad().leds || ((keypad().led_mask >> (k - 1)) & 1u) == 0) return false;
         if (!shows(c)) return false;
@@ -441,8 +411,7 @@ public:
         return set_leds(on, bl);
     }
     // The whole picture: the LEDs on, and those that blink (both: alternate, PK1000 13); false
-    // (nothing changed) when a map names an LED or a colour plane the keypad lacks, which its LED
-    // PDOs cannot carry.
+    // (nothing changed) when a map names an LED or a colour plane the keypad lacks.
     constexpr bool set_leds(const leds& on, const leds& blink) noexcept {
         if (!fits(on) || !fits(blink)) return false;
         if (!(on == on_)) dirty_ |= dirty_on;
@@ -578,11 +547,8 @@ private:
             return;
         }
         if (boot) {  // it rebooted (power, reset, node change): everything again
-            if (awaiting_boot_from_new_) {
-                awaiting_boot_from_new_ = false;
-            } else {
-                emit(event_kind::rebooted);
-            }
+            if (!awaiting_boot_from_new_) emit(event_kind::rebooted);
+            awaiting_boot_from_new_ = false;
             release_all();
             begin_setup(false);
             return;
@@ -753,10 +719,8 @@ private:
         finish_job();
     }
 
-    // The request in flight is over (answered, aborted, refused or timed out). The next one starts
-    // in run(), which ends every step() and tick(), in the same call: not from here, so that the
-    // reply's reading is off the stack when the next request is built (firmware (c)'s worst
-    // stack, docs/performance.md).
+    // The request in flight is over. The next one starts in run(), in the same call: not from
+    // here, so that the reply's reading is off the stack then (firmware (c)'s worst stack).
     constexpr void finish_job() noexcept { job_.reset(); }
 
     constexpr void next_setup_job() noexcept {
@@ -854,13 +818,10 @@ private:
     constexpr bool begin_node_change() noexcept {
         const auto n = *pending_node_change_;
         pending_node_change_.reset();
-        bool started = false;
-        if (keypad().dictionary == dictionary::pkp_li) {
-            started = begin_command<command_code::set_node_id>(n, sdo_origin::node_change);
-        } else {
-            started = begin_write<object::node_id>(n, sdo_origin::node_change);
-        }
-        if (!started) return false;
+        if (!(keypad().dictionary == dictionary::pkp_li
+                  ? begin_command<command_code::set_node_id>(n, sdo_origin::node_change)
+                  : begin_write<object::node_id>(n, sdo_origin::node_change)))
+            return false;
         job_->new_node = n;
         if (replies_from_new_id()) job_->reply_node = n;  // PK1000 23
         return true;
@@ -876,8 +837,7 @@ private:
         dirty_ = static_cast<std::uint8_t>(dirty_ & ~bit);
         return mine;
     }
-    // Whether the model's dictionary has object O (a constant for a model_constant), and an
-    // object's address.
+    // Whether the model's dictionary has object O (a constant for a model_constant); o's address.
     template <object O>
     constexpr bool has() const noexcept {
         if constexpr (fixed) {
@@ -897,8 +857,7 @@ private:
         return keypad().backlight_pdo && keypad().backlight_colour;
     }
 
-    // Starts a configuration entry's SDO request; false when the model cannot carry it (reported,
-    // nothing sent) or it is no SDO request (skipped).
+    // Starts a configuration entry's request; false when refused (reported) or skipped.
     constexpr bool begin_job(const entry& e, sdo_origin origin, std::uint16_t step) noexcept {
         if constexpr (fixed) {
             if (e.skipped()) return false;
@@ -918,10 +877,8 @@ private:
         }
     }
     // The controller's own requests, each a function of one value (detail::read_of, write_of,
-    // command_of). For a model_constant most are proven when the program is built
-    // (detail::own_proof) and built with no check in the program; the others check themselves
-    // with M's row and O's kind constants (POWERKEY_DETAIL_FLATTEN). controller<> builds them
-    // with the checks it builds every request with.
+    // command_of): for a model_constant proven when the program is built where they can be
+    // (detail::own_proof), else checked with M's constants (docs/controller.md, "One model").
     template <object O>
     constexpr bool begin_read(sdo_origin origin) noexcept {
         return begin_request(own<&detail::read_of<O>>(std::monostate{}), O, true, origin, 0);
@@ -949,8 +906,7 @@ private:
         return powerkey::detail::own_frame(keypad(), node_, Make(v));
     }
 
-    // Starts an SDO request of object `what` with its frame f (or the error that refuses it:
-    // reported, nothing sent).
+    // Starts an SDO request of object `what` with its frame f, or reports the error in f.
     constexpr bool begin_request(const result<can::frame>& f, object what, bool read,
                                  sdo_origin origin, std::uint16_t step) noexcept {
         // Built in place (no request is in flight here): a copy on the stack cost firmware (c)'s
@@ -1019,8 +975,7 @@ private:
     }
     constexpr bool send_frame(const can::frame& f) noexcept { return outbox_.push(f); }
 
-    // The model's layout (the codec's part of its row) and dictionary lookups: M's alone for a
-    // model_constant, every model's for any_model.
+    // The model's layout (the codec's part of its row): M's alone for a model_constant.
     constexpr const auto& keypad() const noexcept {
         if constexpr (fixed)
             return powerkey::detail::fixed_layout_v<Keypad::value>;
@@ -1050,9 +1005,8 @@ private:
         else
             return c.keypad_model;
     }
-    // The keys of the keypad's key-state PDO (TPDO1), read as decode reads it; nullopt for a
-    // frame decode refuses. The controller speaks no J1939, and reads no other PDO: one of model
-    // M reads the key state alone (decode_key_state<M>: no decoder in the program).
+    // The keys of the keypad's key-state PDO (TPDO1), as decode reads it; nullopt for a frame
+    // decode refuses. One of model M reads the key state alone (decode_key_state<M>).
     constexpr std::optional<key_set> read_keys(const can::frame& f) const noexcept {
         if constexpr (fixed) {
             const auto k = decode_key_state<Keypad::value>(f, node_);
@@ -1064,8 +1018,7 @@ private:
             return powerkey::pressed_keys(*m);  // TPDO1 decodes as a key state or not at all
         }
     }
-    // Every message it sends checks its own fields (encode's own checks): no decoder is needed
-    // to build them.
+    // Every message it sends checks its own fields (encode's own checks): no decoder needed.
     template <class T>
     constexpr result<can::frame> frame_of(const T& msg) const noexcept {
         if (!fixed && !powerkey::detail::is_model(model_)) return errc::value_out_of_range;

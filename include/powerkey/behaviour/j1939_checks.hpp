@@ -107,62 +107,29 @@ public:
         return ((held_[a / 32] >> (a % 32)) & 1u) != 0;
     }
 
-    // The period of timer t in ms as the log set it: 0 while off, or while the log has not shown
-    // the setting (the keypad's is then not known, so it is not judged).
-    [[nodiscard]] constexpr std::uint32_t period(j1939_timer t) const noexcept {
-        return timers_[static_cast<std::size_t>(t)].period;
-    }
-    // Timer t's silence at `now` when longer than `allowed` ms and not said yet (it is said
-    // then, once per silence): {ms silent, the period, line of the last frame}, checker.hpp's
-    // detail of heartbeat_silence and key_state_silence. The silence counts from the first frame
-    // after the setting, as the CANopen ones do.
-    [[nodiscard]] constexpr std::optional<std::array<std::uint32_t, 3>> overdue(
-        j1939_timer t, millis now, std::uint32_t allowed) noexcept {
-        timer& p = timers_[static_cast<std::size_t>(t)];
-        if (p.period == 0 || !p.last || p.reported || elapsed(p.last->time, now).value <= allowed)
-            return std::nullopt;
-        p.reported = true;
-        return std::array<std::uint32_t, 3>{elapsed(p.last->time, now).value, p.period,
-                                            p.last->line};
-    }
-    // A time before the last one (two logs in a row): the silences count from `now`.
-    constexpr void restart(millis now) noexcept {
-        for (timer& p : timers_)
-            if (p.last) p.last->time = now;
+    // Timer t: its period in ms as the log set it (0 while off, or while the log has not shown
+    // the setting: the keypad's is then not known, so it is not judged). The silence counts from
+    // the first frame after the setting.
+    [[nodiscard]] constexpr silence_timer& timer(j1939_timer t) noexcept {
+        return timers_[static_cast<std::size_t>(t)];
     }
 
 private:
-    struct seen {
-        millis time;
-        std::uint32_t line;
-    };
-    struct timer {
-        std::uint32_t period = 0;  // ms, 0: not judged
-        std::optional<seen> last;  // the last frame since the setting; none before the first
-        bool reported = false;     // this silence said
-    };
+    using seen = silence_timer::seen;
     struct claim_row {
         std::uint64_t name;  // pack_name: 8 bytes rather than the struct's 16
         std::uint32_t line;
         std::uint8_t address;
     };
 
-    constexpr timer& timer_of(j1939_timer t) noexcept {
-        return timers_[static_cast<std::size_t>(t)];
-    }
     // A setting (75h, 71h, 77h): the new period counts from the keypad's next frame.
     constexpr void set_period(j1939_timer t, std::uint32_t ms) noexcept {
-        timer_of(t) = timer{ms, std::nullopt, false};
-    }
-    // A periodic frame of the followed keypad.
-    constexpr void heard(j1939_timer t, seen at) noexcept {
-        timer_of(t).last = at;
-        timer_of(t).reported = false;
+        timer(t) = silence_timer{ms, std::nullopt, false};
     }
     // A keypad that stops speaking J1939 (80h) or powers up (its address claim): its periodic
     // frames are timed again from the next one.
     constexpr void pause() noexcept {
-        for (timer& p : timers_) p.last.reset();
+        for (silence_timer& p : timers_) p.last.reset();
     }
 
     // Section 20: an address is one NAME's; a claim of it by another NAME is a conflict (J1939-81
@@ -222,9 +189,9 @@ private:
                 claim(v, id, r, line);
                 if (v.source == keypad) pause();
             } else if constexpr (std::is_same_v<T, j::heartbeat>) {
-                if (v.source == keypad) heard(j1939_timer::heartbeat, at);
+                if (v.source == keypad) timer(j1939_timer::heartbeat).heard(at.time, line);
             } else if constexpr (std::is_same_v<T, j::key_contact>) {
-                if (v.source == keypad) heard(j1939_timer::key_state, at);
+                if (v.source == keypad) timer(j1939_timer::key_state).heard(at.time, line);
             }
         } else {
             command_to(v.destination, id, r, keypad);
@@ -257,15 +224,15 @@ private:
     }
 
     model model_;
-    std::array<std::uint32_t, 8> held_{};  // the addresses keypads hold, bit a for address a
-    bool multiple_leds_ = false;           // section 13: single LED only by default
-    std::uint32_t management_line_ = 0;    // the line of the last 37h, 0 for none
-    bool leds_reported_ = false;           // multiple_leds_off said since that 37h
-    std::array<timer, 2> timers_{};        // by j1939_timer
-    bool periodic_ = false;                // 71h: periodic key states, off by default
-    std::uint8_t key_period_10ms_ = 0x0A;  // 77h: 100 ms by default (section 22)
-    std::array<claim_row, 16> claims_{};   // the last claim of each address; a ring, the oldest
-                                           // address given up for a new one
+    std::array<std::uint32_t, 8> held_{};    // the addresses keypads hold, bit a for address a
+    bool multiple_leds_ = false;             // section 13: single LED only by default
+    std::uint32_t management_line_ = 0;      // the line of the last 37h, 0 for none
+    bool leds_reported_ = false;             // multiple_leds_off said since that 37h
+    std::array<silence_timer, 2> timers_{};  // by j1939_timer
+    bool periodic_ = false;                  // 71h: periodic key states, off by default
+    std::uint8_t key_period_10ms_ = 0x0A;    // 77h: 100 ms by default (section 22)
+    std::array<claim_row, 16> claims_{};     // the last claim of each address; a ring, the oldest
+                                             // address given up for a new one
     std::size_t claimed_ = 0;
     std::size_t next_claim_ = 0;
 };

@@ -1,13 +1,6 @@
-// powerkey: key modes on top of the controller's key events, kept out of the core: a key is
-// momentary (on while held), a toggle (each press flips it), or cycles through N states (each
-// press moves to the next, N wraps to 0). The application feeds every controller event and reads
-// back the state of each key; the states are usually shown with the key's LED.
-//
-//   key_modes<> modes;
-//   modes.set(1, key_mode::toggle);
-//   modes.set(2, key_mode::cycle, 3);               // 0, 1, 2, 0 ...
-//   while (const auto e = c.poll())
-//       if (const auto change = modes.on_event(*e)) show(change->key, change->state);
+// powerkey: key modes on top of the controller's key events, kept out of the core: momentary,
+// toggle or a cycle of N states; the application feeds every controller event and reads back each
+// key's state (docs/controller.md, the firmware loop).
 #ifndef POWERKEY_BEHAVIOUR_KEY_MODES_HPP
 #define POWERKEY_BEHAVIOUR_KEY_MODES_HPP
 

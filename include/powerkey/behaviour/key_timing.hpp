@@ -1,7 +1,5 @@
-// powerkey: a controller's keys over time, shared by the CANopen and the J1939 controllers: the
-// set of keys held becomes presses and releases, a key held long enough a long press (once) and
-// repeats (docs/controller.md, "Key events"). The caller passes the time, its settings and where
-// the events go.
+// powerkey: a controller's keys over time, shared by the CANopen and the J1939 controllers:
+// presses, releases, long presses and repeats (docs/controller.md, "Events").
 #ifndef POWERKEY_BEHAVIOUR_KEY_TIMING_HPP
 #define POWERKEY_BEHAVIOUR_KEY_TIMING_HPP
 

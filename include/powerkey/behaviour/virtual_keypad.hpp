@@ -1,17 +1,6 @@
 // powerkey: a virtual keypad, the device side of every model, for testing controllers without a
-// keypad. It owns no clock and does no I/O: the caller steps it with the frames the controller
-// sends and the current time, and drains what the keypad sends from its outbox.
-//
-//   behaviour::virtual_keypad<> k(model::pk1000);      // node 15h, the manual's defaults
-//   k.power_on(t);                                      // boot-up 715#00 (section 8)
-//   k.receive(frame, t);  k.advance(t);  k.press(3, t);
-//   while (const auto f = k.transmit()) send(*f);
-//
-// What it does, each with the manual section it comes from (PK1000 = PK1000_CANopen_UM_rev1.13,
-// PKP = PKP-2200-2400-LI_CANopen_UM_rev1.1; the SI family as the PK1000 where its manuals agree,
-// docs/si-family.md), and what is inferred, is listed in docs/virtual-keypad.md. What a model has
-// (1016h, writable transmission types, J1939, LED mask) comes from its model and dictionary rows.
-// Allocation-free, exception-free, constexpr: a whole session can run in a static_assert.
+// keypad. docs/virtual-keypad.md: how to step it, and what it does with the manual section (PK1000
+// = PK1000_CANopen_UM_rev1.13, PKP = PKP-2200-2400-LI_CANopen_UM_rev1.1) each behaviour is from.
 #ifndef POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
 #define POWERKEY_BEHAVIOUR_VIRTUAL_KEYPAD_HPP
 
@@ -46,8 +35,7 @@ namespace powerkey::behaviour {
 // --- the keypad ---------------------------------------------------------------------------------
 
 // Where the keypad is: off (no power), the CANopen NMT states (CiA 301 7.3.2, manuals 4-9), or
-// in J1939, switched (PK1000 49) or a J1939 keypad from power-on (keypad_options), where
-// behaviour/j1939_keypad.hpp speaks for it.
+// in J1939 (PK1000 49, keypad_options), where behaviour/j1939_keypad.hpp speaks for it.
 // clang-format off
 #define POWERKEY_BEHAVIOUR_RUN_STATE_LIST(X) \
     X(off) \
@@ -61,21 +49,14 @@ enum class run_state : std::uint8_t {
 };
 
 struct keypad_options {
-    // A real keypad drops an SDO request that arrives while it is still answering another: no
-    // reply, no abort (issue 12, from field logs; neither manual says so). On by default; off, the
-    // later request is answered after the earlier one.
+    // Drop an SDO request that arrives while it still answers another (issue 12: field logs); off,
+    // the later request is answered after the earlier one.
     bool drop_sdo_while_busy = true;
-    // How long the keypad takes to answer an SDO request, in ms (inferred: the manuals give no
-    // figure). The reply leaves at receive time + this, released by advance(); 0 answers at
-    // once (and then no request can find the keypad busy).
+    // How long the keypad takes to answer an SDO request, in ms (inferred); 0: at once.
     std::uint32_t sdo_response_ms = 1;
-    // The keypad is a J1939 one: J1939 is its stored protocol (20FFh/1 = 1) from the start, so
-    // power_on() starts it in J1939. Every model whose J1939 key contact state a source shows
-    // (speaks_j1939: all of them today), the PKP LI models too, which have no 20FFh: sold as
-    // J1939 keypads, they start in J1939 and stay there (no 80h, docs/virtual-keypad.md#j1939).
+    // A J1939 keypad from power-on, on every model that speaks_j1939 (docs/virtual-keypad.md).
     bool start_in_j1939 = false;
-    // The J1939 address the keypad is at when it first speaks J1939 (from power-on, or switched
-    // by 20FFh), until a 70h moves it; 21h, the manuals' default (section 5), unless given.
+    // The J1939 address it first speaks J1939 at, until a 70h moves it (21h: section 5).
     j1939_source_address j1939_address = j1939_source_address{j1939::keypad_default_address};
 };
 
@@ -102,8 +83,7 @@ inline constexpr auto initial_values_v =
     initial_values(powerkey::detail::rows_of(powerkey::detail::fixed_layout_v<M>));
 }  // namespace detail
 
-// Keypad: any_model, the model a value (the constructor's), or model_constant<M>, a keypad of
-// model M that reads M's dictionary alone (the constructor's model is then not read).
+// Keypad: any_model, or model_constant<M>, a keypad of model M that reads M's dictionary alone.
 template <std::size_t Outbox = 16, class Keypad = any_model>
 class virtual_keypad {
     static constexpr bool fixed = !std::is_same_v<Keypad, any_model>;
@@ -143,8 +123,7 @@ public:
         power_off();
         power_on(t);
     }
-    // Silence (fault injection): from t for d the keypad transmits nothing (frames it would send
-    // are lost); timers keep running, received frames are still handled.
+    // Silence (fault injection): from t for d the keypad transmits nothing; timers run on.
     constexpr void silence(millis t, duration_ms d) noexcept {
         silent_until_ = t + d;
         silent_ = true;
@@ -182,26 +161,21 @@ public:
         if (fn == 0x600) return on_sdo(f, t);
     }
 
-    // Runs the timers up to t: a due SDO reply, the heartbeat producer (1017h), the heartbeat
-    // consumer (1016h), the periodic key state (1800h/5, PKP 13 f). Call it at least every few
-    // milliseconds, or whenever the caller wakes; receive() and press() call it too.
+    // Runs the timers up to t (SDO reply, heartbeat producer and consumer, periodic key state).
     constexpr void advance(millis t) noexcept {
         if (silent_ && reached(silent_until_, t)) silent_ = false;
         now_ = t;
         if (state_ == run_state::j1939) j1939_.advance(t, keys_, sink());
         if (state_ == run_state::off || state_ == run_state::j1939) return;
         release_reply(t);
-        // heartbeat producer (PK1000 29, PKP 9/17): every heartbeat_time ms, the NMT state
+        // heartbeat producer (PK1000 29, PKP 9/17); a caller that wakes late gets one heartbeat
         const std::uint32_t hb = value(object::heartbeat_time);
-        // A caller that wakes late gets one heartbeat, not every missed one.
         if (hb != 0 && reached(next_heartbeat_, t)) {
             send_heartbeat(nmt_byte());
             next_heartbeat_ = next_heartbeat_ + duration_ms{hb};
             if (reached(next_heartbeat_, t)) next_heartbeat_ = t + duration_ms{hb};
         }
-        // heartbeat consumer (PK1000 28): monitoring starts with the first heartbeat; on a loss
-        // the keypad turns off every LED and the backlight and goes pre-operational, until a
-        // new NMT start (NOTE 2).
+        // heartbeat consumer (PK1000 28, NOTE 2): on a loss, LEDs off, pre-operational
         if (monitoring_ && reached(consumer_deadline_, t)) {
             monitoring_ = false;
             on_ = {};
@@ -218,11 +192,8 @@ public:
         }
     }
 
-    // The earliest time at which advance() has something to do (a due SDO reply, a heartbeat, a
-    // heartbeat-consumer deadline, a periodic key state, the end of a silence); nullopt when
-    // nothing is scheduled. Between now and then, advance() changes nothing and sends nothing,
-    // so a caller may sleep (or a simulation jump) until then or the next frame or key,
-    // whichever comes first.
+    // The earliest time at which advance() has something to do; nullopt when nothing is
+    // scheduled. Until then advance() changes and sends nothing: a caller may sleep until then.
     [[nodiscard]] constexpr std::optional<millis> next_due() const noexcept {
         std::optional<millis> due;
         const auto take = [&](millis t) {
@@ -239,9 +210,7 @@ public:
         return due;
     }
 
-    // Scripted keys: press or release key k (1..the model's keys) at t. False for a key the
-    // model lacks. A change sends the key state when the keypad is operational and event-driven
-    // (PK1000 11, 46: transmission type FEh; PKP 10).
+    // Scripted keys: key k (1..the model's keys) at t; false for a key the model lacks.
     constexpr bool press(unsigned k, millis t) noexcept { return set_key(k, true, t); }
     constexpr bool release(unsigned k, millis t) noexcept { return set_key(k, false, t); }
     constexpr bool set_key(unsigned k, bool pressed, millis t) noexcept {
@@ -271,8 +240,7 @@ public:
 
     [[nodiscard]] constexpr run_state state() const noexcept { return state_; }
     [[nodiscard]] constexpr powerkey::model model() const noexcept { return model_; }
-    // The node id it answers on now (changes with 2013h at once on the PK1000, section 23; with
-    // PKP command 70h at the reboot that follows, PKP 13 h).
+    // The node id it answers on now.
     [[nodiscard]] constexpr canopen::node_id node() const noexcept { return node_; }
     [[nodiscard]] constexpr key_set keys() const noexcept { return keys_; }
     // LED maps: on, blink (both: alternate blink) (PK1000 12, 13, 17, 18; PKP 11-13 a, 15, 16).
@@ -281,8 +249,7 @@ public:
     // Key LED brightness 00h..3Fh (PK1000 14, 19 a; PKP 13 b, 30).
     [[nodiscard]] constexpr powerkey::level brightness() const noexcept { return brightness_; }
     [[nodiscard]] constexpr backlight_state backlight() const noexcept { return backlight_; }
-    // The bit rate it runs at: the stored 2010h / command 11h value as of the last reset; in
-    // J1939, 6Fh's.
+    // The bit rate it runs at (as of the last reset; in J1939, 6Fh's).
     [[nodiscard]] constexpr baud_rate baud() const noexcept {
         return state_ == run_state::j1939 ? j1939_.settings().baud : baud_;
     }
@@ -292,8 +259,7 @@ public:
     [[nodiscard]] constexpr std::uint8_t tick(millis t) const noexcept {
         return static_cast<std::uint8_t>(elapsed(boot_time_, t).value / 100u);
     }
-    // The number an SDO read of o would give now (for number-like objects; LED maps, keys and
-    // strings have their own accessors); nullopt for an object the model's dictionary lacks.
+    // The number an SDO read of o would give now; nullopt for an object the dictionary lacks.
     [[nodiscard]] constexpr std::optional<std::uint32_t> read(object o) const noexcept {
         const auto row = powerkey::detail::find_row(layout(), o);
         if (!row) return std::nullopt;
@@ -307,10 +273,7 @@ private:
     // --- stored settings ----------------------------------------------------------------------
 
     // Every object's value, by object (not by row: the PKP keeps settings its dictionary does not
-    // show, such as boot-up or active on start-up, set by command). Everything written is stored
-    // and survives a reset or power cycle (inferred: the keypads have no 1010h "store"; the
-    // manuals call the written settings effective after a reset), except the run-time state
-    // below (LED maps, levels, keys), which a reset sets from the stored start-up defaults.
+    // show, set by command); kept across resets (docs/virtual-keypad.md, "stored settings").
     static constexpr std::size_t idx(object o) noexcept { return static_cast<std::size_t>(o); }
     constexpr std::uint32_t value(object o) const noexcept { return value_[idx(o)]; }
 
@@ -331,8 +294,7 @@ private:
         }
     }
 
-    // The codec's row of a full row, and the model's layout (its dictionary's lookups: M's alone
-    // for a model_constant): what the value kinds read.
+    // The codec's row of a full row, and the model's layout: what the value kinds read.
     constexpr const powerkey::detail::codec_row& codec_row_of(const object_row& r) const noexcept {
         return powerkey::detail::codec_row_at(
             layout(),
@@ -368,9 +330,7 @@ private:
     constexpr leds& map_of(object o) noexcept { return is_blink(o) ? blink_ : on_; }
     constexpr const leds& map_of(object o) const noexcept { return is_blink(o) ? blink_ : on_; }
 
-    // The value a read of row r gives now: an LED object packed from the maps as its kind packs
-    // it (value_kinds.hpp), the keys pressed, a COB-ID with the node in use, the run-time
-    // levels, or the stored value.
+    // The value a read of row r gives now.
     constexpr std::uint32_t current(const object_row& r) const noexcept {
         const value_kind kind = info(r.id).kind;
         if (kind == value_kind::keys) return static_cast<std::uint32_t>(keys_.mask());
@@ -399,11 +359,8 @@ private:
 
     // --- boot and NMT -------------------------------------------------------------------------
 
-    // Boot (power on, reset node, PKP node change): the stored settings take effect (node id,
-    // baud rate, a restore of the defaults written to 1011h), the run-time state starts from
-    // the stored start-up values (PK1000 19 d-f, PKP 13 i-k), the boot-up message goes out
-    // unless 2011h / command 13h turned it off (PK1000 8, 21; PKP 8, 13 g), and the keypad is
-    // pre-operational, or operational when 2012h / command 10h says so (PK1000 22; PKP 13 d).
+    // Boot (power on, reset node, PKP node change; docs/virtual-keypad.md, "power on"): the
+    // run-time state from the stored start-up values (PK1000 19 d-f, PKP 13 i-k).
     constexpr void boot(millis t) noexcept {
         if (restore_pending_) {
             factory_defaults();
@@ -418,8 +375,7 @@ private:
         backlight_.colour = static_cast<backlight_colour>(value(object::default_backlight_colour));
         // keys_ stay: a key held through a reboot is still held
         boot_time_ = t;
-        // J1939 stored: by 20FFh on a model with the switch, or from the factory on any model
-        // that speaks J1939 (keypad_options::start_in_j1939).
+        // J1939 stored: by 20FFh, or from the factory (keypad_options::start_in_j1939).
         if (value(object::protocol_j1939) != 0 && speaks_j1939(model_)) {
             reset_communication(t, run_state::j1939);
             j1939_.boot(t, keys_, false, sink());
@@ -428,9 +384,8 @@ private:
         reset_communication(t, value(object::active_on_startup) != 0 ? run_state::operational
                                                                      : run_state::pre_operational);
     }
-    // Reset communication (CiA 301 7.3.2.2.1), alone or as part of a boot: the pending node id
-    // and baud rate take effect and the boot-up goes out; the application (LEDs, levels) keeps
-    // its state (inferred: the manuals do not print 82h).
+    // Reset communication (CiA 301 7.3.2.2.1), alone or as part of a boot: LEDs and levels kept
+    // (inferred: the manuals do not print 82h).
     constexpr void reset_communication(millis t,
                                        run_state to = run_state::pre_operational) noexcept {
         node_ = canopen::node_id::make(value(object::node_id)).value_or(canopen::default_node_id);
@@ -458,8 +413,7 @@ private:
         next_periodic_ = t + duration_ms{p};
     }
 
-    // NMT (PK1000 4-7, PKP 4-7): start, stop (02h, and 00h "old sw compatibility"), enter
-    // pre-operational, reset node, reset communication; to this node or to all (00h).
+    // NMT (PK1000 4-7, PKP 4-7), to this node or to all (00h).
     constexpr void on_nmt(const can::frame& f, millis t) noexcept {
         const auto m = canopen::decode_nmt(f);
         if (!m) return;
@@ -510,8 +464,7 @@ private:
     constexpr std::uint32_t periodic_ms() const noexcept {
         return event_driven() ? value(object::tpdo1_event_timer) : 0;
     }
-    // The key-state PDO (PK1000 11, PKP 10): key bits little-endian in bytes 0..3, the tick
-    // timer in byte 4.
+    // The key-state PDO (PK1000 11, PKP 10): key bits in bytes 0..3, the tick in byte 4.
     constexpr void send_keys(millis t) noexcept {
         can::payload p{};
         powerkey::detail::store_le<4>(p, 0, static_cast<std::uint32_t>(keys_.mask()));
@@ -520,8 +473,7 @@ private:
         if (periodic_ms() != 0) next_periodic_ = t + duration_ms{periodic_ms()};
     }
 
-    // SYNC (PK1000 10, 38, 39, 46): buffered RPDOs are applied; a synchronous TPDO goes out
-    // every n-th SYNC. PDOs only when operational.
+    // SYNC (PK1000 10, 38, 39, 46): buffered RPDOs, and a synchronous TPDO every n-th SYNC.
     constexpr void on_sync(const can::frame& f, millis t) noexcept {
         if (f.size() != 0 || state_ != run_state::operational) return;
         for (auto& b : rpdo_buffer_) {
@@ -537,8 +489,7 @@ private:
         }
     }
 
-    // RPDOs (PK1000 12-15, PKP 11-12): only when operational (PK1000 11 "the keypad must be
-    // activated"); 1400h/1401h types 00h..F0h hold the PDO until the next SYNC (PK1000 10, 38).
+    // RPDOs (PK1000 12-15, PKP 11-12), held until the next SYNC by types 00h..F0h (PK1000 10, 38).
     constexpr void on_rpdo(const can::frame& f, millis) noexcept {
         if (state_ != run_state::operational) return;
         const auto m = read_frame(f);
@@ -687,9 +638,7 @@ private:
         reply(sdo_payload(0x60, a), t, then);
     }
 
-    // Checks a written value against its row as the codec does (its kind's check,
-    // value_kinds.hpp) and applies it; the abort code when refused. An LED object's value is
-    // merged into its map (the LEDs its kind covers); the command module runs its command.
+    // Checks a written value as the codec does (value_kinds.hpp), applies it; the abort, if any.
     using refusal = std::optional<canopen::sdo_abort_code>;
     constexpr refusal check_and_apply(const object_row& r, const can::frame& f, std::uint32_t v,
                                       after_reply& then, millis t) noexcept {
@@ -780,10 +729,9 @@ private:
         }
         return std::nullopt;
     }
-    // PKP 13 a: one key's LED. x on / x blink / x alternate blink set the plane in the on map,
-    // the blink map, or both (both = alternate blink, PKP 12). The two-colour states are
-    // inferred from the PKP 12 "alternate" example: red and green blink, and the on map holds
-    // green for red/green, red for amber/red, both (amber) for green/amber.
+    // PKP 13 a: one key's LED, in the on map, the blink map, or both (alternate blink, PKP 12).
+    // The two-colour states are inferred (docs/virtual-keypad.md, "LED, level, backlight state"):
+    // the on map holds green for red/green, red for amber/red, both (amber) for green/amber.
     constexpr void set_led_state(unsigned k, led_state s) noexcept {
         for (unsigned c = 0; c < 3; ++c) {
             on_.of(static_cast<plane>(c)).erase(k);
