@@ -1,27 +1,7 @@
-// powerkey: the common questions, answered from whichever frame carries the answer. Each is named
-// by the fact it answers (never by a message type), takes any decoded message and returns the
-// fact when this message states it, nullopt otherwise:
-//
-//   if (const auto msg = decode(f, node, model::pkp2400))
-//       if (const auto keys = pressed_keys(*msg); keys && keys->contains(3)) ...
-//
-//   pressed_keys          key-state PDO, a read reply of `keys` (2000h sub 1, 6000h), a J1939
-//                         heartbeat (every key) or key contact state (one key)
-//   key_change            the same, with the keys the frame states (a key contact state: one)
-//   led_on_map            LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h,
-//   led_blink_map         PK1000 and SI 2001h per colour or in pieces): the map, and the LEDs it
-//                         covers; these two take the model, which says which LEDs a frame covers
-//   led_brightness_level  LED brightness PDO, a write or read reply of `led_brightness`, command
-//                         02h, J1939 command 02h
-//   backlight_change      backlight PDO, writes and read replies of the backlight objects,
-//                         commands 03h and 04h, J1939 command 03h: the level and/or the colour
-//                         the frame sets
-//   node_id_change        a write of `node_id` (2013h) or command 70h
-//   address_change        J1939 command 70h: the keypad's new source address
-//   reported_nmt_state    a heartbeat or boot-up message
-// The "default_..." objects and commands set what the keypad shows after the next power on, not
-// now, so they answer none of these; nor do the J1939 LED commands, which set colours, not the
-// planes of an LED map.
+// powerkey: the common questions, answered from whichever frame carries the answer: each takes
+// any decoded message and returns the fact when it states it, nullopt otherwise (docs/decoder.md,
+// "Accessors": which frames answer each).
+
 #ifndef POWERKEY_KEYPAD_ACCESSORS_HPP
 #define POWERKEY_KEYPAD_ACCESSORS_HPP
 

@@ -1,24 +1,7 @@
-// powerkey: every message of every keypad, as one flat type.
-//
-//   message = variant<nmt_message, sync_message, heartbeat_message, switch_to_canopen,
-//                     key_state, led_on, led_blink, led_brightness, backlight,
-//                     sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
-//                     sdo_upload_initiate_response, sdo_segment_request, sdo_segment_response,
-//                     sdo_abort_request, sdo_abort_response,
-//                     encoder_state, analog_inputs, encoder_leds,      (the PKP-3500-MT's)
-//                     j1939::key_contact, j1939::heartbeat, j1939::software_revision,
-//                     j1939::led_ack, j1939::led_ack_code, j1939::address_claimed,
-//                     j1939::set_led, j1939::set_led_code, j1939::multiple_leds,
-//                     j1939::command>                  (J1939, keypad/j1939_messages.hpp)
-//
-// One type for both protocols: a keypad switches between them on the same bus (20FFh, 80h), so a
-// log, a session and a tool meet both; the J1939 kinds start with "j1939_" (docs/j1939.md, "One
+// powerkey: every message of every keypad, CANopen and J1939, as one flat type, each struct with
+// its `kind` and `fields(self, f)` (docs/decoder.md, "The message type"; docs/j1939.md, "One
 // vocabulary").
-//
-// Each struct follows the kind/fields convention (fields.hpp): a stable `kind` and `fields(self,
-// f)`, which names every field the frame carries. The names are the same for every model: the
-// key-state PDO's "keys" and "tick", an LED map's "red", "green", "blue", a level's "level".
-// An SDO value's fields depend on its object's value kind (value_kinds.hpp).
+
 #ifndef POWERKEY_KEYPAD_MESSAGES_HPP
 #define POWERKEY_KEYPAD_MESSAGES_HPP
 

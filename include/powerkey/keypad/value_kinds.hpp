@@ -1,21 +1,5 @@
-// powerkey: what each value kind of an SDO object means, one home per kind (objects.hpp names
-// each object's kind). A kind says, together:
-//   fields(o, v, f)           the fields a value shows (sdo_write, sdo_read_reply: messages.hpp)
-//   check(m, r, size, data, write)
-//                             the decoder's check of the wire value against the model and the
-//                             object's row (codec.hpp); the virtual keypad runs the same check
-//                             on what it is sent
-//   value(m, r, size, data)   the value a checked wire value holds
-//   pack(m, r, v)             the wire value of a value (the encoder; the virtual keypad reads
-//                             an LED object from its maps this way)
-//   size(m, r, carried)       its expedited bytes
-//   used_bits(m, r)           the bits a valid value may set: a frame cut before the bytes of the
-//                             others still says the whole value (codec.hpp, tolerant reading)
-//   covered(m, r)             for the LED kinds, the LEDs a value states (the accessors'
-//                             led_map_update, the virtual keypad's merge into its maps)
-//   abort_for(e, data, r)     the SDO abort a keypad answers a refused write with
-// and one builder per kind for code that writes a value. Adding a kind is its row in
-// POWERKEY_VALUE_KINDS and its struct here; visit_kind dispatches on the list.
+// powerkey: what each value kind of an SDO object means, one home per kind: its fields, check,
+// value, packing, size, used bits, covered LEDs and abort (docs/decoder.md, "SDO values").
 #ifndef POWERKEY_KEYPAD_VALUE_KINDS_HPP
 #define POWERKEY_KEYPAD_VALUE_KINDS_HPP
 
@@ -39,9 +23,7 @@
 
 namespace powerkey {
 
-// The value of an object, stored as it travels: `raw` the little-endian number of the expedited
-// bytes, `map` for the LED kinds, `size` for a string piece (1..4 bytes, 0 for other kinds).
-// Members a kind does not use stay zero; fields() shows it typed by the object's kind.
+// The value of an object, as it travels (docs/decoder.md, "SDO values").
 struct object_value {
     std::uint32_t raw = 0;
     leds map{};
@@ -79,8 +61,7 @@ struct kind_defaults {
     static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
         return 0xFFFF'FFFF;
     }
-    // A refused write's abort (the virtual keypad): bits that name nothing are an invalid value,
-    // a number outside its range too low or too high (CiA 301 table 22).
+    // A refused write's abort: invalid_value, or too low or too high (CiA 301 table 22).
     static constexpr canopen::sdo_abort_code abort_for(errc e, std::uint32_t data,
                                                        const codec_row& r) noexcept {
         if (e != errc::value_out_of_range) return canopen::sdo_abort_code::invalid_value;
@@ -557,9 +538,7 @@ constexpr void value_fields(object id, V& v, F& f) {
     visit_kind(o.kind, [&o, &v, &f](auto k) { decltype(k)::fields(o, v, f); });
 }
 
-// --- building values ----------------------------------------------------------------------------
-// The value of an object of each kind, for code that writes one: sdo_write{object::node_id,
-// node_value(canopen::node_id{0x3A})}. Kinds of several fields are set through fields().
+// --- building values (docs/decoder.md, "SDO values": kinds of several fields use fields()) -------
 
 [[nodiscard]] constexpr object_value number_value(std::uint32_t v) noexcept { return {v, {}, 0}; }
 [[nodiscard]] constexpr object_value flag_value(bool on) noexcept { return {on ? 1u : 0u, {}, 0}; }
