@@ -16,9 +16,7 @@
 
 namespace powerkey {
 
-// The keys a frame says are pressed. A J1939 key contact state names one key: its set is that
-// key when pressed and empty when released, whatever the other keys do (key_change says which
-// keys a frame covers).
+// The keys a frame says are pressed (a J1939 key contact state: its one key, or none).
 [[nodiscard]] constexpr std::optional<key_set> pressed_keys(const message& msg) noexcept {
     if (const auto* k = std::get_if<key_state>(&msg)) return k->keys;
     if (const auto* r = std::get_if<sdo_read_reply>(&msg); r && r->object == object::keys)
@@ -32,9 +30,7 @@ namespace powerkey {
     return std::nullopt;
 }
 
-// The keys a frame states (`covered`) and which of them are pressed: every key of the model for
-// a key-state PDO, a read of `keys` and a J1939 heartbeat; the one key of a J1939 key contact
-// state (the others keep theirs).
+// The keys a frame states (`covered`) and which of them are pressed.
 struct key_update {
     key_set pressed;
     key_set covered;
@@ -53,10 +49,7 @@ struct key_update {
     return key_update{*keys, covered};
 }
 
-// An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states (the
-// others keep theirs). A PDO covers every LED of the model; a PK1000 or SI register one plane; a
-// PKP 6001h the planes that fit 32 bits (red and green on the PKP-2600); a PKP-2600-SI piece the
-// LEDs of its bits.
+// An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states.
 struct led_map_update {
     leds map;
     leds covered;
@@ -65,12 +58,6 @@ struct led_map_update {
 };
 
 namespace detail {
-constexpr leds planes_covered(const model_info& keypad, unsigned planes) noexcept {
-    leds c;
-    for (unsigned p = 0; p < planes; ++p)
-        c.of(static_cast<plane>(p)) = led_set::from_mask(keypad.led_mask);
-    return c;
-}
 // The carriers of one map: its PDO type and its objects (whole, per plane, pieces).
 struct led_objects {
     object whole, red, green, blue, part1, part2, part3;
@@ -104,7 +91,7 @@ constexpr std::optional<led_map_update> led_map_of(const message& msg, model m,
     const auto keypad = info(m);
     if (!keypad) return std::nullopt;
     if (const auto* p = std::get_if<Pdo>(&msg))
-        return led_map_update{p->map, planes_covered(*keypad, keypad->planes)};
+        return led_map_update{p->map, planes_of(layout(m), 0, keypad->planes)};
     if (const auto* w = std::get_if<sdo_write>(&msg))
         return map_of_object(*keypad, w->object, w->value, o);
     if (const auto* r = std::get_if<sdo_read_reply>(&msg))
@@ -186,8 +173,8 @@ struct backlight_update {
     return std::nullopt;
 }
 
-// The J1939 source address a message moves the keypad to (command 70h; FFh there keeps it), if
-// it does.
+// The J1939 source address a message moves the keypad to (command 70h; FFh keeps it), if any.
+
 [[nodiscard]] constexpr std::optional<std::uint8_t> address_change(const message& msg) noexcept {
     if (const auto* c = std::get_if<j1939::command>(&msg);
         c && c->code == j1939::command_code::set_source_address && c->address != 0xFF)

@@ -564,7 +564,6 @@ constexpr std::uint8_t bytes_of(std::uint64_t mask) noexcept {
 
 // How many leading bytes of msg's frame may carry anything on this keypad (docs/decoder.md,
 // "trimmed"); `printed` is msg's frame in the manual's form.
-
 template <class Layout>
 constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
                                    const can::frame& printed) noexcept {
@@ -585,11 +584,10 @@ constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
             } else if constexpr (std::is_same_v<T, backlight>) {
                 return keypad.backlight_colour ? 2 : 1;
             } else if constexpr (std::is_same_v<T, encoder_state> ||
-                                 std::is_same_v<T, encoder_leds>) {
-                return 4;
-            } else if constexpr (std::is_same_v<T, sdo_read> ||
+                                 std::is_same_v<T, encoder_leds> || std::is_same_v<T, sdo_read> ||
                                  std::is_same_v<T, sdo_write_reply>) {
-                return 4;  // the specifier and the address
+                return 4;  // an SDO's specifier and address
+
             } else if constexpr (std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply>) {
                 const auto key = canopen::sdo_word::of(printed).key();

@@ -142,8 +142,7 @@ struct sdo_write_reply {
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
-// Every frame any keypad speaks or hears, in CANopen and in J1939 (the switch back, 80h, is one
-// alternative of both).
+// Every frame any keypad speaks or hears, in CANopen and in J1939.
 using message =
     std::variant<canopen::nmt_message, canopen::sync_message, canopen::heartbeat_message,
                  j1939::switch_to_canopen, key_state, led_on, led_blink, led_brightness, backlight,
@@ -155,15 +154,14 @@ using message =
                  j1939::led_ack_code, j1939::address_claimed, j1939::set_led, j1939::set_led_code,
                  j1939::multiple_leds, j1939::command>;
 
-// A J1939 frame of the keypads: its message in the one vocabulary (every J1939 alternative is
-// one of message's).
+// A J1939 frame of the keypads: its message in the one vocabulary.
 [[nodiscard]] constexpr message to_message(const j1939::message& msg) noexcept {
     return std::visit([](const auto& v) { return message{v}; }, msg);
 }
 
-// How msg's frame was written: the manual's form, or trimmed or padded (frame_form.hpp); decode
-// sets it and encode ignores it (it builds the manual's form). A J1939 frame always has its 8
-// bytes (the J1939 messages but the switch have no `form`: always the manual's).
+// How msg's frame was written (docs/decoder.md, "Tolerant and strict reading"); a J1939 message
+// without `form` always has the manual's.
+
 [[nodiscard]] constexpr frame_form form_of(const message& msg) noexcept {
     return std::visit(
         [](const auto& s) {

@@ -210,18 +210,14 @@ struct keys : detail::kind_defaults {
         proxy_field_keys(v, f);
         if (!std::is_const_v<V> || v.size != 0) f("size", v.size);
     }
-    // A row of size 0 (2000h sub 01h of the SI keypads without a manual, docs/si-family.md):
-    // 2 bytes, as the SI manuals print it, or 1 byte on a keypad of 8 keys or fewer, as
-    // controllers of the PKP-2400-SI read it. Both accepted (inferred); the value keeps size 1
-    // for a 1-byte reply, so that encode rebuilds it (0: the 2-byte form).
+    // A row of size 0 (the SI keys): 2 bytes, or 1 on 8 keys or fewer (inferred;
+    // docs/si-family.md).
     static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
                                        std::uint8_t carried) noexcept {
         if (r.size() != 0) return r.size();
         return carried == 1 && keypad.keys <= 8 ? 1 : 2;
     }
-    // The size's low bit: 1 only for the 1-byte reply (the size is checked by then, and every keys
-    // row is of size 0, 2 or 4: static_assert below). A test of the row cost the common SDO
-    // values 4 instructions a frame.
+    // The size's low bit: 1 only for the 1-byte reply (keys_rows_even; docs/performance.md).
     static constexpr object_value value(const m_layout&, const codec_row&, std::uint8_t size,
                                         std::uint32_t data) noexcept {
         return {data, {}, static_cast<std::uint8_t>(size & 1)};
@@ -509,9 +505,9 @@ POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_kind(value_kind k, F&& f) 
     return f(value_kinds::none{});
 }
 
-// visit_kind of a row of keypad's dictionary: for a model known when the program is built
-// (detail::fixed_layout), only the kinds its dictionary has are in the program (any other k, which
-// no row of it has, is none's).
+// visit_kind of a row of keypad's dictionary: for a fixed_layout, only its dictionary's kinds (any
+// other k is none's).
+
 template <class Layout, class F>
 POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_row_kind(const Layout&, value_kind k, F&& f) {
     if constexpr (detail::is_fixed_layout<Layout>) {
