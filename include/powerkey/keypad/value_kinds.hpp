@@ -13,6 +13,7 @@
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
+#include <powerkey/names.hpp>
 #include <powerkey/result.hpp>
 
 #include <array>
@@ -185,8 +186,7 @@ struct node : detail::one_number {
     }
 };
 // "period_ms": 0 is off, any other value within the row's range (E-PK-8, E-PKP-7).
-struct period : detail::kind_defaults {
-    static constexpr bool common = true;
+struct period : detail::one_number {
     template <class V, class F>
     static constexpr void fields(const object_info&, V& v, F& f) {
         f("period_ms", v.raw);
@@ -196,9 +196,6 @@ struct period : detail::kind_defaults {
         if (data != 0 && !detail::value_ranges[r.a].contains(data)) return errc::value_out_of_range;
         return errc{};
     }
-    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row& r) noexcept {
-        return detail::range_bits(r);
-    }
 };
 // "keys": key bits 0..N-1; a bit above the model's keys is reserved.
 struct keys : detail::kind_defaults {
@@ -207,7 +204,9 @@ struct keys : detail::kind_defaults {
     // sees it only then; a writer may always set it).
     template <class V, class F>
     static constexpr void fields(const object_info&, V& v, F& f) {
-        proxy_field_keys(v, f);
+        detail::proxy_field<key_set>(
+            v, f, "keys", [](const auto& s) { return key_set::from_mask(s.raw); },
+            [](auto& s, key_set x) { s.raw = static_cast<std::uint32_t>(x.mask()); });
         if (!std::is_const_v<V> || v.size != 0) f("size", v.size);
     }
     // A row of size 0 (the SI keys): 2 bytes, or 1 on 8 keys or fewer (inferred;
@@ -231,14 +230,6 @@ struct keys : detail::kind_defaults {
     static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row&) noexcept {
         return ~keypad.not_keys;
     }
-
-private:
-    template <class V, class F>
-    static constexpr void proxy_field_keys(V& v, F& f) {
-        detail::proxy_field<key_set>(
-            v, f, "keys", [](const auto& s) { return key_set::from_mask(s.raw); },
-            [](auto& s, key_set x) { s.raw = static_cast<std::uint32_t>(x.mask()); });
-    }
 };
 constexpr bool keys_rows_even() noexcept {
     for (const codec_row& r : detail::codec_rows)
@@ -253,7 +244,7 @@ struct led_plane : detail::kind_defaults {
     static constexpr bool led = true;
     template <class V, class F>
     static constexpr void fields(const object_info& o, V& v, F& f) {
-        f(to_plane_name(o.holds), v.map.of(o.holds));
+        f(to_string(o.holds), v.map.of(o.holds));
     }
     static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
                                        std::uint8_t) noexcept {
@@ -280,11 +271,6 @@ struct led_plane : detail::kind_defaults {
     }
     static constexpr leds covered(const m_layout& keypad, const codec_row& r) noexcept {
         return detail::planes_of(keypad, r.a, 1);
-    }
-
-private:
-    static constexpr std::string_view to_plane_name(plane p) noexcept {
-        return p == plane::red ? "red" : p == plane::green ? "green" : "blue";
     }
 };
 // "red", "green", "blue": the planes of the model's map that fit 32 bits (PKP 6001h/6002h).
