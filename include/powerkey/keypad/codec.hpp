@@ -861,10 +861,8 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
     else
         return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
-// A command checks itself as read_command reads it: unknown_command, read_param on each byte
-// written, and value_out_of_range for a member its code does not carry left set (one masked
-// compare of command_word; `enabled` apart). command_word_bits(p): the byte of command_word
-// that carries p (tests/test_keypad_commands.cpp holds the two to each other).
+// A command checks itself as read_command reads it (docs/performance.md, "The codec's shape").
+// command_word_bits(p): the byte of command_word that carries p (test_keypad_commands.cpp).
 constexpr std::uint64_t command_word(const command& c) noexcept {
     const std::uint32_t low = std::uint32_t{c.key} |
                               std::uint32_t{static_cast<std::uint8_t>(c.state)} << 8 |
@@ -994,9 +992,8 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
     }
 }
 
-// f read at the one length its identifier has in the manuals, trimmed or padded (docs/decoder.md,
-// "Tolerant and strict reading"), by the strict front (no recursion). The node is the frame's
-// own: NMT and SYNC read the same for every node.
+// f read at its identifier's manual length by the strict front (docs/decoder.md, "Tolerant and
+// strict reading"); the node is the frame's own (NMT and SYNC read the same for every node).
 template <bool j1939, class Layout>
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
                                                       const Layout& keypad) noexcept {
@@ -1090,8 +1087,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
     return detail::decode_on<false>(f, node, m, how);
 }
 
-// decode with the model known when the program is built (docs/decoder.md, "The model known at
-// compile time").
+// decode with the model known when the program is built (docs/decoder.md).
 template <model M>
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
     const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
@@ -1146,8 +1142,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_alternative(const Lay
 }
 }  // namespace detail
 
-// The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code,
-// and no decoder for one that checks itself (own_check, own_frame).
+// encode of one CANopen alternative: no J1939 code, no decoder for one that checks itself.
 template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {

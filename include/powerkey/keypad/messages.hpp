@@ -73,8 +73,7 @@ struct backlight {
 };
 
 // TPDO2 280h + node (encoder 1) and TPDO3 380h + node (encoder 2), PKP-3500-MT sections 12, 13:
-//   byte 0 X YYYYYYY (X 1 = counterclockwise, Y ticks since the last message) | counter LSB MSB |
-//   TOP (00h none, 02h..10h) | 00h x 4
+// bit 7 counterclockwise, bits 0..6 ticks | counter LSB MSB | TOP | 00h x 4.
 struct encoder_state {
     POWERKEY_DETAIL_MESSAGE(encoder_state);
     POWERKEY_DETAIL_FIELDS(f("encoder", self.encoder), f("counterclockwise", self.counterclockwise),
