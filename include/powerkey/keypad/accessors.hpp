@@ -1,7 +1,6 @@
 // powerkey: the common questions, answered from whichever frame carries the answer: each takes
 // any decoded message and returns the fact when it states it, nullopt otherwise (docs/decoder.md,
 // "Accessors": which frames answer each).
-
 #ifndef POWERKEY_KEYPAD_ACCESSORS_HPP
 #define POWERKEY_KEYPAD_ACCESSORS_HPP
 
@@ -174,7 +173,6 @@ struct backlight_update {
 }
 
 // The J1939 source address a message moves the keypad to (command 70h; FFh keeps it), if any.
-
 [[nodiscard]] constexpr std::optional<std::uint8_t> address_change(const message& msg) noexcept {
     if (const auto* c = std::get_if<j1939::command>(&msg);
         c && c->code == j1939::command_code::set_source_address && c->address != 0xFF)

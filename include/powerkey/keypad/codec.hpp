@@ -587,7 +587,6 @@ constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
                                  std::is_same_v<T, encoder_leds> || std::is_same_v<T, sdo_read> ||
                                  std::is_same_v<T, sdo_write_reply>) {
                 return 4;  // an SDO's specifier and address
-
             } else if constexpr (std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply>) {
                 const auto key = canopen::sdo_word::of(printed).key();
@@ -1214,7 +1213,6 @@ requires(!detail::own_pdo<T> && !std::is_same_v<T, command>) [[nodiscard]] POWER
 }
 
 // encode(node, M, msg) of any message.
-
 template <model M>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
                                                   const message& msg) noexcept {

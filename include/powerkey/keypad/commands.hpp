@@ -85,7 +85,6 @@ inline constexpr baud_rate command_bauds[] = {baud_rate::kbit_125, baud_rate::kb
 inline constexpr startup_show command_shows[] = {startup_show::complete, startup_show::fast_flash,
                                                  startup_show::disabled};
 inline constexpr auto command_index =
-
     index_by_code<0x80>(command_table, [](const auto& row) { return row.code; });
 }  // namespace detail
 
@@ -96,8 +95,7 @@ inline constexpr auto command_index =
     return detail::command_table[detail::command_index[code] - 1u];
 }
 
-// One command. `code` says which; its row says which of the other members it carries (the rest
-// stay at their defaults, so that two equal commands compare equal).
+// One command: `code` and the members its row carries, the rest at defaults (docs/decoder.md).
 struct command {
     POWERKEY_DETAIL_MESSAGE(command);
     template <class Self, class F>

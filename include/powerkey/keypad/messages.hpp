@@ -1,7 +1,6 @@
 // powerkey: every message of every keypad, CANopen and J1939, as one flat type, each struct with
 // its `kind` and `fields(self, f)` (docs/decoder.md, "The message type"; docs/j1939.md, "One
 // vocabulary").
-
 #ifndef POWERKEY_KEYPAD_MESSAGES_HPP
 #define POWERKEY_KEYPAD_MESSAGES_HPP
 
@@ -160,7 +159,6 @@ using message =
 
 // How msg's frame was written (docs/decoder.md, "Tolerant and strict reading"); a J1939 message
 // without `form` always has the manual's.
-
 [[nodiscard]] constexpr frame_form form_of(const message& msg) noexcept {
     return std::visit(
         [](const auto& s) {

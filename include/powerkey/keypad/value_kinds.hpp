@@ -237,8 +237,7 @@ constexpr bool keys_rows_even() noexcept {
     return true;
 }
 static_assert(keys_rows_even(), "keys::value reads the 1-byte reply by the size's low bit");
-// "red" | "green" | "blue": one plane of an LED map (PK1000 2001h/2002h per colour; the SI
-// per-colour planes, whose size is the model's stride / 8 where the row leaves it 0).
+// "red" | "green" | "blue": one plane of an LED map (PK1000 2001h/2002h per colour, SI planes).
 struct led_plane : detail::kind_defaults {
     static constexpr bool common = true;
     static constexpr bool led = true;
@@ -493,7 +492,6 @@ POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_kind(value_kind k, F&& f) 
 
 // visit_kind of a row of keypad's dictionary: for a fixed_layout, only its dictionary's kinds (any
 // other k is none's).
-
 template <class Layout, class F>
 POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_row_kind(const Layout&, value_kind k, F&& f) {
     if constexpr (detail::is_fixed_layout<Layout>) {
