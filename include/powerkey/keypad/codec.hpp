@@ -442,7 +442,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         case 0x6: {  // RPDO2 LEDs blinking
             if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
-            // unpack_leds(keypad, v, keypad.planes); blue shifted twice (no 64-bit shift by 64).
+            // unpack_leds(keypad, v, keypad.planes); blue shifted twice (never by 64 at once).
             if ((v & ~keypad.led_bits) != 0) return errc::reserved_not_zero;
             const std::uint64_t up = v >> keypad.stride;
             const leds l{led_set::from_mask(v & keypad.led_mask),
@@ -511,7 +511,7 @@ constexpr result<message> decode_j1939(model m, const can::frame& f,
                                        j1939::keypad_address address) noexcept {
     return j1939::detail::decode_as<message>(f, m, address);
 }
-// The same at any address, from the front's default case (docs/performance.md, issue 21).
+// The same at any address, from the front's default case (docs/performance.md, J1939).
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
     return j1939::detail::decode_frame<message>(f, j1939::detail::j1939_row_of(keypad.id),
