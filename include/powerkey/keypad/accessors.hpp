@@ -1,27 +1,6 @@
-// powerkey: the common questions, answered from whichever frame carries the answer. Each is named
-// by the fact it answers (never by a message type), takes any decoded message and returns the
-// fact when this message states it, nullopt otherwise:
-//
-//   if (const auto msg = decode(f, node, model::pkp2400))
-//       if (const auto keys = pressed_keys(*msg); keys && keys->contains(3)) ...
-//
-//   pressed_keys          key-state PDO, a read reply of `keys` (2000h sub 1, 6000h), a J1939
-//                         heartbeat (every key) or key contact state (one key)
-//   key_change            the same, with the keys the frame states (a key contact state: one)
-//   led_on_map            LED-on PDO, a write or read reply of the LED-on objects (PKP 6001h,
-//   led_blink_map         PK1000 and SI 2001h per colour or in pieces): the map, and the LEDs it
-//                         covers; these two take the model, which says which LEDs a frame covers
-//   led_brightness_level  LED brightness PDO, a write or read reply of `led_brightness`, command
-//                         02h, J1939 command 02h
-//   backlight_change      backlight PDO, writes and read replies of the backlight objects,
-//                         commands 03h and 04h, J1939 command 03h: the level and/or the colour
-//                         the frame sets
-//   node_id_change        a write of `node_id` (2013h) or command 70h
-//   address_change        J1939 command 70h: the keypad's new source address
-//   reported_nmt_state    a heartbeat or boot-up message
-// The "default_..." objects and commands set what the keypad shows after the next power on, not
-// now, so they answer none of these; nor do the J1939 LED commands, which set colours, not the
-// planes of an LED map.
+// powerkey: the common questions, answered from whichever frame carries the answer: each takes
+// any decoded message and returns the fact when it states it, nullopt otherwise (docs/decoder.md,
+// "Accessors": which frames answer each).
 #ifndef POWERKEY_KEYPAD_ACCESSORS_HPP
 #define POWERKEY_KEYPAD_ACCESSORS_HPP
 
@@ -36,9 +15,7 @@
 
 namespace powerkey {
 
-// The keys a frame says are pressed. A J1939 key contact state names one key: its set is that
-// key when pressed and empty when released, whatever the other keys do (key_change says which
-// keys a frame covers).
+// The keys a frame says are pressed (a J1939 key contact state: its one key, or none).
 [[nodiscard]] constexpr std::optional<key_set> pressed_keys(const message& msg) noexcept {
     if (const auto* k = std::get_if<key_state>(&msg)) return k->keys;
     if (const auto* r = std::get_if<sdo_read_reply>(&msg); r && r->object == object::keys)
@@ -52,9 +29,7 @@ namespace powerkey {
     return std::nullopt;
 }
 
-// The keys a frame states (`covered`) and which of them are pressed: every key of the model for
-// a key-state PDO, a read of `keys` and a J1939 heartbeat; the one key of a J1939 key contact
-// state (the others keep theirs).
+// The keys a frame states (`covered`) and which of them are pressed.
 struct key_update {
     key_set pressed;
     key_set covered;
@@ -73,10 +48,7 @@ struct key_update {
     return key_update{*keys, covered};
 }
 
-// An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states (the
-// others keep theirs). A PDO covers every LED of the model; a PK1000 or SI register one plane; a
-// PKP 6001h the planes that fit 32 bits (red and green on the PKP-2600); a PKP-2600-SI piece the
-// LEDs of its bits.
+// An LED map a frame carries: `map`, and `covered`, the LEDs whose state the frame states.
 struct led_map_update {
     leds map;
     leds covered;
@@ -85,12 +57,6 @@ struct led_map_update {
 };
 
 namespace detail {
-constexpr leds planes_covered(const model_info& keypad, unsigned planes) noexcept {
-    leds c;
-    for (unsigned p = 0; p < planes; ++p)
-        c.of(static_cast<plane>(p)) = led_set::from_mask(keypad.led_mask);
-    return c;
-}
 // The carriers of one map: its PDO type and its objects (whole, per plane, pieces).
 struct led_objects {
     object whole, red, green, blue, part1, part2, part3;
@@ -124,7 +90,7 @@ constexpr std::optional<led_map_update> led_map_of(const message& msg, model m,
     const auto keypad = info(m);
     if (!keypad) return std::nullopt;
     if (const auto* p = std::get_if<Pdo>(&msg))
-        return led_map_update{p->map, planes_covered(*keypad, keypad->planes)};
+        return led_map_update{p->map, planes_of(layout(m), 0, keypad->planes)};
     if (const auto* w = std::get_if<sdo_write>(&msg))
         return map_of_object(*keypad, w->object, w->value, o);
     if (const auto* r = std::get_if<sdo_read_reply>(&msg))
@@ -206,8 +172,7 @@ struct backlight_update {
     return std::nullopt;
 }
 
-// The J1939 source address a message moves the keypad to (command 70h; FFh there keeps it), if
-// it does.
+// The J1939 source address a message moves the keypad to (command 70h; FFh keeps it), if any.
 [[nodiscard]] constexpr std::optional<std::uint8_t> address_change(const message& msg) noexcept {
     if (const auto* c = std::get_if<j1939::command>(&msg);
         c && c->code == j1939::command_code::set_source_address && c->address != 0xFF)

@@ -1,16 +1,8 @@
 // powerkey: every frame of every keypad behind two calls, driven by the model table:
-//
 //   decode(frame, node, model)     -> result<message>      any CAN frame to its meaning, or an errc
 //   encode(node, model, message)   -> result<can::frame>   the inverse: encode(decode(f)) == f
-//
-// `node` is the keypad's current node id: it picks the COB-IDs of the PDOs, SDOs and heartbeat.
-// A 29-bit frame is a J1939 one: the J1939 codec (keypad/j1939_codec.hpp) reads it, at whatever
-// address (an overload narrows to one keypad address, as `node` does in CANopen).
-// A frame that belongs to no keypad (another node, another function) is refused with
-// errc::wrong_id, never mis-decoded. encode refuses every message decode could never return
-// (a key or LED the model lacks, a value outside its object's range, a write to a read-only
-// object ...), with the error decode would give its frame: it builds the frame, decodes it, and
-// returns it only when the meaning comes back unchanged.
+// What each accepts and refuses: docs/decoder.md; why the code is shaped as it is:
+// docs/performance.md, "The codec's shape".
 #ifndef POWERKEY_KEYPAD_CODEC_HPP
 #define POWERKEY_KEYPAD_CODEC_HPP
 
@@ -51,12 +43,9 @@ constexpr result<message> answer(const T& v) noexcept {
     return result<message>(std::in_place, std::in_place_type<T>, v);
 }
 
-// A frame whose length is not the one its identifier has in the manuals goes from the length test
-// that finds it straight to `misfit`: read strictly, wrong_length; tolerantly, read again out of
-// line (reread, below). The reading is a template argument, so a frame of the manual's length
-// pays nothing for the tolerance. Defined here, before any use (clang evaluates a constant
-// expression only through functions defined where it is used); reread, defined after the front
-// it calls, is declared here.
+// A frame of a length its identifier does not have: wrong_length read strictly, else read again
+// (reread; docs/decoder.md, "Tolerant and strict reading"). Defined before any use: clang
+// evaluates a constant expression only through functions defined where it is used.
 template <bool j1939, class Layout>
 constexpr result<message> reread(const can::frame& f, const Layout& keypad) noexcept;
 template <reading how, class Frame, class Layout>
@@ -67,8 +56,7 @@ constexpr result<message> misfit(const Frame& f, const Layout& keypad) noexcept 
         return reread<true>(f, keypad);
 }
 
-// The answer of a decoder of the CiA 301 or J1939 layer (NMT, SYNC, the switch back), its
-// wrong_length read again as every other frame's.
+// A CiA 301 or J1939 decoder's answer (NMT, SYNC, the switch back), wrong_length as misfit's.
 template <reading how, class T, class Layout>
 constexpr result<message> lift(const result<T>& r, const can::frame& f,
                                const Layout& keypad) noexcept {
@@ -79,11 +67,7 @@ constexpr result<message> lift(const result<T>& r, const can::frame& f,
 // --- SDO values ---------------------------------------------------------------------------------
 // What each kind checks and reads is its own (value_kinds.hpp); here is only the dispatch.
 
-// The expedited size of row r's value: its own, or what its kind says when the row leaves it 0
-// (a per-colour SI plane: the model's stride / 8; the keys of an SI keypad without a manual: 2
-// bytes, or 1 on 8 keys or fewer; a string piece: what it carries). The kinds of size 0 are
-// tested here rather than through visit_kind: a jump on every SDO value cost
-// 4 instructions a frame (CHANGELOG.md); the static_assert keeps the shortcut honest.
+// The expedited size of row r's value: its own, or its kind's (K::size) when the row leaves it 0.
 constexpr std::uint8_t row_size(const model_layout& keypad, const codec_row& r,
                                 std::uint8_t carried) noexcept {
     if (r.size() != 0) return r.size();
@@ -91,9 +75,7 @@ constexpr std::uint8_t row_size(const model_layout& keypad, const codec_row& r,
     if (r.kind == value_kind::keys) return value_kinds::keys::size(keypad, r, carried);
     return value_kinds::string::size(keypad, r, carried);
 }
-// The same as the decoder tests it: the SI keys of two sizes take what they carry here and their
-// kind refuses a size that is neither (value_kinds::keys::check; a test of the kind here cost the
-// SDO rows 4 to 8 instructions a frame).
+// The same as the decoder tests it: the SI keys of two sizes check theirs in their kind.
 POWERKEY_DETAIL_INLINE constexpr std::uint8_t decoded_size(const model_layout& keypad,
                                                            const codec_row& r,
                                                            std::uint8_t carried) noexcept {
@@ -111,13 +93,11 @@ constexpr bool sized_rows_known() noexcept {
 }
 static_assert(sized_rows_known());
 
-// The largest value of each expedited size (a table: no 64-bit shift by a variable on a 32-bit
-// core).
+// The largest value of each expedited size (a table: no 64-bit shift by a variable).
 inline constexpr std::uint32_t largest_of_size[8] = {
     0, 0xFF, 0xFFFF, 0xFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF, 0xFFFF'FFFF};
 
-// The sdo_write (`write`) or sdo_read_reply of row r with value v. One function for both (not a
-// template): under -Os the value decoder is one copy; inlined, `write` is a constant.
+// The sdo_write (`write`) or sdo_read_reply of row r with value v.
 POWERKEY_DETAIL_HOT constexpr result<message> value_answer(const codec_row& r,
                                                            const object_value& v,
                                                            bool write) noexcept {
@@ -135,8 +115,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> kind_message(const model_layout
     return value_answer(r, K::value(keypad, r, size, data), write);
 }
 
-// The kinds that decoders meet rarely: out of line, so that the common ones need no frame (no
-// registers to save) in decode_request and decode_reply.
+// The kinds that decoders meet rarely (K::common false), out of line.
 POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& keypad,
                                                           const codec_row& r, std::uint8_t size,
                                                           std::uint32_t data, bool write) noexcept {
@@ -152,12 +131,8 @@ POWERKEY_DETAIL_COLD constexpr result<message> rare_value(const model_layout& ke
     return errc::unknown_object;
 }
 
-// The sdo_write (`write`: a download) or sdo_read_reply of row r's value in the `size` (1..4)
-// little-endian bytes of `data`. Errors: size_mismatch (not the row's size), reserved_not_zero
-// (bytes past the size), then the kind's (value_kinds.hpp: reserved_not_zero for bits that name no
-// key or LED and reserved bits, value_out_of_range outside the row's range, unknown_object for an
-// object without a value). One switch on the row's kind, the common kinds inlined, each case
-// returning its message: nothing is staged and copied.
+// The sdo_write (`write`) or sdo_read_reply of row r's value in the `size` (1..4) little-endian
+// bytes of `data`. Errors: size_mismatch, reserved_not_zero (bytes past the size), then K::check's.
 POWERKEY_DETAIL_HOT constexpr result<message> value_message(const model_layout& keypad,
                                                             const codec_row& r, std::uint8_t size,
                                                             std::uint32_t data,
@@ -258,8 +233,7 @@ constexpr std::uint8_t write_param(command_param p, const command& c) noexcept {
     return 0;
 }
 
-// The pairs of parameters (p1, p2) the rows of command_table have, each once, and the pair of
-// each row: the decoder has one body per pair, not per command.
+// The parameter pairs (p1, p2) of command_table, each once: one decoder body per pair.
 struct command_shape {
     command_param p1;
     command_param p2;
@@ -291,16 +265,13 @@ inline constexpr auto command_row_shapes = [] {
             all_command_shapes.find({command_table[i].p1, command_table[i].p2}) + 1);
     return t;
 }();
-// The pair + 1 of command byte `byte`, 0 for none, by a scan of the command table's rows: the
-// same answer as command_shape_index (a test holds the two to it for every byte) in a byte a row,
-// not 256 bytes.
+// command_shape_index[byte] by a scan of the rows (a test holds the two equal for every byte).
 constexpr std::uint8_t scan_command_shape(std::uint8_t byte) noexcept {
     for (std::size_t i = 0; i < std::size(command_table); ++i)
         if (static_cast<std::uint8_t>(command_table[i].code) == byte) return command_row_shapes[i];
     return 0;
 }
-// The pair + 1 of command byte `byte`: the byte table, or under -Os (POWERKEY_DETAIL_SIZE, a
-// firmware) the scan.
+// The pair + 1 of command byte `byte`: the table, or under -Os (POWERKEY_DETAIL_SIZE) the scan.
 constexpr std::uint8_t command_shape_of(std::uint8_t byte) noexcept {
     if constexpr (POWERKEY_DETAIL_SIZE)
         return scan_command_shape(byte);
@@ -308,11 +279,8 @@ constexpr std::uint8_t command_shape_of(std::uint8_t byte) noexcept {
         return command_shape_index[byte];
 }
 
-// The command `code` of parameter pair S in data bytes 4..7 (code, p1, p2, 00h). The pair is a
-// constant, so each read_param folds to its own check and store, and the command is built in
-// registers and written once into the caller's result. Errors after unknown_command, in this
-// order: reserved_not_zero (byte 7, or byte 6 of a one-parameter command, not 00h),
-// value_out_of_range (a parameter outside its range).
+// The command `code` of parameter pair S in data bytes 4..7 (code, p1, p2, 00h). Errors:
+// reserved_not_zero (byte 7, or byte 6 of a one-parameter command), then read_param's.
 template <std::size_t S>
 constexpr result<message> command_of(const model_layout& keypad, command_code code,
                                      std::uint32_t data) noexcept {
@@ -328,9 +296,8 @@ constexpr result<message> command_of(const model_layout& keypad, command_code co
     return answer(c);
 }
 
-// The command in a download to 6500h sub 1 (`size` bytes, `data` bytes 4..7 of the frame).
-// Errors, in this order: size_mismatch (not 4 bytes), unknown_command (byte 4 names no command),
-// then command_of's. One jump on the command's parameter pair.
+// The command in a download to 6500h sub 1. Errors: size_mismatch (not 4 bytes), unknown_command
+// (byte 4 names no command), then command_of's.
 POWERKEY_DETAIL_INLINE constexpr result<message> read_command(const model_layout& keypad,
                                                               std::uint8_t size,
                                                               std::uint32_t data) noexcept {
@@ -360,11 +327,7 @@ constexpr canopen::expedited_data write_command(const command& c) noexcept {
 }
 
 // --- SDO frames ---------------------------------------------------------------------------------
-// The CiA 301 SDO engine (canopen/sdo.hpp: sdo_word, sdo_request_op, sdo_response_op) reads the
-// frame with one 64-bit load and says which frame of the protocol it is; the keypad codec then
-// looks the address up in the model's dictionary and checks the value against the row. The frames
-// a bus carries most (an expedited write, a read, a write acknowledgement, a read reply) are
-// answered inline, the rest out of line.
+// The CiA 301 engine (canopen/sdo.hpp) says which frame it is; its address is looked up here.
 
 // The command module is writable wherever it is: decode_request tests its kind before the access.
 constexpr bool commands_writable() noexcept {
@@ -382,9 +345,8 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_request(canopen::sdo_word w
     return message{canopen::sdo_abort_request{w.abort()}};
 }
 
-// Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
-// such address); unknown_command (an access the row lacks); then value_message's or
-// read_command's.
+// Errors: wrong_length, the engine's, unknown_object (no such address), unknown_command (an
+// access the row lacks), then value_message's or read_command's.
 template <reading how, class Layout>
 constexpr result<message> decode_request(const Layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return misfit<how>(f, keypad);
@@ -410,8 +372,7 @@ constexpr result<message> decode_request(const Layout& keypad, const can::frame&
         [w]() POWERKEY_DETAIL_INLINE_LAMBDA { return other_request(w); });
 }
 
-// A segment, the initiation of a segmented upload (of a string object only) or an abort from the
-// keypad, or a refusal.
+// A segment, a segmented upload's start (string objects only) or an abort, or a refusal.
 template <class Layout>
 POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const Layout& keypad,
                                                            canopen::sdo_word w) noexcept {
@@ -427,9 +388,7 @@ POWERKEY_DETAIL_COLD constexpr result<message> other_reply(const Layout& keypad,
     return message{canopen::sdo_abort_response{w.abort()}};
 }
 
-// Errors: wrong_length; the engine's (unknown_command, reserved_not_zero); unknown_object (no
-// such address, or a segmented upload of an object that is not a string); unknown_command (an
-// access the row lacks); then value_message's.
+// Errors: as decode_request's (unknown_object also for a segmented upload of a non-string).
 template <reading how, class Layout>
 constexpr result<message> decode_reply(const Layout& keypad, const can::frame& f) noexcept {
     if (f.size() != 8) return misfit<how>(f, keypad);
@@ -455,10 +414,8 @@ constexpr result<message> decode_reply(const Layout& keypad, const can::frame& f
 
 // --- PDO frames ---------------------------------------------------------------------------------
 
-// The key state in bytes 0..4 of a TPDO1 whose length the caller has checked (keys in bytes 0..1,
-// 00h 00h, the tick), as decode answers it (R = message, built in the caller's result) and as
-// decode_key_state<M> does (R = key_state): one reading for both. Errors: reserved_not_zero (a
-// key the model lacks, bytes 2..3 not 00h).
+// The key state of a TPDO1 of checked length, for decode (R = message) and decode_key_state<M>
+// (R = key_state). Errors: reserved_not_zero (a key the model lacks, bytes 2..3 not 00h).
 template <class R>
 POWERKEY_DETAIL_INLINE constexpr result<R> key_state_of(const model_layout& keypad,
                                                         const can::frame& f) noexcept {
@@ -470,10 +427,8 @@ POWERKEY_DETAIL_INLINE constexpr result<R> key_state_of(const model_layout& keyp
         return key_state{key_set::from_mask(w), f[4]};
 }
 
-// The PDO of function code `code` (bits 10..7 of the identifier, which decode checked is this
-// node's): only the length and data are checked. Each answer is built in the caller's result.
-// No byte past the dlc is read (the fuzz targets poison them): an 8-byte PDO is read in one load
-// (data_le) after its length check, the key state's 5 bytes as a word and a byte.
+// The PDO of function code `code` (this node's): its length and data checked. No byte past the
+// dlc is read (the fuzz targets poison them).
 template <reading how>
 POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& keypad,
                                                             std::uint32_t code,
@@ -487,9 +442,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
         case 0x6: {  // RPDO2 LEDs blinking
             if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
-            // unpack_leds(keypad, v, keypad.planes) with the used bits read from the row. Blue
-            // shifted twice: 2 x 32 for the two-plane PK1000, where the used-bit test left no blue
-            // bit.
+            // unpack_leds(keypad, v, keypad.planes); blue shifted twice (never by 64 at once).
             if ((v & ~keypad.led_bits) != 0) return errc::reserved_not_zero;
             const std::uint64_t up = v >> keypad.stride;
             const leds l{led_set::from_mask(v & keypad.led_mask),
@@ -514,7 +467,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
             if (!keypad.encoders) return errc::wrong_id;
             if (f.size() != 8) return misfit<how>(f, keypad);
             const std::uint64_t v = f.data_le();
-            // In 32-bit halves: no 64-bit shift by a variable (a library call on a 32-bit core).
+            // In 32-bit halves: no 64-bit shift by a variable.
             const std::uint32_t half[2] = {static_cast<std::uint32_t>(v),
                                            static_cast<std::uint32_t>(v >> 32)};
             analog_inputs a;
@@ -553,16 +506,12 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_pdo(const model_layout& 
     }
 }
 
-// A 29-bit frame: a J1939 frame of the keypad at `address` (nullopt: any), in the one
-// vocabulary (every model has a J1939 row, keypad/j1939_models.hpp).
+// A 29-bit frame of the keypad at `address` (nullopt: any), read by the J1939 codec.
 constexpr result<message> decode_j1939(model m, const can::frame& f,
                                        j1939::keypad_address address) noexcept {
     return j1939::detail::decode_as<message>(f, m, address);
 }
-// The same at any address, from the front's default case (which has tested the PGN). Out of
-// line, and given only what the front already holds (the layout): no CANopen frame pays for a
-// J1939 argument, and the front's registers stay the CANopen frames' (docs/performance.md, the
-// J1939 mixed log). A J1939 frame has one length, 8 bytes: no reading finds another form for it.
+// The same at any address, from the front's default case (docs/performance.md, J1939).
 POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layout& keypad,
                                                                const can::frame& f) noexcept {
     return j1939::detail::decode_frame<message>(f, j1939::detail::j1939_row_of(keypad.id),
@@ -573,9 +522,7 @@ POWERKEY_DETAIL_COLD constexpr result<message> decode_extended(const model_layou
 template <class T>
 inline constexpr bool is_j1939_alternative = j1939::message_alternative<T>;
 
-// The J1939 alternatives are the switch back and every alternative from key_contact on. The
-// switch is built as before, with the CANopen messages; the others are told apart by one compare
-// of the index, not a visit.
+// The J1939 alternatives: the switch back and every one from key_contact on (one index compare).
 inline constexpr std::size_t switch_index =
     message(std::in_place_type<j1939::switch_to_canopen>).index();
 inline constexpr std::size_t first_j1939_index =
@@ -590,8 +537,7 @@ constexpr bool j1939_alternatives_in_place() noexcept {
 }
 static_assert(j1939_alternatives_in_place());
 
-// A J1939 message's frame as j1939::encode checks and builds it (narrowed to `address` when
-// given). Out of line: no CANopen message comes here.
+// A J1939 message's frame as j1939::encode builds it (narrowed to `address` when given).
 POWERKEY_DETAIL_COLD constexpr result<can::frame> encode_j1939(
     model m, const message& msg, j1939::keypad_address address) noexcept {
     return std::visit(
@@ -616,11 +562,8 @@ constexpr std::uint8_t bytes_of(std::uint64_t mask) noexcept {
     return static_cast<std::uint8_t>((std::bit_width(mask) + 7) / 8);
 }
 
-// How many leading bytes of msg's frame may carry anything on this keypad: every byte after them
-// is 00h in every valid frame of its kind (a byte the manual marks "not used", reserved bits, the
-// high bytes of a value whose range never reaches them, the bytes past an SDO's size). A frame
-// cut after them says all that its manual form says. `printed` is msg's frame in the manual's
-// form: an SDO value's row and a command's parameters are looked up as the decoder found them.
+// How many leading bytes of msg's frame may carry anything on this keypad (docs/decoder.md,
+// "trimmed"); `printed` is msg's frame in the manual's form.
 template <class Layout>
 constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
                                    const can::frame& printed) noexcept {
@@ -641,11 +584,9 @@ constexpr std::uint8_t used_length(const Layout& keypad, const message& msg,
             } else if constexpr (std::is_same_v<T, backlight>) {
                 return keypad.backlight_colour ? 2 : 1;
             } else if constexpr (std::is_same_v<T, encoder_state> ||
-                                 std::is_same_v<T, encoder_leds>) {
-                return 4;
-            } else if constexpr (std::is_same_v<T, sdo_read> ||
+                                 std::is_same_v<T, encoder_leds> || std::is_same_v<T, sdo_read> ||
                                  std::is_same_v<T, sdo_write_reply>) {
-                return 4;  // the specifier and the address
+                return 4;  // an SDO's specifier and address
             } else if constexpr (std::is_same_v<T, sdo_write> ||
                                  std::is_same_v<T, sdo_read_reply>) {
                 const auto key = canopen::sdo_word::of(printed).key();
@@ -754,18 +695,15 @@ constexpr result<can::frame> build(const Layout& keypad, canopen::node_id node,
     return std::visit([&keypad, node](const auto& v) { return build_of(keypad, node, v); }, msg);
 }
 
-// The checks decode makes of the frame build_of makes of a PDO, made on the message itself, so
-// that encode of one PDO type needs no decoder (issue 24): the same error decode gives the frame
-// (reserved_not_zero), or value_out_of_range for what the frame cannot carry (a key above 16, an
-// LED past the model's planes or LEDs: the frame would read back as another message). A test
-// compares them with the frame read back over every model and many values.
+// decode's checks of a PDO's frame, made on the message (docs/decoder.md, "encode"): decode's
+// error, or value_out_of_range for what the frame cannot carry (a key above 16, an LED past the
+// model's planes or LEDs).
 constexpr errc own_check(const model_layout& keypad, const key_state& v) noexcept {
     const std::uint64_t k = v.keys.mask();
     if ((k & 0xFFFF & keypad.not_keys) != 0) return errc::reserved_not_zero;
     return k > 0xFFFF ? errc::value_out_of_range : errc{};
 }
-// RPDO3 brightness: a model whose RPDO3 is the encoder rings reads the frame as them; one without
-// the PDO refuses the identifier. (The level is in range by its type.)
+// RPDO3 brightness: the encoder rings on a model whose RPDO3 is them; wrong_id without the PDO.
 constexpr errc own_check(const model_layout& keypad, const led_brightness&) noexcept {
     if (keypad.encoder_leds_pdo) return errc::value_out_of_range;
     return keypad.brightness_pdo ? errc{} : errc::wrong_id;
@@ -795,9 +733,7 @@ constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id no
     if (const errc e = own_check(keypad, v); e != errc{}) return e;
     constexpr bool led_map = std::is_same_v<T, led_on> || std::is_same_v<T, led_blink>;
     if constexpr (led_map && is_fixed_layout<Layout>) {
-        // The check leaves each plane within the model's LEDs: with the model a constant,
-        // pack_leds' masks fold (one/led_on/encode 33 -> 30 instructions; with a run-time model
-        // the same assumptions cost the LED rows 1 to 10).
+        // The check leaves each plane within the model's LEDs: pack_leds' masks fold.
         const std::uint64_t outside = ~std::uint64_t{keypad.led_mask};
         POWERKEY_DETAIL_ASSUME_NOT((v.map.red.mask() & outside) != 0);
         POWERKEY_DETAIL_ASSUME_NOT((v.map.green.mask() & outside) != 0);
@@ -806,11 +742,7 @@ constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id no
     return build_of(keypad, node, v);
 }
 
-// The SDO alternatives check themselves too: the row found by object once, the access decode
-// tests (unknown_command), and the value read back from the bytes built with the checks and
-// reader value_message uses (read_command for a command): no frame is decoded; a value that would
-// come back as another is value_out_of_range. Same answers as the frame read back (a test runs
-// every object of every model over many values through both).
+// The SDO alternatives check themselves too (docs/decoder.md, "encode").
 template <class T>
 concept own_sdo = std::is_same_v<T, sdo_read> || std::is_same_v<T, sdo_write> ||
     std::is_same_v<T, sdo_read_reply> || std::is_same_v<T, sdo_write_reply> ||
@@ -823,8 +755,7 @@ POWERKEY_DETAIL_INLINE constexpr can::frame sdo_frame(canopen::function fn, cano
     return word_frame(fn, node, 8, specifier | std::uint64_t{row.key} << 8 | data << 32);
 }
 
-// A kind whose value is its raw number (value_kinds' defaults: value() is {data, {}, 0}, pack()
-// is v.raw).
+// A kind whose value is its raw number (kind_defaults' value() and pack()).
 template <class K>
 inline constexpr bool raw_kind =
     &K::value == &kind_defaults::value&&& K::pack == &kind_defaults::pack;
@@ -839,16 +770,12 @@ constexpr bool raw_rows_sized() noexcept {
 }
 static_assert(raw_rows_sized());
 
-// The frame of an SDO read (40h), write (23h..2Fh), write reply (60h) or read reply (43h..4Fh) of
-// object `id` (value `v` for the two that carry one), checked. One function for the four: one
-// copy in a program.
+// An SDO read (40h), write (23h..2Fh), write reply (60h) or read reply (43h..4Fh).
 enum class sdo_verb : std::uint8_t { read, write, write_reply, read_reply };
-// The specifier of an expedited write (23h) or read reply (43h) of `size` bytes, 1..4: bits 2..3
-// the bytes not used (CiA 301).
+// The specifier of an expedited read reply (43h) or write (23h) of `size` bytes (CiA 301).
 inline constexpr std::uint8_t value_specifier[2][5] = {{0x43, 0x4F, 0x4B, 0x47, 0x43},
                                                        {0x23, 0x2F, 0x2B, 0x27, 0x23}};
-// The frame of a write or read reply of row `row` of kind K with value v: what write_value builds
-// and value_message reads. Inlined where the kind is known (its case of checked_sdo's visit).
+// The frame of a write or read reply of row `row` of kind K with value v, checked.
 template <class K, class Layout>
 POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& keypad,
                                                                 canopen::node_id node,
@@ -859,9 +786,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& ke
     if constexpr (std::is_same_v<K, value_kinds::commands>)
         if (write) return errc::unknown_object;  // a `command`
     if constexpr (raw_kind<K>) {
-        // The value is its raw number in the row's size (1..4: raw_rows_sized): the bytes read
-        // back as v exactly when v has no map and no size, so that is tested instead of the
-        // read-back; the checks, and their order, are the decoder's.
+        // The bytes read back as v exactly when v has no map and no size (raw_rows_sized).
         const std::uint8_t raw_size = row.size();
         if (v.raw > largest_of_size[raw_size]) return errc::reserved_not_zero;
         if (const errc e = K::check(keypad, row, raw_size, v.raw, write); e != errc{}) return e;
@@ -883,9 +808,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> value_frame(const Layout& ke
     return sdo_frame(write ? function::sdo_rx : function::sdo_tx, node,
                      value_specifier[write ? 1 : 0][size], row, data);
 }
-// value_frame of the kind visit_row_kind finds: inlined into the visit on speed (one/sdo_write
-// 113 -> 76.5 instructions), called from it under -Os (firmware (c): 520 bytes and 40 of
-// stack less).
+// value_frame of the kind visit_row_kind finds.
 template <class Layout>
 struct value_frame_of {
     const Layout& keypad;
@@ -898,8 +821,8 @@ struct value_frame_of {
         return value_frame<K>(keypad, node, row, verb, v);
     }
 };
-// Inlined into encode's entry points (a constant object folds its row and kind there); the one
-// out-of-line copy is checked_sdo's, below.
+// The frame of an SDO read, write or reply of object `id`, checked; inlined into encode's entry
+// points, and one out-of-line copy, checked_sdo.
 template <class Layout>
 POWERKEY_DETAIL_INLINE constexpr result<can::frame> checked_sdo_inline(
     const Layout& given, canopen::node_id node, object id, sdo_verb verb,
@@ -910,8 +833,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> checked_sdo_inline(
     if (i == 0) return errc::unknown_object;
     const codec_row& row = codec_row_at(keypad, i);
     const bool write = verb == sdo_verb::write || verb == sdo_verb::write_reply;
-    // (a write of the command module is refused with unknown_object in its kind's case,
-    // value_frame: the module is writable in every dictionary, commands_writable)
+    // (a write of the command module: unknown_object in value_frame, commands_writable)
     if (write ? !row.writable() : !row.readable()) return errc::unknown_command;
     if (verb == sdo_verb::read) return sdo_frame(function::sdo_rx, node, 0x40, row, 0);
     if (verb == sdo_verb::write_reply) return sdo_frame(function::sdo_tx, node, 0x60, row, 0);
@@ -938,15 +860,8 @@ requires(own_sdo<T> && !std::is_same_v<T, command>) constexpr result<can::frame>
     else
         return checked_sdo(keypad, node, v.object, verb_of<T>, {});
 }
-// A command checks itself as read_command reads its bytes, without reading them back: its byte
-// names a command (unknown_command), each parameter its pair carries is in range (read_param on
-// the byte written: value_out_of_range), and the members it does not carry are at their defaults
-// (else the frame reads back as another command: value_out_of_range), tested in one masked
-// compare of the members as one word. A written parameter reads back as itself once in range.
-// The members a command may carry but `enabled`, one byte each in a word (in the order of the
-// struct: g++ reads each half with one load), and the byte that carries parameter p (none for
-// none and flag: `enabled` is tested apart); tests/test_keypad_commands.cpp holds the two to
-// each other.
+// A command checks itself as read_command reads it (docs/performance.md, "The codec's shape").
+// command_word_bits(p): the byte of command_word that carries p (test_keypad_commands.cpp).
 constexpr std::uint64_t command_word(const command& c) noexcept {
     const std::uint32_t low = std::uint32_t{c.key} |
                               std::uint32_t{static_cast<std::uint8_t>(c.state)} << 8 |
@@ -1019,9 +934,7 @@ constexpr result<can::frame> own_frame(const Layout& keypad, canopen::node_id no
                                        const command& v) noexcept {
     return command_frame_inline(keypad, node, v);
 }
-// own_frame of an SDO message inlined into its caller: encode's entry points, where a constant
-// object or command code folds its row, kind and parameter pair (the controller calls own_frame,
-// one copy).
+// own_frame of an SDO message, inlined into encode's entry points.
 template <class T, class Layout>
 requires own_sdo<T> POWERKEY_DETAIL_INLINE constexpr result<can::frame> own_frame_inline(
     const Layout& keypad, canopen::node_id node, const T& v) noexcept {
@@ -1033,21 +946,14 @@ requires own_sdo<T> POWERKEY_DETAIL_INLINE constexpr result<can::frame> own_fram
         return checked_sdo_inline(keypad, node, v.object, verb_of<T>, {});
 }
 
-// The front. Every length test sends a frame of another length to misfit. With `j1939` false a
-// 29-bit frame is wrong_id and no J1939 code is in the program (decode_canopen). Testing for
-// 29-bit frames after the front instead (one copy of the front for both) cost every CANopen
-// frame 7 instructions.
+// The front (docs/performance.md, "The codec's shape"). With `j1939` false a 29-bit frame is
+// wrong_id and no J1939 code is in the program (decode_canopen).
 template <reading how, bool j1939 = true, class Layout = model_layout>
 POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, canopen::node_id node,
                                                         const Layout& keypad) noexcept {
-    // The same classification as canopen::classify, written into the dispatch (every frame
-    // passes here). For this node's COB-IDs, id - node has bits 6..0 clear and bits 10..7 the
-    // function code: rotated right by 7, the function code alone. Any other frame rotates past
-    // the 16 codes (node bits set, or a 29-bit frame's bit 31), so one bounds test of the jump
-    // table sorts out every frame that is not this node's.
+    // canopen::classify as a rotation: this node's function code, or past the 16 codes.
     const std::uint32_t id = f.id_word();
     const std::uint32_t code = std::rotr(id - node.value(), 7);
-    // One jump table: each PDO case inlines its own body (decode_pdo of a constant code).
     switch (code) {
         case 0x0:  // the node id as a COB-ID
         case 0x1:  // EMCY
@@ -1085,14 +991,8 @@ POWERKEY_DETAIL_HOT constexpr result<message> decode_at(const can::frame& f, can
     }
 }
 
-// f, whose length is not the one its identifier has in the manuals, at that length (the one at
-// which the strict decoder does not say wrong_length): trimmed when f is shorter and every byte it
-// lacks is one its kind leaves unused (used_length), padded when f is longer and every extra byte
-// is 00h. The message says which. A padded frame whose manual form is refused keeps that refusal
-// (every byte is there); anything else stays wrong_length. Out of line: frames of the manual's
-// length never come here. It reads with the strict decoder, so nothing here recurses. The node is
-// the frame's own: a PDO, SDO or heartbeat comes with this node's COB-ID, and NMT and SYNC read
-// the same for every node.
+// f read at its identifier's manual length by the strict front (docs/decoder.md, "Tolerant and
+// strict reading"); the node is the frame's own (NMT and SYNC read the same for every node).
 template <bool j1939, class Layout>
 POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
                                                       const Layout& keypad) noexcept {
@@ -1117,33 +1017,9 @@ POWERKEY_DETAIL_COLD constexpr result<message> reread(const can::frame& f,
 }
 }  // namespace detail
 
-// Any frame of keypad `node` of model `m`. A frame shorter than the manual's form whose missing
-// bytes are all unused (the manual's "not used" bytes, reserved bits, value bytes the object's
-// range never sets, bytes past the SDO's size), or longer with extra bytes all 00h, decodes as its
-// manual form with `form` trimmed or padded; `reading::strict` refuses them with wrong_length.
-// A frame of the manual's length pays nothing for the tolerance: the other lengths are read again
-// out of line (detail::reread). Errors:
-//   wrong_id            another node's COB-ID, a function the model does not use
-//   (a 29-bit frame)    j1939::decode's (keypad/j1939_codec.hpp): wrong_id for a PGN the keypads
-//                       do not use, undocumented for a frame no source shows on the model, ...
-//   wrong_length        a frame of the wrong dlc (e.g. an SDO of fewer than 8 bytes) that is not
-//                       trimmed or padded either (or any other dlc, read strictly)
-//   unknown_command     an NMT command or SDO specifier the keypads do not use; an access the
-//                       object does not have (a write to a read-only object, a read of 6500h,
-//                       the acknowledgement of either); a command byte 6500h does not define
-//   unknown_object      an SDO for an address the model's dictionary does not define; a value
-//                       reply for an object without one (1001h); a segmented reply for a number
-//   size_mismatch       an expedited SDO whose size is not the object's
-//   reserved_not_zero   a reserved bit or byte set: a key or LED the model lacks, bytes past the
-//                       size, reserved bits of COB-IDs and of the PDOs
-//   value_out_of_range  a value outside its object's range (brightness above 3Fh, a colour, a
-//                       node id, heartbeat 1..9 ms, ...), or m is not a model
 namespace detail {
-// A CANopen message's frame (m checked): a PDO that checks itself (own_check) built checked, any
-// other built and read back by the front (`j1939`: the one decode uses, so that a program has one
-// copy of it; false: decode_canopen's). The SDO messages check themselves too (checked_sdo), but
-// here they are read back: a program that encodes a `message` holds the decoder anyway, and the
-// value checks written twice cost firmware (c) 4 KB (docs/performance.md).
+// A CANopen message's frame: a PDO that checks itself built checked, any other built and read
+// back by the front (`j1939`: decode's, false: decode_canopen's; docs/decoder.md, "encode").
 template <bool j1939, class Layout>
 constexpr result<can::frame> encode_canopen(canopen::node_id node, const Layout& keypad,
                                             const message& msg) noexcept {
@@ -1181,8 +1057,7 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
                                                            const Layout& keypad,
                                                            reading how) noexcept {
     if (how == reading::strict || POWERKEY_DETAIL_SIZE) {
-        // Under -Os one decoder, the strict one, serves both readings (the tolerant one would be a
-        // second copy): a frame of the manual's length then pays one test of its result.
+        // Under -Os the strict decoder serves both readings (docs/decoder.md).
         const auto r = decode_at<reading::strict, j1939>(f, node, keypad);
         if (how == reading::strict || r || r.error() != errc::wrong_length) return r;
         return reread<j1939>(f, keypad);
@@ -1198,24 +1073,20 @@ POWERKEY_DETAIL_INLINE constexpr result<message> decode_on(const can::frame& f,
 }
 }  // namespace detail
 
+// Any frame of keypad `node` of model `m` (docs/decoder.md; its errors: docs/errors.md, "decode,
+// model by model").
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
     const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
     return detail::decode_on<true>(f, node, m, how);
 }
 
-// decode on a bus that carries CANopen only (a firmware whose CAN controller takes 11-bit
-// identifiers): the same answer for every 11-bit frame; a 29-bit frame is wrong_id, and no J1939
-// code is in the program (firmware (b) of docs/performance.md).
+// decode on a CANopen bus only: a 29-bit frame is wrong_id (docs/decoder.md, "A CANopen bus only").
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode_canopen(
     const can::frame& f, canopen::node_id node, model m, reading how = reading::tolerant) noexcept {
     return detail::decode_on<false>(f, node, m, how);
 }
 
-// decode for a keypad whose model is known when the program is built: decode<model::pk1000>(f,
-// node). The model is a constant, so every test of its row folds away, the cases it never has
-// (another model's PDOs and objects) are not in the program, and its objects are looked up in its
-// own dictionary's tables (detail::one_dictionary), not every dictionary's. Same results as
-// decode(f, node, M, how) for every frame.
+// decode with the model known when the program is built (docs/decoder.md).
 template <model M>
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr result<message> decode(
     const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
@@ -1230,9 +1101,7 @@ template <model M>
     return detail::decode_on<false>(f, node, detail::fixed_layout_v<M>, how);
 }
 
-// decode with the J1939 frames narrowed to the keypad at `address` (j1939::decode's `keypad`: its
-// own frames from it, commands to it; nullopt for any address). A J1939 frame has one length,
-// 8 bytes: the tolerant reading finds no other form for it.
+// decode with the J1939 frames narrowed to the keypad at `address` (j1939::decode's `keypad`).
 [[nodiscard]] constexpr result<message> decode(const can::frame& f, canopen::node_id node, model m,
                                                j1939::keypad_address address,
                                                reading how = reading::tolerant) noexcept {
@@ -1240,14 +1109,8 @@ template <model M>
     return decode(f, node, m, how);
 }
 
-// The frame of msg for keypad `node` of model `m`, such that decode(frame, node, m) == msg: the
-// manual's form, whatever msg's `form` says.
-// A message decode could never return is refused with the error decode gives its frame
-// (value_out_of_range when the frame would decode to another meaning: bits the wire cannot
-// carry, members the message's kind does not use set), or unknown_object for an object the
-// model's dictionary does not have.
-// A J1939 message's frame is the J1939 codec's, checked as j1939::encode checks it (`node` is not
-// used).
+// The frame of msg for keypad `node` of model `m` in the manual's form, such that
+// decode(frame, node, m) == msg, or the error decode gives its frame (docs/decoder.md, "encode").
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg) noexcept {
     if (!detail::is_model(m)) return errc::value_out_of_range;
@@ -1264,8 +1127,7 @@ concept own_pdo = requires(const model_layout& keypad, const T& v) {
     own_check(keypad, v);
 };
 
-// encode of one CANopen alternative for the model whose layout is `keypad` (the run-time call's
-// row, or encode<M>'s constant with its own dictionary's tables).
+// encode of one CANopen alternative for the model whose layout is `keypad`.
 template <class T, class Layout>
 POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_alternative(const Layout& keypad,
                                                                        canopen::node_id node,
@@ -1279,11 +1141,7 @@ POWERKEY_DETAIL_INLINE constexpr result<can::frame> encode_alternative(const Lay
 }
 }  // namespace detail
 
-// The same for one CANopen alternative of message (encode(node, m, led_on{...})): no J1939 code
-// is in the program.
-// A message that checks itself (key_state, led_on, led_blink, led_brightness, backlight:
-// detail::own_check; the SDO reads, writes, replies and commands: detail::own_frame) links no
-// decoder.
+// encode of one CANopen alternative: no J1939 code, no decoder for one that checks itself.
 template <detail::canopen_alternative T>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const T& msg) noexcept {
@@ -1291,9 +1149,8 @@ template <detail::canopen_alternative T>
     return detail::encode_alternative(detail::layout(m), node, msg);
 }
 
-// The model of a behaviour class (behaviour::controller's Keypad): any_model, a value chosen at
-// run time (every model's tables in the program), or model_constant<M>, known when the program is
-// built (M's rows alone).
+// The model of a behaviour class (behaviour::controller's Keypad): any_model, chosen at run time,
+// or model_constant<M>, known when the program is built (M's rows alone).
 struct any_model {};
 template <model M>
 struct model_constant {
@@ -1301,9 +1158,8 @@ struct model_constant {
     static constexpr model value = M;
 };
 
-// The same, a J1939 message checked narrowed to the keypad at `address`, as decode(frame, node,
-// model, address) reads it (a key contact state to an address needs it: otherwise its bytes
-// read as an LED command).
+// The same, a J1939 message narrowed to the keypad at `address`, as decode(f, node, m, address)
+// reads it (a key contact state to an address would otherwise read as an LED command).
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node, model m,
                                                   const message& msg,
                                                   j1939::keypad_address address) noexcept {
@@ -1314,15 +1170,7 @@ struct model_constant {
 }
 
 // --- a keypad known when the program is built ----------------------------------------------------
-// decode_key_state and encode with the model a template argument, as decode<M> above and the
-// J1939 calls (j1939_codec.hpp's end): decode_key_state<model::pk1000>(f, node). The same engine
-// as the run-time calls (detail::key_state_of, detail::own_frame), with the same results for every
-// frame and message (tests/test_keypad_codec_typed.cpp runs every manual row through both, for
-// every model). The model's layout is a constant (detail::fixed_layout_v<M>: no model table, its
-// own dictionary's tables alone), and
-// decode_key_state<M> and encode<M> of a key state or LED map inline what they call
-// (POWERKEY_DETAIL_FLATTEN), so only this model's paths are in the program: a firmware that reads
-// key states and builds LED maps links no decoder (firmware (a_codec), 1,008 bytes).
+// docs/decoder.md, "The model known at compile time".
 
 namespace detail {
 // Bytes `from` up to f's length are all 00h (bytes past the length are not read).
@@ -1333,13 +1181,8 @@ constexpr bool zeros_from(const can::frame& f, std::uint8_t from) noexcept {
 }
 }  // namespace detail
 
-// The key state alone, for a program that reads nothing else from its keypad (firmware (a_codec)
-// of docs/performance.md): decode's answer when f is the model's key-state PDO (TPDO1, 180h +
-// node), decode's error when decode refuses that frame, wrong_id for any other frame (another
-// node's key state, a 29-bit frame included). Read tolerantly, a key state padded with 00h bytes
-// is read with `form` padded, as decode reads it (no shorter form exists: the tick is the last
-// byte); `reading::strict` refuses it with wrong_length. Errors: wrong_id, wrong_length,
-// reserved_not_zero (a key the model lacks, bytes 2..3 not 00h).
+// The key state alone: decode's answer when f is the model's TPDO1, wrong_id for any other frame.
+// (No shorter form exists: the tick is the last byte.)
 template <model M>
 [[nodiscard]] POWERKEY_DETAIL_FLATTEN constexpr result<key_state> decode_key_state(
     const can::frame& f, canopen::node_id node, reading how = reading::tolerant) noexcept {
@@ -1354,13 +1197,8 @@ template <model M>
     return r;
 }
 
-// encode(node, M, msg) of one CANopen alternative with M's layout a constant. A key state or LED
-// map checks itself (detail::own_check) and is built inline with the model's facts as constants
-// (POWERKEY_DETAIL_FLATTEN: its check and packing are a few instructions; so is a command's); an
-// SDO read, write or reply checks itself too, inlined (detail::own_frame_inline: an object
-// written as a constant folds its row and kind; else its value checks are a visit of the row's
-// kind); the other PDOs are read back as encode(node, M, msg) reads them. None but the last links
-// a decoder.
+// encode(node, M, msg) of one CANopen alternative with M's layout a constant: a PDO that checks
+// itself or a command flattened (POWERKEY_DETAIL_FLATTEN), the rest inlined.
 template <model M, detail::canopen_alternative T>
 requires(detail::own_pdo<T> || std::is_same_v<T, command>) [[nodiscard]] POWERKEY_DETAIL_FLATTEN
     constexpr result<can::frame> encode(canopen::node_id node, const T& msg) noexcept {
@@ -1374,8 +1212,7 @@ requires(!detail::own_pdo<T> && !std::is_same_v<T, command>) [[nodiscard]] POWER
     return detail::encode_alternative(detail::fixed_layout_v<M>, node, msg);
 }
 
-// encode(node, M, msg) of any message: a CANopen one with M's dictionary alone in the program, a
-// J1939 one as encode(node, M, msg) builds it.
+// encode(node, M, msg) of any message.
 template <model M>
 [[nodiscard]] constexpr result<can::frame> encode(canopen::node_id node,
                                                   const message& msg) noexcept {

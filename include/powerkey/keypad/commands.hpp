@@ -1,8 +1,6 @@
-// powerkey: the PKP command module, object 6500h sub 1 (PKP manual section 13), as data. Every
-// command is an expedited 4-byte download to 600h + node:
-//   23 00 65 01 | cc p1 p2 00      cc the command, p1 p2 its parameters (00h where unused)
-// and the keypad answers 60 00 65 01 00 00 00 00 (an sdo_write_reply of command_module). One
-// table row per command names its parameters; one message type, `command`, carries any of them.
+// powerkey: the PKP command module, object 6500h sub 1 (PKP manual section 13), as data: one row
+// per command names its parameters (23 00 65 01 | cc p1 p2 00, docs/pkp.md); one message type,
+// `command`, carries any of them.
 #ifndef POWERKEY_KEYPAD_COMMANDS_HPP
 #define POWERKEY_KEYPAD_COMMANDS_HPP
 
@@ -86,9 +84,6 @@ inline constexpr baud_rate command_bauds[] = {baud_rate::kbit_125, baud_rate::kb
                                               baud_rate::kbit_500};
 inline constexpr startup_show command_shows[] = {startup_show::complete, startup_show::fast_flash,
                                                  startup_show::disabled};
-}  // namespace detail
-
-namespace detail {
 inline constexpr auto command_index =
     index_by_code<0x80>(command_table, [](const auto& row) { return row.code; });
 }  // namespace detail
@@ -100,8 +95,7 @@ inline constexpr auto command_index =
     return detail::command_table[detail::command_index[code] - 1u];
 }
 
-// One command. `code` says which; its row says which of the other members it carries (the rest
-// stay at their defaults, so that two equal commands compare equal).
+// One command: `code` and the members its row carries, the rest at defaults (docs/decoder.md).
 struct command {
     POWERKEY_DETAIL_MESSAGE(command);
     template <class Self, class F>

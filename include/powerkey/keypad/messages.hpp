@@ -1,24 +1,6 @@
-// powerkey: every message of every keypad, as one flat type.
-//
-//   message = variant<nmt_message, sync_message, heartbeat_message, switch_to_canopen,
-//                     key_state, led_on, led_blink, led_brightness, backlight,
-//                     sdo_read, sdo_read_reply, sdo_write, sdo_write_reply, command,
-//                     sdo_upload_initiate_response, sdo_segment_request, sdo_segment_response,
-//                     sdo_abort_request, sdo_abort_response,
-//                     encoder_state, analog_inputs, encoder_leds,      (the PKP-3500-MT's)
-//                     j1939::key_contact, j1939::heartbeat, j1939::software_revision,
-//                     j1939::led_ack, j1939::led_ack_code, j1939::address_claimed,
-//                     j1939::set_led, j1939::set_led_code, j1939::multiple_leds,
-//                     j1939::command>                  (J1939, keypad/j1939_messages.hpp)
-//
-// One type for both protocols: a keypad switches between them on the same bus (20FFh, 80h), so a
-// log, a session and a tool meet both; the J1939 kinds start with "j1939_" (docs/j1939.md, "One
+// powerkey: every message of every keypad, CANopen and J1939, as one flat type, each struct with
+// its `kind` and `fields(self, f)` (docs/decoder.md, "The message type"; docs/j1939.md, "One
 // vocabulary").
-//
-// Each struct follows the kind/fields convention (fields.hpp): a stable `kind` and `fields(self,
-// f)`, which names every field the frame carries. The names are the same for every model: the
-// key-state PDO's "keys" and "tick", an LED map's "red", "green", "blue", a level's "level".
-// An SDO value's fields depend on its object's value kind (value_kinds.hpp).
 #ifndef POWERKEY_KEYPAD_MESSAGES_HPP
 #define POWERKEY_KEYPAD_MESSAGES_HPP
 
@@ -90,8 +72,7 @@ struct backlight {
 };
 
 // TPDO2 280h + node (encoder 1) and TPDO3 380h + node (encoder 2), PKP-3500-MT sections 12, 13:
-//   byte 0 X YYYYYYY (X 1 = counterclockwise, Y ticks since the last message) | counter LSB MSB |
-//   TOP (00h none, 02h..10h) | 00h x 4
+// bit 7 counterclockwise, bits 0..6 ticks | counter LSB MSB | TOP | 00h x 4.
 struct encoder_state {
     POWERKEY_DETAIL_MESSAGE(encoder_state);
     POWERKEY_DETAIL_FIELDS(f("encoder", self.encoder), f("counterclockwise", self.counterclockwise),
@@ -159,8 +140,7 @@ struct sdo_write_reply {
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
-// Every frame any keypad speaks or hears, in CANopen and in J1939 (the switch back, 80h, is one
-// alternative of both).
+// Every frame any keypad speaks or hears, in CANopen and in J1939.
 using message =
     std::variant<canopen::nmt_message, canopen::sync_message, canopen::heartbeat_message,
                  j1939::switch_to_canopen, key_state, led_on, led_blink, led_brightness, backlight,
@@ -172,15 +152,13 @@ using message =
                  j1939::led_ack_code, j1939::address_claimed, j1939::set_led, j1939::set_led_code,
                  j1939::multiple_leds, j1939::command>;
 
-// A J1939 frame of the keypads: its message in the one vocabulary (every J1939 alternative is
-// one of message's).
+// A J1939 frame of the keypads: its message in the one vocabulary.
 [[nodiscard]] constexpr message to_message(const j1939::message& msg) noexcept {
     return std::visit([](const auto& v) { return message{v}; }, msg);
 }
 
-// How msg's frame was written: the manual's form, or trimmed or padded (frame_form.hpp); decode
-// sets it and encode ignores it (it builds the manual's form). A J1939 frame always has its 8
-// bytes (the J1939 messages but the switch have no `form`: always the manual's).
+// How msg's frame was written (docs/decoder.md, "Tolerant and strict reading"); a J1939 message
+// without `form` always has the manual's.
 [[nodiscard]] constexpr frame_form form_of(const message& msg) noexcept {
     return std::visit(
         [](const auto& s) {

@@ -1,21 +1,5 @@
-// powerkey: what each value kind of an SDO object means, one home per kind (objects.hpp names
-// each object's kind). A kind says, together:
-//   fields(o, v, f)           the fields a value shows (sdo_write, sdo_read_reply: messages.hpp)
-//   check(m, r, size, data, write)
-//                             the decoder's check of the wire value against the model and the
-//                             object's row (codec.hpp); the virtual keypad runs the same check
-//                             on what it is sent
-//   value(m, r, size, data)   the value a checked wire value holds
-//   pack(m, r, v)             the wire value of a value (the encoder; the virtual keypad reads
-//                             an LED object from its maps this way)
-//   size(m, r, carried)       its expedited bytes
-//   used_bits(m, r)           the bits a valid value may set: a frame cut before the bytes of the
-//                             others still says the whole value (codec.hpp, tolerant reading)
-//   covered(m, r)             for the LED kinds, the LEDs a value states (the accessors'
-//                             led_map_update, the virtual keypad's merge into its maps)
-//   abort_for(e, data, r)     the SDO abort a keypad answers a refused write with
-// and one builder per kind for code that writes a value. Adding a kind is its row in
-// POWERKEY_VALUE_KINDS and its struct here; visit_kind dispatches on the list.
+// powerkey: what each value kind of an SDO object means, one home per kind: its fields, check,
+// value, packing, size, used bits, covered LEDs and abort (docs/decoder.md, "SDO values").
 #ifndef POWERKEY_KEYPAD_VALUE_KINDS_HPP
 #define POWERKEY_KEYPAD_VALUE_KINDS_HPP
 
@@ -29,6 +13,7 @@
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/keypad/objects.hpp>
 #include <powerkey/keypad/values.hpp>
+#include <powerkey/names.hpp>
 #include <powerkey/result.hpp>
 
 #include <array>
@@ -39,9 +24,7 @@
 
 namespace powerkey {
 
-// The value of an object, stored as it travels: `raw` the little-endian number of the expedited
-// bytes, `map` for the LED kinds, `size` for a string piece (1..4 bytes, 0 for other kinds).
-// Members a kind does not use stay zero; fields() shows it typed by the object's kind.
+// The value of an object, as it travels (docs/decoder.md, "SDO values").
 struct object_value {
     std::uint32_t raw = 0;
     leds map{};
@@ -79,8 +62,7 @@ struct kind_defaults {
     static constexpr std::uint32_t used_bits(const m_layout&, const codec_row&) noexcept {
         return 0xFFFF'FFFF;
     }
-    // A refused write's abort (the virtual keypad): bits that name nothing are an invalid value,
-    // a number outside its range too low or too high (CiA 301 table 22).
+    // A refused write's abort: invalid_value, or too low or too high (CiA 301 table 22).
     static constexpr canopen::sdo_abort_code abort_for(errc e, std::uint32_t data,
                                                        const codec_row& r) noexcept {
         if (e != errc::value_out_of_range) return canopen::sdo_abort_code::invalid_value;
@@ -204,8 +186,7 @@ struct node : detail::one_number {
     }
 };
 // "period_ms": 0 is off, any other value within the row's range (E-PK-8, E-PKP-7).
-struct period : detail::kind_defaults {
-    static constexpr bool common = true;
+struct period : detail::one_number {
     template <class V, class F>
     static constexpr void fields(const object_info&, V& v, F& f) {
         f("period_ms", v.raw);
@@ -215,9 +196,6 @@ struct period : detail::kind_defaults {
         if (data != 0 && !detail::value_ranges[r.a].contains(data)) return errc::value_out_of_range;
         return errc{};
     }
-    static constexpr std::uint32_t used_bits(const m_layout&, const codec_row& r) noexcept {
-        return detail::range_bits(r);
-    }
 };
 // "keys": key bits 0..N-1; a bit above the model's keys is reserved.
 struct keys : detail::kind_defaults {
@@ -226,21 +204,19 @@ struct keys : detail::kind_defaults {
     // sees it only then; a writer may always set it).
     template <class V, class F>
     static constexpr void fields(const object_info&, V& v, F& f) {
-        proxy_field_keys(v, f);
+        detail::proxy_field<key_set>(
+            v, f, "keys", [](const auto& s) { return key_set::from_mask(s.raw); },
+            [](auto& s, key_set x) { s.raw = static_cast<std::uint32_t>(x.mask()); });
         if (!std::is_const_v<V> || v.size != 0) f("size", v.size);
     }
-    // A row of size 0 (2000h sub 01h of the SI keypads without a manual, docs/si-family.md):
-    // 2 bytes, as the SI manuals print it, or 1 byte on a keypad of 8 keys or fewer, as
-    // controllers of the PKP-2400-SI read it. Both accepted (inferred); the value keeps size 1
-    // for a 1-byte reply, so that encode rebuilds it (0: the 2-byte form).
+    // A row of size 0 (the SI keys): 2 bytes, or 1 on 8 keys or fewer (inferred;
+    // docs/si-family.md).
     static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
                                        std::uint8_t carried) noexcept {
         if (r.size() != 0) return r.size();
         return carried == 1 && keypad.keys <= 8 ? 1 : 2;
     }
-    // The size's low bit: 1 only for the 1-byte reply (the size is checked by then, and every keys
-    // row is of size 0, 2 or 4: static_assert below). A test of the row cost the common SDO
-    // values 4 instructions a frame.
+    // The size's low bit: 1 only for the 1-byte reply (keys_rows_even; docs/performance.md).
     static constexpr object_value value(const m_layout&, const codec_row&, std::uint8_t size,
                                         std::uint32_t data) noexcept {
         return {data, {}, static_cast<std::uint8_t>(size & 1)};
@@ -254,14 +230,6 @@ struct keys : detail::kind_defaults {
     static constexpr std::uint32_t used_bits(const m_layout& keypad, const codec_row&) noexcept {
         return ~keypad.not_keys;
     }
-
-private:
-    template <class V, class F>
-    static constexpr void proxy_field_keys(V& v, F& f) {
-        detail::proxy_field<key_set>(
-            v, f, "keys", [](const auto& s) { return key_set::from_mask(s.raw); },
-            [](auto& s, key_set x) { s.raw = static_cast<std::uint32_t>(x.mask()); });
-    }
 };
 constexpr bool keys_rows_even() noexcept {
     for (const codec_row& r : detail::codec_rows)
@@ -269,14 +237,13 @@ constexpr bool keys_rows_even() noexcept {
     return true;
 }
 static_assert(keys_rows_even(), "keys::value reads the 1-byte reply by the size's low bit");
-// "red" | "green" | "blue": one plane of an LED map (PK1000 2001h/2002h per colour; the SI
-// per-colour planes, whose size is the model's stride / 8 where the row leaves it 0).
+// "red" | "green" | "blue": one plane of an LED map (PK1000 2001h/2002h per colour, SI planes).
 struct led_plane : detail::kind_defaults {
     static constexpr bool common = true;
     static constexpr bool led = true;
     template <class V, class F>
     static constexpr void fields(const object_info& o, V& v, F& f) {
-        f(to_plane_name(o.holds), v.map.of(o.holds));
+        f(to_string(o.holds), v.map.of(o.holds));
     }
     static constexpr std::uint8_t size(const m_layout& keypad, const codec_row& r,
                                        std::uint8_t) noexcept {
@@ -303,11 +270,6 @@ struct led_plane : detail::kind_defaults {
     }
     static constexpr leds covered(const m_layout& keypad, const codec_row& r) noexcept {
         return detail::planes_of(keypad, r.a, 1);
-    }
-
-private:
-    static constexpr std::string_view to_plane_name(plane p) noexcept {
-        return p == plane::red ? "red" : p == plane::green ? "green" : "blue";
     }
 };
 // "red", "green", "blue": the planes of the model's map that fit 32 bits (PKP 6001h/6002h).
@@ -528,9 +490,8 @@ POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_kind(value_kind k, F&& f) 
     return f(value_kinds::none{});
 }
 
-// visit_kind of a row of keypad's dictionary: for a model known when the program is built
-// (detail::fixed_layout), only the kinds its dictionary has are in the program (any other k, which
-// no row of it has, is none's).
+// visit_kind of a row of keypad's dictionary: for a fixed_layout, only its dictionary's kinds (any
+// other k is none's).
 template <class Layout, class F>
 POWERKEY_DETAIL_INLINE constexpr decltype(auto) visit_row_kind(const Layout&, value_kind k, F&& f) {
     if constexpr (detail::is_fixed_layout<Layout>) {
@@ -557,9 +518,7 @@ constexpr void value_fields(object id, V& v, F& f) {
     visit_kind(o.kind, [&o, &v, &f](auto k) { decltype(k)::fields(o, v, f); });
 }
 
-// --- building values ----------------------------------------------------------------------------
-// The value of an object of each kind, for code that writes one: sdo_write{object::node_id,
-// node_value(canopen::node_id{0x3A})}. Kinds of several fields are set through fields().
+// --- building values (docs/decoder.md, "SDO values": kinds of several fields use fields()) -------
 
 [[nodiscard]] constexpr object_value number_value(std::uint32_t v) noexcept { return {v, {}, 0}; }
 [[nodiscard]] constexpr object_value flag_value(bool on) noexcept { return {on ? 1u : 0u, {}, 0}; }
