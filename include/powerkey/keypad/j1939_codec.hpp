@@ -855,31 +855,23 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
         const auto to_global = [id] { return ((id + 0x100) & 0xFF00) == 0; };
         // The 29-bit flag, EDP, DP and PDU format where the identifier has them (no shift).
         const std::uint32_t at_pf = id & 0x83FF'0000;
-        if (at_pf == 0x80EF'0000) {
-            // Header and command byte; the tests in the order of their frames' share of a bus.
+        if ((id & 0x83FF'FF00) == 0x80EF'FF00) {
+            // Proprietary A to the global address FFh: the keypad's own frames (a command to
+            // the global address is refused: to_keypad). The PGN and the direction of 01h in one
+            // compare. Header and command byte; the tests in the order of their frames' share.
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
-                if (to_global()) {  // the key contact state (is_led_command)
-                    // Key 01h..10h (byte 3 - 1 at most 0Fh; a key 00h borrows and fails there)
-                    // and the state 00h/01h in one masked test; bytes 7, 6 and 5 FF FF 00h..FEh
-                    // (the identifier not FFh) in one compare.
-                    if ((((w - 0x0100'0000) >> 24) & 0xFEF0) == 0 && (w >> 40) - 0xFF'FF00 < 0xFF &&
-                        r.frames.has(feature::key_contact)) {
-                        // The route, then key, state and identifier where the frame has them
-                        // (bytes 3..5); bytes 6 and 7, the struct's padding, 00h.
-                        const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
-                        return answer<M>(in_place_of<key_contact>(v));
-                    }
-                } else if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
-                           r.form == led_form::si && r.frames.has(feature::led_command) &&
-                           ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
-                    // Addressed with byte 6 not FFh, the LED command (is_led_command): in one
-                    // add and one bytes_at_most, byte 7 FFh (plus 1 it is 00h, its carry out of
-                    // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
-                    // 09h, 03h, 09h (an LED 00h borrows and fails there; the header's bytes are
-                    // their own bounds); an LED the model has.
-                    return answer<M>(
-                        in_place_of<set_led>(route_word(id) | (w & 0x00FF'FFFF'FF00'0000)));
+                // The key contact state (is_led_command). Less 01h at byte 3 and FF FF at bytes
+                // 6 and 7, and turned by three bytes: key - 1 at most 0Fh (a key 00h borrows and
+                // fails there) and the state 00h/01h by their masks in the high bytes, bytes 7,
+                // 6 and 5 FF FF 00h..FEh (the identifier not FFh) as the low three at most FEh
+                // (any other value, or a borrow, makes them more).
+                if ((std::rotl(w - 0xFFFF'0000'0100'0000, 24) & 0xFEF0'0000'00FF'FFFF) <= 0xFE &&
+                    r.frames.has(feature::key_contact)) {
+                    // The route, then key, state and identifier where the frame has them
+                    // (bytes 3..5); bytes 6 and 7, the struct's padding, 00h.
+                    const std::uint64_t v = route_word(id) | (w & 0xFFFF'FF00'0000);
+                    return answer<M>(in_place_of<key_contact>(v));
                 }
             } else if (head == 0xF9'1B04) {
                 // The heartbeat: byte 6 FFh, no key bit above the model's keys.
@@ -908,10 +900,27 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
                     return answer<M>(
                         in_place_of<led_ack>(route_word(id) | ((w << 16) & 0x00FF'FFFF'FF00'0000)));
                 }
+            }
+        } else if (at_pf == 0x80EF'0000) {
+            // Proprietary A to one address: the commands (the keypad's own frames to an address
+            // go to decode_checked).
+            const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
+            if (head == 0x01'1B04) {
+                if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
+                    r.form == led_form::si && r.frames.has(feature::led_command) &&
+                    ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
+                    // Addressed with byte 6 not FFh, the LED command (is_led_command): in one
+                    // add and one bytes_at_most, byte 7 FFh (plus 1 it is 00h, its carry out of
+                    // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
+                    // 09h, 03h, 09h (an LED 00h borrows and fails there; the header's bytes are
+                    // their own bounds); an LED the model has.
+                    return answer<M>(
+                        in_place_of<set_led>(route_word(id) | (w & 0x00FF'FFFF'FF00'0000)));
+                }
             } else if ((head | 0x01'0000) == 0x03'1B04) {
                 // LED brightness (02h) and backlight level (03h): 04 1B cmd | level | FF FF FF FF.
                 const bool led = head == 0x02'1B04;
-                if (!to_global() && ff_from(w, 4) && byte_of(w, 3) <= level::max &&
+                if (ff_from(w, 4) && byte_of(w, 3) <= level::max &&
                     r.frames.has(led ? feature::led_brightness : feature::backlight_level)) {
                     const route at = route_of(id);
                     command c{};
@@ -942,10 +951,12 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
                                       .nibbles = multiple_leds::halves(w & used)});
                 }
             }
-        } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000) {
+        } else if (at_pf >= 0x8000'0000 && (at_pf & ~0x1'0000u) != 0x80EE'0000 && is_row(r)) {
             return errc::wrong_id;  // a 29-bit frame on another PGN: not a keypad frame
         }
     }
+    // Not a model (decode_as's row_or_none; under -Os decode_as tests the model itself).
+    if (!POWERKEY_DETAIL_SIZE && !is_row(r)) return errc::value_out_of_range;
     if (!f.is_extended()) return errc::wrong_id_format;
     // Most 29-bit frames on a bus are not a keypad's: refused here, without a call.
     if (!is_keypad_pf(pf & 0x3FF)) return errc::wrong_id;
@@ -968,8 +979,12 @@ constexpr result<M> decode_checked_only(const can::frame& f, model m,
 template <class M>
 POWERKEY_DETAIL_HOT constexpr result<M> decode_as(const can::frame& f, model m,
                                                   keypad_address keypad) noexcept {
-    if (!is_j1939_model(m)) return errc::value_out_of_range;
-    return decode_frame<M>(f, j1939_row_of(m), keypad);
+    if constexpr (POWERKEY_DETAIL_SIZE) {
+        if (!is_j1939_model(m)) return errc::value_out_of_range;
+        return decode_frame<M>(f, j1939_row_of(m), keypad);
+    } else {
+        return decode_frame<M>(f, row_or_none(m), keypad);
+    }
 }
 }  // namespace detail
 
