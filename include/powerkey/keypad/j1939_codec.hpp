@@ -833,6 +833,22 @@ POWERKEY_DETAIL_COLD constexpr result<M> decode_checked(const can::frame& f, std
     return check_and_decode<M>(f, pf, r, std::nullopt);
 }
 
+// The LED commands' and acknowledgement's bound of LED - 1 in the fast path's bytes_at_most, and
+// the test of the LED's bit below it: with the row a constant (decode<M>: Row a reference) whose
+// LEDs are 1..n, n - 1 and no bit to test; otherwise 0Fh and the LED's bit in the row.
+template <class Row>
+constexpr std::uint64_t led_bound(const model_row& r) noexcept {
+    if constexpr (std::is_reference_v<Row>)
+        if (r.leds != 0 && std::has_single_bit(r.leds + 1u))
+            return static_cast<std::uint64_t>(std::popcount(r.leds) - 1);
+    return 0x0F;
+}
+template <class Row>
+constexpr bool has_led_below_bound(const model_row& r, std::uint8_t k) noexcept {
+    if (led_bound<Row>(r) != 0x0F) return true;
+    return ((r.leds >> (k - 1)) & 1u) != 0;
+}
+
 // The model row as decode_frame takes it: a copy, whose fields g++ reads where they are kept
 // (through a reference it recomputed the row's address from a spilled model at each use); under
 // -Os a reference, the smaller call.
@@ -902,8 +918,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
                 // the LED command's: bytes 5..7 FFh (plus 1 at byte 5, 00h), the state, LED - 1
                 // and colours at most 03h, 0Fh, 09h, 09h (a secondary FFh goes to
                 // decode_checked); an LED the model has.
-                if (bytes_at_most(w + 0xFF'FFFF'0000, 0x09'090F'0300) && r.form == led_form::si &&
-                    r.frames.has(feature::led_ack) && ((r.leds >> (byte_of(w, 2) - 1)) & 1u) != 0) {
+                if (bytes_at_most(w + 0xFF'FFFF'0000, 0x09'0900'0300 | (led_bound<Row>(r) << 16)) &&
+                    r.form == led_form::si && r.frames.has(feature::led_ack) &&
+                    has_led_below_bound<Row>(r, byte_of(w, 2))) {
                     // State, LED, colour and secondary colour from bytes 1..4 to bytes 3..6.
                     return answer<M>(in_place_of<led_ack>(route_word_to_global(id) |
                                                           ((w << 16) & 0x00FF'FFFF'FF00'0000)));
@@ -919,9 +936,10 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
             // go to decode_checked).
             const auto head = static_cast<std::uint32_t>(w) & 0xFF'FFFF;
             if (head == 0x01'1B04) {
-                if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000, 0x0009'0309'0F01'1B04) &&
+                if (bytes_at_most(w + 0x00FF'FFFF'FF00'0000,
+                                  0x0009'0309'0001'1B04 | (led_bound<Row>(r) << 24)) &&
                     r.form == led_form::si && r.frames.has(feature::led_command) &&
-                    ((r.leds >> (byte_of(w, 3) - 1)) & 1u) != 0) {
+                    has_led_below_bound<Row>(r, byte_of(w, 3))) {
                     // Addressed with byte 6 not FFh, the LED command (is_led_command): in one
                     // add and one bytes_at_most, byte 7 FFh (plus 1 it is 00h, its carry out of
                     // the word) and the LED - 1, colour, state and secondary colour at most 0Fh,
