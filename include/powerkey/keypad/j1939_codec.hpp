@@ -969,7 +969,9 @@ POWERKEY_DETAIL_HOT constexpr result<M> decode_frame(const can::frame& f,
             // that the mask of their nibbles is one shift.
             if (r.frames.has(feature::multiple_leds) && !to_global()) {
                 const std::uint64_t used = ~std::uint64_t{0} >> (64 - 4u * r.plane_leds);
-                if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w)) {
+                // The codes of the frame's LEDs alone (the nibbles past them are Fh, tested
+                // first): 74 -> 72 instructions a multiple-LED frame through j1939::decode.
+                if ((w | used) == ~std::uint64_t{0} && !has_unused_code(w & used)) {
                     // The route and the frame (1 for A700h, whose PDU format's bit 0 is set;
                     // 2 for A600h) as one word.
                     const auto v = static_cast<std::uint32_t>(route_word(id)) + 0x0200'0000 -
