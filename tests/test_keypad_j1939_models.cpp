@@ -29,8 +29,17 @@ TEST_CASE("j1939: the model table") {
         if (const auto canopen = powerkey::info(m)) CHECK(canopen->keys == r->keys);
     }
     CHECK(powerkey::j1939::row(static_cast<model>(model_row_count)) == errc::value_out_of_range);
-    CHECK(decode(frame_of("18EFFF21#041B01010121FFFF"), static_cast<model>(model_row_count)) ==
-          errc::value_out_of_range);
+    // A value outside the enum, whatever the frame: each frame the decoder answers in place, a
+    // frame of another PGN and an 11-bit frame (decode finds the row without a test of the model).
+    for (const auto bad : {static_cast<model>(model_row_count), static_cast<model>(0xFF)})
+        for (const char* text :
+             {"18EFFF21#041B01010121FFFF", "18EFFF21#041BF9030000FF21", "18EF2100#041B0101010100FF",
+              "18EFFF21#0001010100FFFFFF", "18EF2100#041B0220FFFFFFFF", "18EF2100#041B0310FFFFFFFF",
+              "18A72100#110100000000FFFF", "18A62100#000000000096FFFF", "0CF00400#FF7D7DE015FFF0FF",
+              "18EAFF00#00EE00", "181#0011"}) {
+            CAPTURE(text);
+            CHECK(decode(frame_of(text), bad) == errc::value_out_of_range);
+        }
     CHECK(encode(static_cast<model>(0xFF), contact(1, true)) == errc::value_out_of_range);
     // The two complete manuals document every frame.
     for (const auto m : {model::pkp1600si, model::pkp2600si})

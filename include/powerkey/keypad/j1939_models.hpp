@@ -11,6 +11,7 @@
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/result.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -261,6 +262,20 @@ constexpr bool is_j1939_model(model m) noexcept {
 constexpr const model_row& j1939_row_of(model m) noexcept {
     return model_rows[static_cast<std::size_t>(m)];
 }
+// The rows and after them one of no frames (keys 0, which no model has), the row of every value
+// outside the enum: row_or_none finds a row without a branch, so that a loop over frames of one
+// run-time model finds it once, and a frame passes none of the decoder's tests of the row.
+inline constexpr auto rows_or_none = [] {
+    std::array<model_row, model_row_count + 1> a{};
+    for (std::size_t i = 0; i < model_row_count; ++i) a[i] = model_rows[i];
+    a[model_row_count] = model_row{.id = model::pk1000, .keys = 0, .frames = feature_set{}};
+    return a;
+}();
+constexpr const model_row& row_or_none(model m) noexcept {
+    const auto i = static_cast<std::size_t>(m);
+    return rows_or_none[i < model_row_count ? i : model_row_count];
+}
+constexpr bool is_row(const model_row& r) noexcept { return r.keys != 0; }
 }  // namespace detail
 
 }  // namespace powerkey::j1939
