@@ -1,6 +1,5 @@
-// powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it.
-//   NMT 000h, SYNC 080h, TPDO1..4 180h/280h/380h/480h+n, RPDO1..4 200h/300h/400h/500h+n,
-//   SDO server->client 580h+n, SDO client->server 600h+n, NMT error control 700h+n.
+// powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it
+// (docs/canopen.md, "COB-IDs").
 #ifndef POWERKEY_CANOPEN_COB_ID_HPP
 #define POWERKEY_CANOPEN_COB_ID_HPP
 
@@ -9,6 +8,8 @@
 #include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace powerkey::canopen {
@@ -46,21 +47,13 @@ namespace powerkey::canopen {
 
 namespace detail {
 // Function code base (bits 10..7 of the COB-ID) of each per-node function; 0 for the others.
+// In the order of POWERKEY_CANOPEN_FUNCTION_LIST.
 constexpr std::uint16_t per_node_base(function f) noexcept {
-    switch (f) {
-        case function::tpdo1: return 0x180;
-        case function::tpdo2: return 0x280;
-        case function::tpdo3: return 0x380;
-        case function::tpdo4: return 0x480;
-        case function::rpdo1: return 0x200;
-        case function::rpdo2: return 0x300;
-        case function::rpdo3: return 0x400;
-        case function::rpdo4: return 0x500;
-        case function::sdo_tx: return 0x580;
-        case function::sdo_rx: return 0x600;
-        case function::heartbeat: return 0x700;
-        default: return 0;
-    }
+    constexpr std::array<std::uint16_t, 15> bases{
+        0, 0, 0x180, 0x280, 0x380, 0x480, 0x200, 0x300, 0x400, 0x500, 0x580, 0x600, 0x700, 0, 0};
+    static_assert(bases.size() == std::size(enum_names<function>::entries));
+    const auto i = static_cast<std::size_t>(f);
+    return i < bases.size() ? bases[i] : std::uint16_t{0};
 }
 }  // namespace detail
 
