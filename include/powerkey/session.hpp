@@ -39,18 +39,12 @@ enum class bus_protocol : std::uint8_t { POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DET
 // clang-format on
 enum class sdo_pairing : std::uint8_t { POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<bus_protocol> {
-    using value_type = bus_protocol;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-template <>
-struct enum_names<sdo_pairing> {
-    using value_type = sdo_pairing;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+}  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::bus_protocol, POWERKEY_BUS_PROTOCOL_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::sdo_pairing, POWERKEY_SDO_PAIRING_LIST);
+
+namespace powerkey {
 
 // An SDO frame of the keypad as the session read it: which frame of the protocol (the SDO engine's
 // sdo_op) and the object it names (none for a segment or segment request).

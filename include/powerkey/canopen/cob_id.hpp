@@ -36,12 +36,7 @@ enum class function : std::uint8_t { POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DET
 
 }  // namespace powerkey::canopen
 
-template <>
-struct powerkey::enum_names<powerkey::canopen::function> {
-    using value_type = powerkey::canopen::function;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::function, POWERKEY_CANOPEN_FUNCTION_LIST);
 
 namespace powerkey::canopen {
 

@@ -26,12 +26,7 @@ enum class nmt_state : std::uint8_t { POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_D
 
 }  // namespace powerkey::canopen
 
-template <>
-struct powerkey::enum_names<powerkey::canopen::nmt_state> {
-    using value_type = powerkey::canopen::nmt_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::nmt_state, POWERKEY_CANOPEN_NMT_STATE_LIST);
 
 namespace powerkey::canopen {
 

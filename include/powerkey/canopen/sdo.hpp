@@ -188,12 +188,7 @@ enum class sdo_abort_code : std::uint32_t {
 }  // namespace powerkey::canopen
 
 // CiA 301 table 22's abort codes by name; a code CiA 301 does not name prints as "".
-template <>
-struct powerkey::enum_names<powerkey::canopen::sdo_abort_code> {
-    using value_type = powerkey::canopen::sdo_abort_code;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::sdo_abort_code, POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST);
 
 namespace powerkey::canopen {
 

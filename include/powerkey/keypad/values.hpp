@@ -1,7 +1,6 @@
 // powerkey: the values every keypad shares, one name and one type for each meaning whichever
-// model or frame carries it (pressed keys, LED maps, levels, backlight colour, baud rate, start-up
-// show, the LED states of the PKP command module). Byte values are those of the PK1000 manual
-// where the manuals differ; the PKP command module's own codes are mapped in commands.hpp.
+// model or frame carries it. Byte values are the PK1000 manual's where the manuals differ; the PKP
+// command module's own codes are mapped in commands.hpp.
 #ifndef POWERKEY_KEYPAD_VALUES_HPP
 #define POWERKEY_KEYPAD_VALUES_HPP
 
@@ -239,32 +238,15 @@ struct enum_names<startup_show> {
 };
 
 template <>
-struct enum_names<led_state> {
-    using value_type = led_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
 struct enum_names<plane> {
     static constexpr enum_name_entry<plane> entries[] = {
         {plane::red, "red"}, {plane::green, "green"}, {plane::blue, "blue"}};
 };
 
-template <>
-struct enum_names<colour> {
-    using value_type = colour;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_COLOUR_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct enum_names<led_mode> {
-    using value_type = led_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_LED_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_state, POWERKEY_LED_STATE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::colour, POWERKEY_COLOUR_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_mode, POWERKEY_LED_MODE_LIST);
 
 #endif  // POWERKEY_KEYPAD_VALUES_HPP
