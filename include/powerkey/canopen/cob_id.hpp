@@ -41,14 +41,14 @@ POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::function, POWERKEY_CANOPEN_FUNCTIO
 namespace powerkey::canopen {
 
 namespace detail {
-// Function code base (bits 10..7 of the COB-ID) of each per-node function; 0 for the others.
-// In the order of POWERKEY_CANOPEN_FUNCTION_LIST.
+// Function code base (bits 10..7 of the COB-ID) of each function, in the order of
+// POWERKEY_CANOPEN_FUNCTION_LIST; 0 for those with no node.
+inline constexpr std::array<std::uint16_t, 15> per_node_bases{
+    0, 0, 0x180, 0x280, 0x380, 0x480, 0x200, 0x300, 0x400, 0x500, 0x580, 0x600, 0x700, 0, 0};
+static_assert(per_node_bases.size() == std::size(enum_names<function>::entries));
 constexpr std::uint16_t per_node_base(function f) noexcept {
-    constexpr std::array<std::uint16_t, 15> bases{
-        0, 0, 0x180, 0x280, 0x380, 0x480, 0x200, 0x300, 0x400, 0x500, 0x580, 0x600, 0x700, 0, 0};
-    static_assert(bases.size() == std::size(enum_names<function>::entries));
     const auto i = static_cast<std::size_t>(f);
-    return i < bases.size() ? bases[i] : std::uint16_t{0};
+    return i < per_node_bases.size() ? per_node_bases[i] : std::uint16_t{0};
 }
 }  // namespace detail
 

@@ -240,7 +240,8 @@ constexpr can::frame sdo_frame(function f, node_id node, const can::payload& p) 
 // An expedited transfer: `command` with 4 - size in bits 2..3, the address, the four data bytes.
 constexpr can::payload expedited(std::uint8_t command, sdo_address a,
                                  const expedited_data& d) noexcept {
-    auto p = with_address(static_cast<std::uint8_t>(command | (4 - d.size.value()) << 2), a);
+    const auto n = static_cast<std::uint8_t>((4 - d.size.value()) << 2);
+    auto p = with_address(static_cast<std::uint8_t>(command | n), a);
     for (std::size_t i = 0; i < 4; ++i) p[4 + i] = d.bytes[i];
     return p;
 }

@@ -59,9 +59,17 @@ public:
 
     // Begin reading `address` (any earlier transfer is forgotten); send the frame returned.
     [[nodiscard]] constexpr can::frame start(sdo_address address) noexcept {
-        *this = segmented_upload(node_, policy_);
         state_ = upload_state::running;
+        error_ = errc{};
         address_ = address;
+        initiated_ = false;
+        toggle_ = false;
+        size_indicated_ = false;
+        announced_ = 0;
+        aborted_ = false;
+        notes_ = upload_notes{};
+        size_ = 0;
+        text_size_ = 0;
         return encode(node_, sdo_upload_request{address});
     }
 

@@ -143,25 +143,17 @@ constexpr std::uint8_t codec_row_number(const object_row& r) noexcept {
 // reading a size and a place per dictionary.
 inline constexpr unsigned slot_bits = 8;
 inline constexpr std::size_t slots_per_dictionary = std::size_t{1} << slot_bits;
-using slot_table = std::array<std::uint8_t, slots_per_dictionary>;
-
-// Puts row number n (1..) in the first free slot from key's home; how many slots it tried.
-constexpr std::size_t place(slot_table& t, std::uint32_t key, std::uint8_t n,
-                            std::uint32_t multiplier) noexcept {
-    std::size_t s = home_slot(key, multiplier, 32 - slot_bits);
-    std::size_t probes = 1;
-    for (; t[s] != 0; ++probes) s = (s + 1) % slots_per_dictionary;
-    t[s] = n;
-    return probes;
-}
 
 // The most probes any address of rows needs.
 constexpr std::size_t max_probes(std::span<const object_row> rows,
                                  std::uint32_t multiplier) noexcept {
-    slot_table t{};
+    std::array<bool, slots_per_dictionary> used{};
     std::size_t most = 0;
     for (const auto& r : rows) {
-        const std::size_t probes = place(t, wire_key(r.address), 1, multiplier);
+        std::size_t s = home_slot(wire_key(r.address), multiplier, 32 - slot_bits);
+        std::size_t probes = 1;
+        for (; used[s]; ++probes) s = (s + 1) % slots_per_dictionary;
+        used[s] = true;
         most = probes > most ? probes : most;
     }
     return most;
@@ -179,10 +171,14 @@ inline constexpr std::uint32_t hash_multiplier = find_multiplier();
 static_assert(hash_multiplier != 0, "no multiplier finds every address in two probes");
 
 inline constexpr auto address_slots = [] {
-    std::array<slot_table, dictionary_count> t{};
-    for (std::size_t d = 0; d < dictionary_count; ++d)
-        for (const auto& r : dictionary_rows[d])
-            place(t[d], wire_key(r.address), codec_row_number(r), hash_multiplier);
+    std::array<std::uint8_t, dictionary_count * slots_per_dictionary> t{};
+    for (std::size_t d = 0; d < dictionary_count; ++d) {
+        for (const auto& r : dictionary_rows[d]) {
+            std::size_t s = home_slot(wire_key(r.address), hash_multiplier, 32 - slot_bits);
+            while (t[d * slots_per_dictionary + s] != 0) s = (s + 1) % slots_per_dictionary;
+            t[d * slots_per_dictionary + s] = codec_row_number(r);
+        }
+    }
     return t;
 }();
 
@@ -220,27 +216,21 @@ constexpr std::uint8_t scan_codec_row(dictionary d, std::uint32_t key) noexcept 
     return 0;
 }
 
-// The row number at wire address `key` (its low 24 bits, as wire_key makes it) in the hash table
-// `slots` of `rows`, 0 when it has none. Two probes, unrolled: every address is found within two
-// (find_multiplier). An empty slot is row 0, the sentinel no key matches; a key whose home slot
-// is empty is nowhere (it would have been put there: no row is ever removed).
-template <class Rows>
-constexpr std::uint8_t probe(const slot_table& slots, const Rows& rows,
-                             std::uint32_t key) noexcept {
-    key &= 0xFF'FFFF;
-    const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
-    const std::uint8_t s = slots[home];
-    if (rows[s].key == key) return matched_row(s);
-    const std::uint8_t t = slots[(home + 1) % slots_per_dictionary];
-    if (rows[t].key == key) return matched_row(t);
-    return 0;
-}
-
-// The codec row number at wire address `key` in dictionary d, 0 when it has none. Under -Os, the
-// scan above.
+// The codec row number at wire address `key` (its low 24 bits, as wire_key makes it) in
+// dictionary d, 0 when it has none.
+// Two probes, unrolled: every address is found within two (find_multiplier). An empty slot is
+// row 0, the sentinel no key matches; a key whose home slot is empty is nowhere (it would have
+// been put there: no row is ever removed). Under -Os, the scan above.
 constexpr std::uint8_t find_codec_row(dictionary d, std::uint32_t key) noexcept {
     if constexpr (POWERKEY_DETAIL_SIZE) return scan_codec_row(d, key);
-    return probe(address_slots[static_cast<std::size_t>(d)], codec_rows, key);
+    key &= 0xFF'FFFF;
+    const std::size_t table = static_cast<std::size_t>(d) * slots_per_dictionary;
+    const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
+    const std::uint8_t s = address_slots[table + home];
+    if (codec_rows[s].key == key) return matched_row(s);
+    const std::uint8_t t = address_slots[table + ((home + 1) % slots_per_dictionary)];
+    if (codec_rows[t].key == key) return matched_row(t);
+    return 0;
 }
 
 // Per dictionary and object: the codec row number (the encoder's lookup), and the full row
@@ -282,9 +272,12 @@ struct one_dictionary {
         return t;
     }();
     static constexpr auto slots = [] {
-        slot_table t{};
-        for (std::size_t i = 0; i < full.size(); ++i)
-            place(t, wire_key(full[i].address), static_cast<std::uint8_t>(i + 1), hash_multiplier);
+        std::array<std::uint8_t, slots_per_dictionary> t{};
+        for (std::size_t i = 0; i < full.size(); ++i) {
+            std::size_t s = home_slot(wire_key(full[i].address), hash_multiplier, 32 - slot_bits);
+            while (t[s] != 0) s = (s + 1) % slots_per_dictionary;
+            t[s] = static_cast<std::uint8_t>(i + 1);
+        }
         return t;
     }();
     static constexpr auto by_object = [] {
@@ -294,7 +287,13 @@ struct one_dictionary {
         return t;
     }();
     static constexpr std::uint8_t find(std::uint32_t key) noexcept {
-        return probe(slots, rows, key);
+        key &= 0xFF'FFFF;
+        const std::uint32_t home = home_slot(key, hash_multiplier, 32 - slot_bits);
+        const std::uint8_t s = slots[home];
+        if (rows[s].key == key) return matched_row(s);
+        const std::uint8_t t = slots[(home + 1) % slots_per_dictionary];
+        if (rows[t].key == key) return matched_row(t);
+        return 0;
     }
     static constexpr std::uint8_t find(object o) noexcept {
         const auto i = static_cast<std::size_t>(o);
@@ -336,18 +335,23 @@ constexpr const fixed_layout<M>& known(const fixed_layout<M>&) noexcept {
     return fixed_layout_v<M>;
 }
 
-// The codec row number of a key (std::uint32_t) or an object in keypad's dictionary (0: none),
-// and the row.
-template <class Key>
-constexpr std::uint8_t find_codec_row(const model_layout& keypad, Key k) noexcept {
-    return find_codec_row(keypad.dictionary, k);
+// The codec row number of a key or an object in keypad's dictionary (0: none), and the row.
+constexpr std::uint8_t find_codec_row(const model_layout& keypad, std::uint32_t key) noexcept {
+    return find_codec_row(keypad.dictionary, key);
+}
+constexpr std::uint8_t find_codec_row(const model_layout& keypad, object o) noexcept {
+    return find_codec_row(keypad.dictionary, o);
 }
 constexpr const codec_row& codec_row_at(const model_layout&, std::uint8_t i) noexcept {
     return codec_rows[i];
 }
-template <model M, class Key>
-constexpr std::uint8_t find_codec_row(const fixed_layout<M>&, Key k) noexcept {
-    return one_dictionary<row_of(M).dictionary>::find(k);
+template <model M>
+constexpr std::uint8_t find_codec_row(const fixed_layout<M>&, std::uint32_t key) noexcept {
+    return one_dictionary<row_of(M).dictionary>::find(key);
+}
+template <model M>
+constexpr std::uint8_t find_codec_row(const fixed_layout<M>&, object o) noexcept {
+    return one_dictionary<row_of(M).dictionary>::find(o);
 }
 template <model M>
 constexpr const codec_row& codec_row_at(const fixed_layout<M>&, std::uint8_t i) noexcept {
@@ -375,24 +379,31 @@ constexpr const codec_row& codec_row_at(const fixed_layout<M>&, std::uint8_t i) 
 }
 
 namespace detail {
-// rows_of and find_row (by object or sdo_address) of keypad's dictionary: for a fixed_layout, from
-// its own tables alone.
+// rows_of and find_row of keypad's dictionary: for a fixed_layout, from its own tables alone.
 constexpr std::span<const object_row> rows_of(const model_layout& keypad) noexcept {
     return powerkey::rows_of(keypad.dictionary);
 }
-template <class Key>
-constexpr std::optional<object_row> find_row(const model_layout& keypad, Key k) noexcept {
-    return powerkey::find_row(keypad.dictionary, k);
+constexpr std::optional<object_row> find_row(const model_layout& keypad, object o) noexcept {
+    return powerkey::find_row(keypad.dictionary, o);
+}
+constexpr std::optional<object_row> find_row(const model_layout& keypad,
+                                             canopen::sdo_address a) noexcept {
+    return powerkey::find_row(keypad.dictionary, a);
 }
 template <model M>
 constexpr std::span<const object_row> rows_of(const fixed_layout<M>&) noexcept {
     return one_dictionary<fixed_layout<M>::dictionary_value>::full;
 }
-constexpr object lookup_key(object o) noexcept { return o; }
-constexpr std::uint32_t lookup_key(canopen::sdo_address a) noexcept { return wire_key(a); }
-template <model M, class Key>
-constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, Key k) noexcept {
-    const std::uint8_t i = find_codec_row(keypad, lookup_key(k));
+template <model M>
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, object o) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, o);
+    if (i == 0) return std::nullopt;
+    return rows_of(keypad)[i - 1u];
+}
+template <model M>
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad,
+                                             canopen::sdo_address a) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, wire_key(a));
     if (i == 0) return std::nullopt;
     return rows_of(keypad)[i - 1u];
 }
