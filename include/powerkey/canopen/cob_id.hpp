@@ -8,8 +8,6 @@
 #include <powerkey/enum_names.hpp>
 #include <powerkey/error.hpp>
 
-#include <array>
-#include <cstddef>
 #include <cstdint>
 
 namespace powerkey::canopen {
@@ -41,14 +39,22 @@ POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::function, POWERKEY_CANOPEN_FUNCTIO
 namespace powerkey::canopen {
 
 namespace detail {
-// Function code base (bits 10..7 of the COB-ID) of each function, in the order of
-// POWERKEY_CANOPEN_FUNCTION_LIST; 0 for those with no node.
-inline constexpr std::array<std::uint16_t, 15> per_node_bases{
-    0, 0, 0x180, 0x280, 0x380, 0x480, 0x200, 0x300, 0x400, 0x500, 0x580, 0x600, 0x700, 0, 0};
-static_assert(per_node_bases.size() == std::size(enum_names<function>::entries));
+// Function code base (bits 10..7 of the COB-ID) of each per-node function; 0 for the others.
 constexpr std::uint16_t per_node_base(function f) noexcept {
-    const auto i = static_cast<std::size_t>(f);
-    return i < per_node_bases.size() ? per_node_bases[i] : std::uint16_t{0};
+    switch (f) {
+        case function::tpdo1: return 0x180;
+        case function::tpdo2: return 0x280;
+        case function::tpdo3: return 0x380;
+        case function::tpdo4: return 0x480;
+        case function::rpdo1: return 0x200;
+        case function::rpdo2: return 0x300;
+        case function::rpdo3: return 0x400;
+        case function::rpdo4: return 0x500;
+        case function::sdo_tx: return 0x580;
+        case function::sdo_rx: return 0x600;
+        case function::heartbeat: return 0x700;
+        default: return 0;
+    }
 }
 }  // namespace detail
 
@@ -93,8 +99,7 @@ struct cob_info {
     return classify(can::standard_id::make(f.raw_id() & 0x7FF).value());
 }
 
-// True when the frame is addressed to or sent by the keypad `node`: NMT and SYNC (every node
-// hears them), a J1939 frame (the keypads' protocol switch), or a per-node COB-ID of `node`.
+// True when the frame is addressed to or sent by the keypad `node` (docs/canopen.md, "COB-IDs").
 [[nodiscard]] constexpr bool concerns(const cob_info& c, node_id node) noexcept {
     switch (c.fn) {
         case function::nmt:
