@@ -203,10 +203,8 @@ inline constexpr auto dictionary_codec_rows = [] {
     return t;
 }();
 
-// find_codec_row by a scan of the codec rows dictionary d has: the same answer (a test holds the
-// two to it for every key of every dictionary), in 20 bytes a dictionary rather than 256. A
-// firmware's lookup (-Os, POWERKEY_DETAIL_SIZE), where flash counts more than the hundreds of
-// instructions the scan takes.
+// find_codec_row by a scan of the codec rows dictionary d has (a test holds the two to the same
+// answer): the lookup under -Os, POWERKEY_DETAIL_SIZE (docs/performance.md, firmware b).
 constexpr std::uint8_t scan_codec_row(dictionary d, std::uint32_t key) noexcept {
     key &= 0xFF'FFFF;
     const auto& has = dictionary_codec_rows[static_cast<std::size_t>(d)];

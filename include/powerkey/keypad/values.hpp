@@ -42,11 +42,8 @@ using level = bounded<level_tag, std::uint8_t, 0, 0x3F>;
     X(amber, "amber_orange")
 // clang-format on
 
-// Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k). The PK1000 manual's names
-// "white/light blue" and "amber/orange" are aliases of white and amber. `keep` (00h) exists only
-// in the backlight PDO, where it keeps the stored colour (PK1000 section 15, note 2; PKP3500-MT
-// 18) or, on the PKP-2600-SI, returns to the default colour
-// (model_info::backlight_zero_is_default).
+// Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k; docs/pk1000.md). `keep` (00h)
+// only in the backlight PDO (PK1000 15 note 2; model_info::backlight_zero_is_default).
 enum class backlight_colour : std::uint8_t {
     keep = 0x00,
     POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
