@@ -392,16 +392,11 @@ template <model M>
 constexpr std::span<const object_row> rows_of(const fixed_layout<M>&) noexcept {
     return one_dictionary<fixed_layout<M>::dictionary_value>::full;
 }
-template <model M>
-constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, object o) noexcept {
-    const std::uint8_t i = find_codec_row(keypad, o);
-    if (i == 0) return std::nullopt;
-    return rows_of(keypad)[i - 1u];
-}
-template <model M>
-constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad,
-                                             canopen::sdo_address a) noexcept {
-    const std::uint8_t i = find_codec_row(keypad, wire_key(a));
+constexpr object lookup_key(object o) noexcept { return o; }
+constexpr std::uint32_t lookup_key(canopen::sdo_address a) noexcept { return wire_key(a); }
+template <model M, class Key>  // an object or an sdo_address
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, Key k) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, lookup_key(k));
     if (i == 0) return std::nullopt;
     return rows_of(keypad)[i - 1u];
 }
