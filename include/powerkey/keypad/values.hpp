@@ -93,8 +93,9 @@ enum class startup_show : std::uint8_t { disabled = 0x00, complete = 0x01, fast_
 // clang-format on
 enum class led_state : std::uint8_t { POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-// The colour planes of an LED map.
-enum class plane : std::uint8_t { red = 0, green = 1, blue = 2 };
+// The colour planes of an LED map: 0 red, 1 green, 2 blue.
+#define POWERKEY_PLANE_LIST(X) X(red) X(green) X(blue)
+enum class plane : std::uint8_t { POWERKEY_PLANE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // What one key's LEDs show: a plane or a mix of planes (PKP sections 11, 12: amber = red + green,
 // magenta = red + blue, cyan = green + blue, white = all three).
@@ -234,15 +235,10 @@ struct enum_names<startup_show> {
     };
 };
 
-template <>
-struct enum_names<plane> {
-    static constexpr enum_name_entry<plane> entries[] = {
-        {plane::red, "red"}, {plane::green, "green"}, {plane::blue, "blue"}};
-};
-
 }  // namespace powerkey
 
 POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_state, POWERKEY_LED_STATE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::plane, POWERKEY_PLANE_LIST);
 POWERKEY_DETAIL_ENUM_NAMES(powerkey::colour, POWERKEY_COLOUR_LIST);
 POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_mode, POWERKEY_LED_MODE_LIST);
 
