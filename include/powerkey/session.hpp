@@ -1,26 +1,6 @@
-// powerkey: a session follows a bus log, frame by frame and in order, without allocation:
-//   - it decodes each frame for the keypad's current node id (decode(f, node, model));
-//   - it pairs each SDO request with its reply (same index and sub-index) and flags replies
-//     that answer nothing;
-//   - it runs segmented uploads (device name 1008h, serial numbers ...) through the core reader
-//     canopen::segmented_upload, so the whole string is there when the last segment passes;
-//   - it follows a node-id change to the new COB-IDs: a keypad that answers from the new id
-//     (PK1000 object 2013h, section 23) or from the old id and then boots up with the new one
-//     (PKP command 6500h/70h, section 13 h), as the model table says;
-//   - it notices the switch to J1939 (a write of protocol_j1939 = 1, PK1000 section 49) and back
-//     (80h to the keypad's J1939 address, section 27 of the J1939 manuals), for the models that
-//     have it;
-//   - it follows the keypad's J1939 address (docs/j1939.md): 21h by default, or the one given to
-//     narrow_j1939; an address claim (EE00h, section 20) from another address when not narrowed
-//     says where the keypad is; a command 70h to the keypad (section 16) moves it at once, and
-//     from then on only the new address is the keypad's (decode narrows to it).
-//
-//   session<> s(model::pk1000, canopen::default_node_id);
-//   for (const can::frame& f : log) {
-//       const auto e = s.step(f);
-//       if (e.upload_done) print(s.text());
-//       if (e.new_node) print(*e.new_node);
-//   }
+// powerkey: a session follows one keypad through a bus log, frame by frame, without allocation:
+// SDO pairs, string uploads, node-id changes, the protocol switch and the J1939 address
+// (docs/decoder.md, "The session follower").
 #ifndef POWERKEY_SESSION_HPP
 #define POWERKEY_SESSION_HPP
 
@@ -38,7 +18,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <type_traits>
 #include <variant>
 
 namespace powerkey {
@@ -60,18 +39,12 @@ enum class bus_protocol : std::uint8_t { POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DET
 // clang-format on
 enum class sdo_pairing : std::uint8_t { POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<bus_protocol> {
-    using value_type = bus_protocol;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_BUS_PROTOCOL_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-template <>
-struct enum_names<sdo_pairing> {
-    using value_type = sdo_pairing;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_SDO_PAIRING_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+}  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::bus_protocol, POWERKEY_BUS_PROTOCOL_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::sdo_pairing, POWERKEY_SDO_PAIRING_LIST);
+
+namespace powerkey {
 
 // An SDO frame of the keypad as the session read it: which frame of the protocol (the SDO engine's
 // sdo_op) and the object it names (none for a segment or segment request).
@@ -155,49 +128,19 @@ private:
         return detail::codec_rows[detail::find_codec_row(info_->dictionary, o)].address();
     }
 
-    // The SDO frame as decode returned it; for a frame decode refused (an object the dictionary
-    // lacks, a value out of range), the SDO engine's reading of its specifier and address, so
-    // that the keypad's abort still answers it.
+    // The SDO frame as the SDO engine reads it, whether decode took it or refused it (an object the
+    // dictionary lacks, a value out of range: the keypad's abort still answers it). A frame of
+    // another length (trimmed, or refused as too short) is read zero-filled: its request still
+    // waits for a reply whatever its form (issue 22).
     constexpr std::optional<powerkey::sdo_frame> sdo_frame_of(
         const can::frame& f, const session_event& e) const noexcept {
-        using op = canopen::sdo_op;
-        if (e.decoded) {
-            return std::visit(
-                [this](const auto& v) -> std::optional<powerkey::sdo_frame> {
-                    using T = std::remove_cvref_t<decltype(v)>;
-                    if constexpr (std::is_same_v<T, sdo_read>)
-                        return powerkey::sdo_frame{op::upload, address_of(v.object)};
-                    else if constexpr (std::is_same_v<T, sdo_write>)
-                        return powerkey::sdo_frame{op::expedited_download, address_of(v.object)};
-                    else if constexpr (std::is_same_v<T, command>)
-                        return powerkey::sdo_frame{op::expedited_download,
-                                                   address_of(object::command_module)};
-                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_request>)
-                        return powerkey::sdo_frame{op::segment_request};
-                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_request>)
-                        return powerkey::sdo_frame{op::abort_request, v.abort.address};
-                    else if constexpr (std::is_same_v<T, sdo_write_reply>)
-                        return powerkey::sdo_frame{op::download_response, address_of(v.object)};
-                    else if constexpr (std::is_same_v<T, sdo_read_reply>)
-                        return powerkey::sdo_frame{op::expedited_upload, address_of(v.object)};
-                    else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>)
-                        return powerkey::sdo_frame{op::upload_initiate, v.address};
-                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_response>)
-                        return powerkey::sdo_frame{op::segment};
-                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_response>)
-                        return powerkey::sdo_frame{op::abort_response, v.abort.address};
-                    else
-                        return std::nullopt;
-                },
-                *e.decoded);
-        }
-        // A frame of another length (trimmed, or refused as too short) is read zero-filled: its
-        // request still waits for a reply whatever its form (issue 22).
-        if (f.size() < 4) return std::nullopt;
+        if (!e.decoded && f.size() < 4) return std::nullopt;
         const auto w = canopen::sdo_word::of(detail::with_length(f, 8));
         const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
                                                              : canopen::sdo_response_op(w);
         if (!o) return std::nullopt;
+        if (*o == canopen::sdo_op::segment || *o == canopen::sdo_op::segment_request)
+            return powerkey::sdo_frame{*o};  // a segment names no object
         return powerkey::sdo_frame{*o, w.address()};
     }
 

@@ -1,6 +1,5 @@
-// powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it.
-//   NMT 000h, SYNC 080h, TPDO1..4 180h/280h/380h/480h+n, RPDO1..4 200h/300h/400h/500h+n,
-//   SDO server->client 580h+n, SDO client->server 600h+n, NMT error control 700h+n.
+// powerkey: COB-ID arithmetic of the CiA 301 predefined connection set, as the keypads use it
+// (docs/canopen.md, "COB-IDs").
 #ifndef POWERKEY_CANOPEN_COB_ID_HPP
 #define POWERKEY_CANOPEN_COB_ID_HPP
 
@@ -35,12 +34,7 @@ enum class function : std::uint8_t { POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DET
 
 }  // namespace powerkey::canopen
 
-template <>
-struct powerkey::enum_names<powerkey::canopen::function> {
-    using value_type = powerkey::canopen::function;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_FUNCTION_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::function, POWERKEY_CANOPEN_FUNCTION_LIST);
 
 namespace powerkey::canopen {
 
@@ -105,8 +99,7 @@ struct cob_info {
     return classify(can::standard_id::make(f.raw_id() & 0x7FF).value());
 }
 
-// True when the frame is addressed to or sent by the keypad `node`: NMT and SYNC (every node
-// hears them), a J1939 frame (the keypads' protocol switch), or a per-node COB-ID of `node`.
+// True when the frame is addressed to or sent by the keypad `node` (docs/canopen.md, "COB-IDs").
 [[nodiscard]] constexpr bool concerns(const cob_info& c, node_id node) noexcept {
     switch (c.fn) {
         case function::nmt:

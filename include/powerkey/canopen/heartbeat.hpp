@@ -26,12 +26,7 @@ enum class nmt_state : std::uint8_t { POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_D
 
 }  // namespace powerkey::canopen
 
-template <>
-struct powerkey::enum_names<powerkey::canopen::nmt_state> {
-    using value_type = powerkey::canopen::nmt_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_NMT_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::nmt_state, POWERKEY_CANOPEN_NMT_STATE_LIST);
 
 namespace powerkey::canopen {
 
@@ -52,9 +47,7 @@ struct heartbeat_message {
     return b == 0x00 || b == 0x04 || b == 0x05 || b == 0x7F;
 }
 
-// Errors: wrong_id_format, wrong_id (not 700h + node), wrong_length (not 1 byte),
-// value_out_of_range (a state other than 00h, 04h, 05h, 7Fh; this includes the node-guarding
-// toggle bit 80h, which the keypads do not use).
+// Errors: docs/canopen.md, "Boot-up and heartbeat" (the keypads use no node-guarding toggle bit).
 [[nodiscard]] constexpr result<heartbeat_message> decode_heartbeat(const can::frame& f,
                                                                    node_id node) noexcept {
     if (const auto e = detail::check_frame(f, cob_id(function::heartbeat, node), 1); e != errc{})

@@ -55,8 +55,7 @@ struct nmt_message {
                                                               m.target.value()});
 }
 
-// Errors: wrong_id_format, wrong_id (not 000h), wrong_length (not 2 bytes), unknown_command,
-// value_out_of_range (target above 7Fh).
+// Errors: docs/canopen.md, "NMT node control".
 [[nodiscard]] constexpr result<nmt_message> decode_nmt(const can::frame& f) noexcept {
     if (const auto e = detail::check_frame(f, nmt_cob_id, 2); e != errc{}) return e;
     nmt_message m;

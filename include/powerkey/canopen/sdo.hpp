@@ -1,11 +1,5 @@
-// powerkey: SDO frames (CiA 301 7.2.4), the subset the keypads speak. Every SDO frame has 8 bytes.
-//   client -> keypad, COB-ID 600h + node          keypad -> client, COB-ID 580h + node
-//   23/27/2B/2F  expedited download, 4/3/2/1 B     60     download response
-//   40           upload request                    43/47/4B/4F expedited upload, 4/3/2/1 B
-//   60 / 70      upload segment request, toggle    41     segmented upload, size in bytes 4..7
-//   80           abort (either direction)          40     segmented upload, size not indicated
-//                                                  0x     upload segment (toggle, unused, last)
-// Bytes 1..2 hold the index (little endian), byte 3 the sub-index, bytes 4..7 the data.
+// powerkey: SDO frames (CiA 301 7.2.4), the subset the keypads speak, always 8 bytes: the
+// commands, message types and byte layout are docs/canopen.md's table ("SDO").
 #ifndef POWERKEY_CANOPEN_SDO_HPP
 #define POWERKEY_CANOPEN_SDO_HPP
 
@@ -194,12 +188,7 @@ enum class sdo_abort_code : std::uint32_t {
 }  // namespace powerkey::canopen
 
 // CiA 301 table 22's abort codes by name; a code CiA 301 does not name prints as "".
-template <>
-struct powerkey::enum_names<powerkey::canopen::sdo_abort_code> {
-    using value_type = powerkey::canopen::sdo_abort_code;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::canopen::sdo_abort_code, POWERKEY_CANOPEN_SDO_ABORT_CODE_LIST);
 
 namespace powerkey::canopen {
 
@@ -245,25 +234,21 @@ constexpr can::payload with_address(std::uint8_t command, sdo_address a) noexcep
     p[3] = a.subindex;
     return p;
 }
-constexpr std::uint8_t size_bits(expedited_size s) noexcept {
-    return static_cast<std::uint8_t>((4 - s.value()) << 2);
-}
 constexpr can::frame sdo_frame(function f, node_id node, const can::payload& p) noexcept {
     return can::frame(cob_id(f, node), 8, p);
 }
-constexpr can::payload with_data(std::uint8_t command, sdo_address a,
-                                 const std::array<std::uint8_t, 4>& d) noexcept {
-    auto p = with_address(command, a);
-    for (std::size_t i = 0; i < 4; ++i) p[4 + i] = d[i];
+// An expedited transfer: `command` with 4 - size in bits 2..3, the address, the four data bytes.
+constexpr can::payload expedited(std::uint8_t command, sdo_address a,
+                                 const expedited_data& d) noexcept {
+    const auto n = static_cast<std::uint8_t>((4 - d.size.value()) << 2);
+    auto p = with_address(static_cast<std::uint8_t>(command | n), a);
+    for (std::size_t i = 0; i < 4; ++i) p[4 + i] = d.bytes[i];
     return p;
 }
 }  // namespace detail
 
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_download_request& m) noexcept {
-    return detail::sdo_frame(
-        function::sdo_rx, node,
-        detail::with_data(static_cast<std::uint8_t>(0x23 | detail::size_bits(m.value.size)),
-                          m.address, m.value.bytes));
+    return detail::sdo_frame(function::sdo_rx, node, detail::expedited(0x23, m.address, m.value));
 }
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_upload_request& m) noexcept {
     return detail::sdo_frame(function::sdo_rx, node, detail::with_address(0x40, m.address));
@@ -277,10 +262,7 @@ constexpr can::payload with_data(std::uint8_t command, sdo_address a,
     return detail::sdo_frame(function::sdo_tx, node, detail::with_address(0x60, m.address));
 }
 [[nodiscard]] constexpr can::frame encode(node_id node, const sdo_upload_response& m) noexcept {
-    return detail::sdo_frame(
-        function::sdo_tx, node,
-        detail::with_data(static_cast<std::uint8_t>(0x43 | detail::size_bits(m.value.size)),
-                          m.address, m.value.bytes));
+    return detail::sdo_frame(function::sdo_tx, node, detail::expedited(0x43, m.address, m.value));
 }
 [[nodiscard]] constexpr can::frame encode(node_id node,
                                           const sdo_upload_initiate_response& m) noexcept {
@@ -314,34 +296,31 @@ enum class sdo_direction : std::uint8_t { request, response };
     return encode(node, m.abort, sdo_direction::response);
 }
 
-[[nodiscard]] constexpr can::frame encode_request(node_id node, const sdo_request& m) noexcept {
+namespace detail {
+// A variant's frame; its sdo_abort travels in direction `dir`.
+template <class Variant>
+constexpr can::frame encode_either(node_id node, const Variant& m, sdo_direction dir) noexcept {
     return std::visit(
-        [node](const auto& v) -> can::frame {
+        [node, dir](const auto& v) -> can::frame {
             if constexpr (std::is_same_v<std::decay_t<decltype(v)>, sdo_abort>)
-                return encode(node, v, sdo_direction::request);
+                return encode(node, v, dir);
             else
                 return encode(node, v);
         },
         m);
 }
+}  // namespace detail
+
+[[nodiscard]] constexpr can::frame encode_request(node_id node, const sdo_request& m) noexcept {
+    return detail::encode_either(node, m, sdo_direction::request);
+}
 [[nodiscard]] constexpr can::frame encode_response(node_id node, const sdo_response& m) noexcept {
-    return std::visit(
-        [node](const auto& v) -> can::frame {
-            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, sdo_abort>)
-                return encode(node, v, sdo_direction::response);
-            else
-                return encode(node, v);
-        },
-        m);
+    return detail::encode_either(node, m, sdo_direction::response);
 }
 
 // --- the SDO engine -----------------------------------------------------------------------------
-// Every SDO frame is read here, once and one way: its 8 bytes as one little-endian word (byte 0
-// the specifier, bytes 1..2 the index, 3 the sub-index, 4..7 the data), and the specifier says
-// which frame of the protocol it is, checked for what the keypads' subset reserves. The CiA 301
-// decoders below and the keypad codec (keypad/codec.hpp, which then looks the address up in the
-// keypad's dictionary) both run on it. The frames a bus carries most are tested first; the rest
-// is out of line.
+// Every SDO frame is read here, once and one way (docs/canopen.md, "One SDO parser"); the frames a
+// bus carries most are tested first, the rest is out of line.
 
 // Which SDO frame a word is.
 enum class sdo_op : std::uint8_t {
@@ -440,13 +419,9 @@ POWERKEY_DETAIL_INLINE constexpr result<sdo_op> other_response_op(sdo_word w) no
     }
 }
 
-// The frame a client sends (600h + node), handed to the handler of its kind: download() for an
-// expedited download (23h 27h 2Bh 2Fh), upload() for a read (40h), other() for anything else,
-// which other_request_op(w) tells apart: a segment request, an abort, or a refusal (errors:
-// unknown_command, a specifier the keypads do not use: segmented or block download, expedited
-// download without size; reserved_not_zero, an upload or segment request with reserved bits or
-// bytes set, e.g. 41h for 40h). The handlers are called in place, so that a caller's common cases
-// are inlined as if written here, and its other() can be one call out of line.
+// The frame a client sends (600h + node), handed to the handler of its kind: download() (23h 27h
+// 2Bh 2Fh), upload() (40h), other() for the rest, which other_request_op(w) tells apart. Called in
+// place, so that a caller's common cases inline as if written here.
 template <class R, class Download, class Upload, class Other>
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr R visit_sdo_request(sdo_word w, Download&& download,
                                                                    Upload&& upload,
@@ -457,11 +432,8 @@ template <class R, class Download, class Upload, class Other>
     return other();
 }
 
-// The frame a server sends (580h + node): download_response() for 60h, expedited_upload() for
-// 43h 47h 4Bh 4Fh, other() for anything else, which other_response_op(w) tells apart: a segment,
-// a segmented-upload initiation, an abort, or a refusal (unknown_command: download segment, block
-// transfer, expedited upload without size; reserved_not_zero: reserved bits or bytes set in a
-// download response, an initiation or an abort).
+// The frame a server sends (580h + node): download_response() (60h), expedited_upload() (43h 47h
+// 4Bh 4Fh), other() for the rest, which other_response_op(w) tells apart.
 template <class R, class DownloadResponse, class ExpeditedUpload, class Other>
 [[nodiscard]] POWERKEY_DETAIL_INLINE constexpr R visit_sdo_response(
     sdo_word w, DownloadResponse&& download_response, ExpeditedUpload&& expedited_upload,
@@ -489,9 +461,8 @@ template <class R, class DownloadResponse, class ExpeditedUpload, class Other>
 }
 
 // --- decoding -----------------------------------------------------------------------------------
-// The CiA 301 structs of a frame to or from the keypad `node`, read by the engine above. Errors:
-// wrong_id_format, wrong_id (not 600h / 580h + node), wrong_length (not 8 bytes), then the
-// engine's (sdo_request_op, sdo_response_op).
+// The CiA 301 structs of a frame to or from the keypad `node`, read by the engine above; the
+// errors are docs/canopen.md's ("SDO").
 
 [[nodiscard]] constexpr result<sdo_request> decode_sdo_request(const can::frame& f,
                                                                node_id node) noexcept {

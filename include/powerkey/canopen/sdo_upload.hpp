@@ -1,22 +1,5 @@
-// powerkey: a segmented SDO upload reader (CiA 301 7.2.4.3.5-7): an allocation-free state machine
-// the caller steps one keypad reply at a time. It reads the string objects of both manuals
-// (device name 1008h, revisions 1009h/100Ah, model id 100Bh, serial numbers 2200h/6300h, model id
-// 6100h sub 2), which the keypads send either expedited (up to 4 bytes) or in segments.
-//
-//   segmented_upload<32> r(node);
-//   send(r.start({0x1008, 0}));
-//   while (r.state() == upload_state::running) {
-//       const auto step = r.step(receive());
-//       if (!step) break;                 // r.error() says why
-//       if (step->request) send(*step->request);
-//   }
-//   r.text();                             // "BlinkMarine"
-//
-// Some keypads break the segment rules (a size that does not match the bytes sent, a segment
-// after the announced size without the last flag, NUL bytes inside the text; docs/errata.md). With
-// upload_policy::report, the default, the reader keeps every byte the keypad sends and records
-// each discrepancy in notes(); with upload_policy::strict a discrepancy ends the transfer with
-// errc::size_mismatch. Toggle errors, aborts and overflow always end it.
+// powerkey: a segmented SDO upload reader (CiA 301 7.2.4.3.5-7), an allocation-free state machine
+// stepped one keypad reply at a time (docs/canopen.md, "Segmented string reads").
 #ifndef POWERKEY_CANOPEN_SDO_UPLOAD_HPP
 #define POWERKEY_CANOPEN_SDO_UPLOAD_HPP
 
@@ -90,13 +73,8 @@ public:
         return encode(node_, sdo_upload_request{address});
     }
 
-    // Feed one frame received from the keypad. A frame that is not an SDO response of this node
-    // (wrong_id_format, wrong_id) is refused and changes nothing. Any other error ends the
-    // transfer: wrong_length, unknown_command, reserved_not_zero (a malformed response),
-    // unexpected_frame (a response that does not fit: a download response, a segment before the
-    // initiate response, a step when not running), index_mismatch, sdo_aborted, toggle_error,
-    // buffer_too_small (more than Capacity bytes; nothing is written past the buffer), and with
-    // upload_policy::strict also size_mismatch.
+    // Feed one frame received from the keypad; the errors are docs/canopen.md's ("Segmented string
+    // reads"): wrong_id_format and wrong_id change nothing, any other ends the transfer.
     [[nodiscard]] constexpr result<upload_step> step(const can::frame& reply) noexcept {
         if (state_ != upload_state::running) return errc::unexpected_frame;
         const auto decoded = decode_sdo_response(reply, node_);
@@ -108,8 +86,7 @@ public:
         return step(*decoded);
     }
 
-    // The same for a response already decoded (a session hands over what its decoder returned,
-    // so the frame is read once).
+    // The same for a response already decoded.
     [[nodiscard]] constexpr result<upload_step> step(const sdo_response& reply) noexcept {
         if (state_ != upload_state::running) return errc::unexpected_frame;
         if (const auto* a = std::get_if<sdo_abort>(&reply)) {

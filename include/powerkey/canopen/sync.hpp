@@ -23,8 +23,7 @@ struct sync_message {
     return can::frame(sync_cob_id, std::array<std::uint8_t, 0>{});
 }
 
-// Errors: wrong_id_format, wrong_id (not 080h), wrong_length (any data: the manual's SYNC has
-// none, and the CiA 301 counter byte is not used by the keypads).
+// Errors: docs/canopen.md, "SYNC" (the keypads use no CiA 301 counter byte).
 [[nodiscard]] constexpr result<sync_message> decode_sync(const can::frame& f) noexcept {
     if (const auto e = detail::check_frame(f, sync_cob_id, 0); e != errc{}) return e;
     return sync_message{};

@@ -1,21 +1,6 @@
-// powerkey: the object dictionaries as data, one table of rows per dictionary family. A keypad
-// names its dictionary in its model row (models.hpp); several keypads share one.
-//
-//   dictionary     keypads                             manual (sections)
-//   pk1000         PK1000 (2000h.., the J1939 switch)  PK1000_CANopen_UM_rev1.13 (16-49)
-//   pkp_li         PKP-2200/2400/2600-LI (6000h..,     PKP-2200-2400-LI_CANopen_UM_rev1.1 (13-32)
-//                  command module 6500h)
-//   si_packed      PKP-2600-SI: 2001h/2002h in three   PKP2600SI_CANopen_UM_rev1.5;
-//   docs/si-family.md
-//                  pieces of the LED string
-//   si_mt          PKP-3500-MT: planes per colour,     PKP3500-MT_CANopen_UM_rev1.3
-//                  encoders, inputs
-//   si_per_colour  PKP-3500-SI, 2500-SI, 1500-LI,      docs/si-family.md (partly inferred)
-//                  2200/2300/2400-SI
-//
-// A row: object, address (index, sub-index), expedited size, access, range (min..max, or `also`),
-// and the value the manual gives at delivery. What each object is (its name and value kind) is
-// its row in objects.hpp.
+// powerkey: the object dictionaries as data, one table of rows per dictionary family: which
+// keypads and manual each is, and what a row's columns mean, are docs/models.md's ("The object
+// dictionaries"); what each object is, its row in objects.hpp.
 #ifndef POWERKEY_KEYPAD_DICTIONARIES_HPP
 #define POWERKEY_KEYPAD_DICTIONARIES_HPP
 
@@ -36,8 +21,7 @@ constexpr auto wo = access::write_only;
 constexpr std::uint32_t any = 0xFFFF'FFFF;
 constexpr std::uint32_t none_else = 0xFFFF'FFFF;
 
-// A dictionary written as its own rows and rows it shares with others: its own rows, then the
-// shared rows that no own row replaces (an own row replaces the shared row of the same object).
+// A dictionary written as its own rows, then the shared rows no own row replaces (same object).
 template <class Own>
 constexpr bool replaced(const Own& own, const object_row& c) noexcept {
     for (const auto& o : own)
@@ -188,10 +172,7 @@ inline constexpr object_row pkp_li_rows[] = {
 
 // The SI family: the PK1000's dictionary with RGB LEDs (docs/si-family.md, "Object
 // dictionary"; "2600SI n" and "MT n" are the sections of the PKP2600SI and PKP3500-MT manuals).
-// Writes the manuals show without a read (2100h, 20FFh, 1011h sub 1) are write-only here; the
-// COB-IDs read back without the CiA 301 bits 30/31; 1017h takes 000Ah..FEFFh (both manuals).
-// Each fact once: the rows the three SI dictionaries share (those of pk_shared_rows and these),
-// then each one's own rows; an own row replaces the shared row of the same object.
+// The rows the three SI dictionaries share (these, then pk_shared_rows).
 inline constexpr object_row si_common_own_rows[] = {
     {obj::demo_mode, {0x2100, 0}, 1, wo, 0, 1, none_else, 0},
     {obj::protocol_j1939, {0x20FF, 1}, 2, wo, 0, 1, none_else, 0},
@@ -307,8 +288,7 @@ inline constexpr auto si_per_colour_rows =
                                                                    si_common_rows);
 }  // namespace detail
 
-// The rows of each dictionary, in the order of POWERKEY_DICTIONARIES: manual order for the PKP;
-// for the PK1000 and the SI dictionaries each one's own rows, then the rows it shares (join_rows).
+// The rows of each dictionary, in the order of POWERKEY_DICTIONARIES.
 namespace detail {
 #define POWERKEY_DETAIL_DICTIONARY_ROWS(name) std::span<const object_row>{name##_rows},
 inline constexpr std::span<const object_row> dictionary_rows[] = {

@@ -1,11 +1,7 @@
-// powerkey: finding a dictionary row, by address (the decoders) and by object (the encoders,
-// the virtual keypad, the tool). What the decoder needs of a row is kept in 8 bytes instead of
-// object_row's 24, generated at compile time from the rows of dictionaries.hpp: one table of the
-// distinct codec rows of all dictionaries (the SI dictionaries share most of theirs, and most
-// ranges repeat), one table of the distinct ranges, and per dictionary a hash table of row
-// numbers. The full rows stay for rows_of and find_row: a firmware that only decodes links none
-// of them. For a model known when the program is built, the same tables of its one dictionary
-// (one_dictionary, chosen by the type of its layout, fixed_layout).
+// powerkey: finding a dictionary row, by address (the decoders) and by object (the encoders, the
+// virtual keypad, the tool), through compact rows and hash tables made at compile time
+// (docs/models.md, "The object dictionaries"). For a model known when the program is built, the
+// same tables of its one dictionary (one_dictionary, chosen by the type of its layout).
 #ifndef POWERKEY_KEYPAD_LOOKUP_HPP
 #define POWERKEY_KEYPAD_LOOKUP_HPP
 
@@ -207,10 +203,8 @@ inline constexpr auto dictionary_codec_rows = [] {
     return t;
 }();
 
-// find_codec_row by a scan of the codec rows dictionary d has: the same answer (a test holds the
-// two to it for every key of every dictionary), in 20 bytes a dictionary rather than 256. A
-// firmware's lookup (-Os, POWERKEY_DETAIL_SIZE), where flash counts more than the hundreds of
-// instructions the scan takes.
+// find_codec_row by a scan of the codec rows dictionary d has (a test holds the two to the same
+// answer): the lookup under -Os, POWERKEY_DETAIL_SIZE (docs/performance.md, firmware b).
 constexpr std::uint8_t scan_codec_row(dictionary d, std::uint32_t key) noexcept {
     key &= 0xFF'FFFF;
     const auto& has = dictionary_codec_rows[static_cast<std::size_t>(d)];
@@ -398,16 +392,11 @@ template <model M>
 constexpr std::span<const object_row> rows_of(const fixed_layout<M>&) noexcept {
     return one_dictionary<fixed_layout<M>::dictionary_value>::full;
 }
-template <model M>
-constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, object o) noexcept {
-    const std::uint8_t i = find_codec_row(keypad, o);
-    if (i == 0) return std::nullopt;
-    return rows_of(keypad)[i - 1u];
-}
-template <model M>
-constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad,
-                                             canopen::sdo_address a) noexcept {
-    const std::uint8_t i = find_codec_row(keypad, wire_key(a));
+constexpr object lookup_key(object o) noexcept { return o; }
+constexpr std::uint32_t lookup_key(canopen::sdo_address a) noexcept { return wire_key(a); }
+template <model M, class Key>  // an object or an sdo_address
+constexpr std::optional<object_row> find_row(const fixed_layout<M>& keypad, Key k) noexcept {
+    const std::uint8_t i = find_codec_row(keypad, lookup_key(k));
     if (i == 0) return std::nullopt;
     return rows_of(keypad)[i - 1u];
 }

@@ -1,11 +1,5 @@
-// powerkey: the keypads as data. A keypad is one row of POWERKEY_MODELS, written with designated
-// initialisers: its tool name, how the manuals spell it, its object dictionary, its keys, its LED
-// planes and the LED-map rule's stride, the PDOs it has, how it changes node id, and the strings
-// it reports. The enum `model`, its names and the model table are expanded from that one list;
-// adding a keypad of a known layout is adding a row (docs/models.md).
-//
-// The LED-map rule, for every keypad (docs/models.md, "The one bit-map rule"): LED (plane c, k),
-// c = 0 red, 1 green, 2 blue, is bit c * stride + (k - 1) of a little-endian bit string.
+// powerkey: the keypads as data, one row of POWERKEY_MODELS each (docs/models.md, "The model
+// table"), and the LED-map rule every keypad follows ("The one bit-map rule").
 #ifndef POWERKEY_KEYPAD_MODELS_HPP
 #define POWERKEY_KEYPAD_MODELS_HPP
 
@@ -55,17 +49,15 @@ struct model_info {
     bool backlight_colour = false;  // ... and colour in byte 1 (a level-only keypad needs 00h)
     bool encoders = false;          // TPDO2/3 encoder states, TPDO4 analog inputs (MT 12-14)
     bool j1939 = false;             // the switch to J1939 (protocol_j1939) and back (PK1000 49)
-    // After a node-id change the keypad answers from the new id (PK1000 section 23), not from the
-    // old one and then boots up with the new one (PKP section 13 h).
+    // After a node-id change: replies from the new id (PK1000 23), not the old one (PKP 13 h).
     bool replies_from_new_id = false;
-    // Colour 00h in the backlight PDO returns to the default colour (2003h sub 4) rather than
-    // keeping the current one: PKP2600SI manual section 15 (PK1000 15 and PKP3500-MT 18: keep).
+    // Backlight PDO colour 00h: the default (2003h sub 4), PKP2600SI 15; not keep (PK1000 15, MT
+    // 18).
     bool backlight_zero_is_default = false;
     // The strings the keypad reports (the virtual keypad sends them), at most six.
     std::array<keypad_string, 6> strings{};
 
-    // Derived from the fields above, for the PDO decoders (docs/performance.md): the bits of the
-    // key-state PDO's bytes 0..3 that name no key, and every bit of an LED map that names an LED.
+    // Derived, for the PDO decoders (docs/models.md, "The model table").
     std::uint32_t not_keys = keys >= 32 ? 0u : ~((std::uint32_t{1} << keys) - 1);
     std::uint64_t led_bits = std::uint64_t{led_mask} |
                              (planes > 1 ? std::uint64_t{led_mask} << (stride % 64) : 0) |
@@ -289,9 +281,8 @@ constexpr const model_info& row_or_none(model m) noexcept {
     return is_model(m) ? row_of(m) : no_model_row;
 }
 
-// What the decoders need of a row, without the names and strings: copied from model_table at
-// compile time, so that a firmware that only decodes links these 20-odd bytes a model and not
-// the model table (docs/performance.md).
+// What the decoders need of a row, without the names and strings (docs/models.md, "The model
+// table": a firmware that only decodes links these and not the model table).
 struct model_layout {
     powerkey::model id;
     powerkey::dictionary dictionary;

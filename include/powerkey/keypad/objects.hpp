@@ -1,9 +1,5 @@
-// powerkey: the vocabulary of the object dictionaries. Every object of every keypad is one row of
-// POWERKEY_OBJECTS below, named by its meaning: the same name wherever it appears (`led_brightness`
-// is 2003h sub 1 on the PK1000 and 6201h sub 1 on the PKP), with its value kind, which decides its
-// fields (messages.hpp) and its checks (codec.hpp). The enum `object`, its names and its kinds are
-// expanded from that one list. Where an object lives in each keypad's dictionary (address, size,
-// access, range, default) is a row of dictionaries.hpp; finding a row is lookup.hpp.
+// powerkey: the vocabulary of the object dictionaries, every object of every keypad one row of
+// POWERKEY_OBJECTS named by its meaning (docs/models.md, "The object vocabulary").
 #ifndef POWERKEY_KEYPAD_OBJECTS_HPP
 #define POWERKEY_KEYPAD_OBJECTS_HPP
 
@@ -27,19 +23,13 @@ namespace powerkey {
     X(string) X(restore) X(led_part) X(ring) X(direction_counter) X(none) X(commands)
 // clang-format on
 
-enum class value_kind : std::uint8_t {
-#define POWERKEY_DETAIL_KIND_ENUM(name) name,
-    POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_KIND_ENUM)
-#undef POWERKEY_DETAIL_KIND_ENUM
-};
+enum class value_kind : std::uint8_t { POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<value_kind> {
-#define POWERKEY_DETAIL_KIND_NAME(name) {value_kind::name, #name},
-    static constexpr enum_name_entry<value_kind> entries[] = {
-        POWERKEY_VALUE_KINDS(POWERKEY_DETAIL_KIND_NAME)};
-#undef POWERKEY_DETAIL_KIND_NAME
-};
+}  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::value_kind, POWERKEY_VALUE_KINDS);
+
+namespace powerkey {
 
 // Every object of every dictionary: X(name, value kind) and, for an LED plane, the plane it holds
 // (led_plane), or for a piece of the LED string the plane its first bit is in, the bit and the
@@ -262,29 +252,15 @@ struct object_row {
 // The dictionary families (dictionaries.hpp has their rows): X(name).
 #define POWERKEY_DICTIONARIES(X) X(pk1000) X(pkp_li) X(si_packed) X(si_mt) X(si_per_colour)
 
-enum class dictionary : std::uint8_t {
-#define POWERKEY_DETAIL_DICTIONARY_ENUM(name) name,
-    POWERKEY_DICTIONARIES(POWERKEY_DETAIL_DICTIONARY_ENUM)
-#undef POWERKEY_DETAIL_DICTIONARY_ENUM
-};
+enum class dictionary : std::uint8_t { POWERKEY_DICTIONARIES(POWERKEY_DETAIL_ENUMERATOR) };
 
-template <>
-struct enum_names<dictionary> {
-#define POWERKEY_DETAIL_DICTIONARY_NAME(name) {dictionary::name, #name},
-    static constexpr enum_name_entry<dictionary> entries[] = {
-        POWERKEY_DICTIONARIES(POWERKEY_DETAIL_DICTIONARY_NAME)};
-#undef POWERKEY_DETAIL_DICTIONARY_NAME
-};
+}  // namespace powerkey
 
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::dictionary, POWERKEY_DICTIONARIES);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::access, POWERKEY_ACCESS_LIST);
+
+namespace powerkey {
 inline constexpr std::size_t dictionary_count = std::size(enum_names<dictionary>::entries);
-
-template <>
-struct enum_names<access> {
-    using value_type = access;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_ACCESS_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 }  // namespace powerkey
 
 #endif  // POWERKEY_KEYPAD_OBJECTS_HPP

@@ -1,7 +1,6 @@
 // powerkey: the values every keypad shares, one name and one type for each meaning whichever
-// model or frame carries it (pressed keys, LED maps, levels, backlight colour, baud rate, start-up
-// show, the LED states of the PKP command module). Byte values are those of the PK1000 manual
-// where the manuals differ; the PKP command module's own codes are mapped in commands.hpp.
+// model or frame carries it. Byte values are the PK1000 manual's where the manuals differ; the PKP
+// command module's own codes are mapped in commands.hpp.
 #ifndef POWERKEY_KEYPAD_VALUES_HPP
 #define POWERKEY_KEYPAD_VALUES_HPP
 
@@ -43,11 +42,8 @@ using level = bounded<level_tag, std::uint8_t, 0, 0x3F>;
     X(amber, "amber_orange")
 // clang-format on
 
-// Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k). The PK1000 manual's names
-// "white/light blue" and "amber/orange" are aliases of white and amber. `keep` (00h) exists only
-// in the backlight PDO, where it keeps the stored colour (PK1000 section 15, note 2; PKP3500-MT
-// 18) or, on the PKP-2600-SI, returns to the default colour
-// (model_info::backlight_zero_is_default).
+// Backlight colour (PK1000 sections 15, 19 c/d; PKP section 13 c, k; docs/pk1000.md). `keep` (00h)
+// only in the backlight PDO (PK1000 15 note 2; model_info::backlight_zero_is_default).
 enum class backlight_colour : std::uint8_t {
     keep = 0x00,
     POWERKEY_COLOUR_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
@@ -97,8 +93,9 @@ enum class startup_show : std::uint8_t { disabled = 0x00, complete = 0x01, fast_
 // clang-format on
 enum class led_state : std::uint8_t { POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
-// The colour planes of an LED map.
-enum class plane : std::uint8_t { red = 0, green = 1, blue = 2 };
+// The colour planes of an LED map: 0 red, 1 green, 2 blue.
+#define POWERKEY_PLANE_LIST(X) X(red) X(green) X(blue)
+enum class plane : std::uint8_t { POWERKEY_PLANE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // What one key's LEDs show: a plane or a mix of planes (PKP sections 11, 12: amber = red + green,
 // magenta = red + blue, cyan = green + blue, white = all three).
@@ -238,33 +235,11 @@ struct enum_names<startup_show> {
     };
 };
 
-template <>
-struct enum_names<led_state> {
-    using value_type = led_state;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_LED_STATE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct enum_names<plane> {
-    static constexpr enum_name_entry<plane> entries[] = {
-        {plane::red, "red"}, {plane::green, "green"}, {plane::blue, "blue"}};
-};
-
-template <>
-struct enum_names<colour> {
-    using value_type = colour;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_COLOUR_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
-template <>
-struct enum_names<led_mode> {
-    using value_type = led_mode;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_LED_MODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_state, POWERKEY_LED_STATE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::plane, POWERKEY_PLANE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::colour, POWERKEY_COLOUR_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::led_mode, POWERKEY_LED_MODE_LIST);
 
 #endif  // POWERKEY_KEYPAD_VALUES_HPP
