@@ -44,8 +44,15 @@ inline void candump_literal_is_malformed() noexcept {}
         if (hi < 0 || lo < 0) return errc::syntax_error;
         p[i] = static_cast<std::uint8_t>((hi << 4) | lo);
     }
-    return make_frame(id, std::span(p.data(), n),
-                      id_text.size() == 3 ? id_format::standard : id_format::extended);
+    const auto length = dlc::make(n).value();
+    if (id_text.size() == 3) {
+        const auto sid = standard_id::make(id);
+        if (!sid) return errc::value_out_of_range;
+        return frame(*sid, length, p);
+    }
+    const auto eid = extended_id::make(id);
+    if (!eid) return errc::value_out_of_range;
+    return frame(*eid, length, p);
 }
 
 // A frame written as a literal in the candump form; malformed text does not compile.
