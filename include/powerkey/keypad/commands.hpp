@@ -131,13 +131,8 @@ struct command {
     powerkey::frame_form form = powerkey::frame_form::manual;  // as decode read it (frame_form.hpp)
 };
 
-template <>
-struct enum_names<command_code> {
-    using value_type = command_code;
-    static constexpr enum_name_entry<value_type> entries[] = {
-        POWERKEY_COMMAND_CODE_LIST(POWERKEY_DETAIL_ENUM_NAME)};
-};
-
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::command_code, POWERKEY_COMMAND_CODE_LIST);
 
 #endif  // POWERKEY_KEYPAD_COMMANDS_HPP
