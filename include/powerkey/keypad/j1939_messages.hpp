@@ -258,26 +258,30 @@ struct multiple_leds {
 
 // --- the configuration commands (sections 8..26): 04 1B | command | byte 3 | byte 4 | FF.. -----
 
+// clang-format off
+#define POWERKEY_J1939_COMMAND_CODE_LIST(X) \
+    X(set_led_brightness, 0x02)  /* 8: temporary, back to 7Ch at power-up */ \
+    X(set_backlight_level, 0x03)  /* 9: temporary, back to 7Bh at power-up */ \
+    X(set_startup_keys, 0x28)  /* 10: key states sent at power-up */ \
+    X(get_software_revision, 0x2A)  /* 11: answered by software_revision */ \
+    X(set_startup_show, 0x34)  /* 12 */ \
+    X(set_led_management, 0x37)  /* 13: 02h lets the multiple-LED command in */ \
+    X(set_destination_address, 0x6E)  /* 14: where the key contact states go */ \
+    X(set_baud_rate, 0x6F)  /* 15 */ \
+    X(set_source_address, 0x70)  /* 16: the keypad's address and identifier */ \
+    X(set_periodic_transmission, 0x71)  /* 17 */ \
+    X(set_event_transmission, 0x72)  /* 18 */ \
+    X(set_led_acknowledgement, 0x73)  /* 19 */ \
+    X(set_address_claim_at_boot, 0x74)  /* 20 */ \
+    X(set_heartbeat, 0x75)  /* 21 */ \
+    X(set_key_period, 0x77)  /* 22: the period of 71h */ \
+    X(set_demo_mode, 0x7A)  /* 23 */ \
+    X(set_default_backlight_level, 0x7B)  /* 24 */ \
+    X(set_default_led_brightness, 0x7C)  /* 25 */ \
+    X(set_default_backlight_colour, 0x7D)  /* 26 */
+// clang-format on
 enum class command_code : std::uint8_t {
-    set_led_brightness = 0x02,            // 8: temporary, back to 7Ch at power-up
-    set_backlight_level = 0x03,           // 9: temporary, back to 7Bh at power-up
-    set_startup_keys = 0x28,              // 10: key states sent at power-up
-    get_software_revision = 0x2A,         // 11: answered by software_revision
-    set_startup_show = 0x34,              // 12
-    set_led_management = 0x37,            // 13: 02h lets the multiple-LED command in
-    set_destination_address = 0x6E,       // 14: where the key contact states go
-    set_baud_rate = 0x6F,                 // 15
-    set_source_address = 0x70,            // 16: the keypad's address and identifier
-    set_periodic_transmission = 0x71,     // 17
-    set_event_transmission = 0x72,        // 18
-    set_led_acknowledgement = 0x73,       // 19
-    set_address_claim_at_boot = 0x74,     // 20
-    set_heartbeat = 0x75,                 // 21
-    set_key_period = 0x77,                // 22: the period of 71h
-    set_demo_mode = 0x7A,                 // 23
-    set_default_backlight_level = 0x7B,   // 24
-    set_default_led_brightness = 0x7C,    // 25
-    set_default_backlight_colour = 0x7D,  // 26
+    POWERKEY_J1939_COMMAND_CODE_LIST(POWERKEY_DETAIL_ENUMERATOR)
 };
 
 // What a command's byte 3 or byte 4 holds, and so which field of `command` carries it.
@@ -403,32 +407,8 @@ struct enum_names<j1939::led_colour> {
     };
 };
 
-template <>
-struct enum_names<j1939::command_code> {
-    using c = j1939::command_code;
-    static constexpr enum_name_entry<c> entries[] = {
-        {c::set_led_brightness, "set_led_brightness"},
-        {c::set_backlight_level, "set_backlight_level"},
-        {c::set_startup_keys, "set_startup_keys"},
-        {c::get_software_revision, "get_software_revision"},
-        {c::set_startup_show, "set_startup_show"},
-        {c::set_led_management, "set_led_management"},
-        {c::set_destination_address, "set_destination_address"},
-        {c::set_baud_rate, "set_baud_rate"},
-        {c::set_source_address, "set_source_address"},
-        {c::set_periodic_transmission, "set_periodic_transmission"},
-        {c::set_event_transmission, "set_event_transmission"},
-        {c::set_led_acknowledgement, "set_led_acknowledgement"},
-        {c::set_address_claim_at_boot, "set_address_claim_at_boot"},
-        {c::set_heartbeat, "set_heartbeat"},
-        {c::set_key_period, "set_key_period"},
-        {c::set_demo_mode, "set_demo_mode"},
-        {c::set_default_backlight_level, "set_default_backlight_level"},
-        {c::set_default_led_brightness, "set_default_led_brightness"},
-        {c::set_default_backlight_colour, "set_default_backlight_colour"},
-    };
-};
-
 }  // namespace powerkey
+
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::j1939::command_code, POWERKEY_J1939_COMMAND_CODE_LIST);
 
 #endif  // POWERKEY_KEYPAD_J1939_MESSAGES_HPP

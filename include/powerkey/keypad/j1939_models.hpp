@@ -18,44 +18,48 @@
 namespace powerkey::j1939 {
 
 // Every J1939 frame of the keypads, by the section of the PKP1600SI and PKP2600SI J1939 manuals.
-enum class feature : std::uint8_t {
-    key_contact,               // 01h, keypad to bus (6)
-    led_command,               // 01h, bus to keypad (7a)
-    multiple_leds,             // PGNs A700h and A600h (7b)
-    led_brightness,            // 02h (8)
-    backlight_level,           // 03h (9)
-    startup_keys,              // 28h (10)
-    software_revision,         // 2Ah, the request and the answer (11)
-    startup_show,              // 34h (12)
-    led_management,            // 37h (13)
-    destination_address,       // 6Eh (14)
-    baud_rate,                 // 6Fh (15)
-    source_address,            // 70h (16)
-    periodic_transmission,     // 71h (17)
-    event_transmission,        // 72h (18)
-    led_acknowledgement,       // 73h (19)
-    led_ack,                   // the LED acknowledgement itself, byte 0 00h (19)
-    address_claim_at_boot,     // 74h (20)
-    address_claim,             // PGN EE00h, the NAME (20)
-    heartbeat_setting,         // 75h (21)
-    heartbeat,                 // F9h (21)
-    key_period,                // 77h (22)
-    demo_mode,                 // 7Ah (23)
-    default_backlight_level,   // 7Bh (24)
-    default_led_brightness,    // 7Ch (25)
-    default_backlight_colour,  // 7Dh (26)
-    switch_to_canopen,         // 80h (27)
-};
+// clang-format off
+#define POWERKEY_J1939_FEATURE_LIST(X) \
+    X(key_contact)  /* 01h, keypad to bus (6) */ \
+    X(led_command)  /* 01h, bus to keypad (7a) */ \
+    X(multiple_leds)  /* PGNs A700h and A600h (7b) */ \
+    X(led_brightness)  /* 02h (8) */ \
+    X(backlight_level)  /* 03h (9) */ \
+    X(startup_keys)  /* 28h (10) */ \
+    X(software_revision)  /* 2Ah, the request and the answer (11) */ \
+    X(startup_show)  /* 34h (12) */ \
+    X(led_management)  /* 37h (13) */ \
+    X(destination_address)  /* 6Eh (14) */ \
+    X(baud_rate)  /* 6Fh (15) */ \
+    X(source_address)  /* 70h (16) */ \
+    X(periodic_transmission)  /* 71h (17) */ \
+    X(event_transmission)  /* 72h (18) */ \
+    X(led_acknowledgement)  /* 73h (19) */ \
+    X(led_ack)  /* the LED acknowledgement itself, byte 0 00h (19) */ \
+    X(address_claim_at_boot)  /* 74h (20) */ \
+    X(address_claim)  /* PGN EE00h, the NAME (20) */ \
+    X(heartbeat_setting)  /* 75h (21) */ \
+    X(heartbeat)  /* F9h (21) */ \
+    X(key_period)  /* 77h (22) */ \
+    X(demo_mode)  /* 7Ah (23) */ \
+    X(default_backlight_level)  /* 7Bh (24) */ \
+    X(default_led_brightness)  /* 7Ch (25) */ \
+    X(default_backlight_colour)  /* 7Dh (26) */ \
+    X(switch_to_canopen)  /* 80h (27) */
+// clang-format on
+enum class feature : std::uint8_t { POWERKEY_J1939_FEATURE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 inline constexpr std::size_t feature_count = 26;
 static_assert(static_cast<std::size_t>(feature::switch_to_canopen) + 1 == feature_count);
 
 // What the sources say of one frame on one model, and so what the codec does with it.
-enum class coverage : std::uint8_t {
-    absent,    // the model's manual does not have it: refused with errc::unknown_command
-    unknown,   // no source shows it on this model: refused with errc::undocumented
-    inferred,  // not printed for this model: decoded and encoded with the complete manuals' layout
-    documented,  // printed in a manual of this model
-};
+// clang-format off
+#define POWERKEY_J1939_COVERAGE_LIST(X) \
+    X(absent)  /* the model's manual does not have it: refused with errc::unknown_command */ \
+    X(unknown)  /* no source shows it on this model: refused with errc::undocumented */ \
+    X(inferred)  /* not printed for this model: decoded and encoded with the complete manuals' layout */ \
+    X(documented)  /* printed in a manual of this model */
+// clang-format on
+enum class coverage : std::uint8_t { POWERKEY_J1939_COVERAGE_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 // The coverage of every feature, two bits each.
 class feature_set {
@@ -89,10 +93,12 @@ private:
 };
 
 // The layout of the single-LED command (01h to the keypad) and of its acknowledgement.
-enum class led_form : std::uint8_t {
-    si,    // colour, state, secondary colour (PKP1600SI, PKP2600SI J1939 manuals, 7a and 19)
-    code,  // one LED code, its table unknown (the LI keypads: PKP-2400-LI J1939 manual page 11)
-};
+// clang-format off
+#define POWERKEY_J1939_LED_FORM_LIST(X) \
+    X(si)  /* colour, state, secondary colour (PKP1600SI, PKP2600SI J1939 manuals, 7a and 19) */ \
+    X(code)  /* one LED code, its table unknown (the LI keypads: PKP-2400-LI J1939 manual page 11) */
+// clang-format on
+enum class led_form : std::uint8_t { POWERKEY_J1939_LED_FORM_LIST(POWERKEY_DETAIL_ENUMERATOR) };
 
 struct model_row {
     powerkey::model id = powerkey::model::pk1000;
@@ -280,56 +286,8 @@ constexpr bool is_row(const model_row& r) noexcept { return r.keys != 0; }
 
 }  // namespace powerkey::j1939
 
-namespace powerkey {
-
-template <>
-struct enum_names<j1939::feature> {
-    using f = j1939::feature;
-    static constexpr enum_name_entry<f> entries[] = {
-        {f::key_contact, "key_contact"},
-        {f::led_command, "led_command"},
-        {f::multiple_leds, "multiple_leds"},
-        {f::led_brightness, "led_brightness"},
-        {f::backlight_level, "backlight_level"},
-        {f::startup_keys, "startup_keys"},
-        {f::software_revision, "software_revision"},
-        {f::startup_show, "startup_show"},
-        {f::led_management, "led_management"},
-        {f::destination_address, "destination_address"},
-        {f::baud_rate, "baud_rate"},
-        {f::source_address, "source_address"},
-        {f::periodic_transmission, "periodic_transmission"},
-        {f::event_transmission, "event_transmission"},
-        {f::led_acknowledgement, "led_acknowledgement"},
-        {f::led_ack, "led_ack"},
-        {f::address_claim_at_boot, "address_claim_at_boot"},
-        {f::address_claim, "address_claim"},
-        {f::heartbeat_setting, "heartbeat_setting"},
-        {f::heartbeat, "heartbeat"},
-        {f::key_period, "key_period"},
-        {f::demo_mode, "demo_mode"},
-        {f::default_backlight_level, "default_backlight_level"},
-        {f::default_led_brightness, "default_led_brightness"},
-        {f::default_backlight_colour, "default_backlight_colour"},
-        {f::switch_to_canopen, "switch_to_canopen"},
-    };
-};
-
-template <>
-struct enum_names<j1939::coverage> {
-    using c = j1939::coverage;
-    static constexpr enum_name_entry<c> entries[] = {{c::absent, "absent"},
-                                                     {c::unknown, "unknown"},
-                                                     {c::inferred, "inferred"},
-                                                     {c::documented, "documented"}};
-};
-
-template <>
-struct enum_names<j1939::led_form> {
-    static constexpr enum_name_entry<j1939::led_form> entries[] = {{j1939::led_form::si, "si"},
-                                                                   {j1939::led_form::code, "code"}};
-};
-
-}  // namespace powerkey
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::j1939::feature, POWERKEY_J1939_FEATURE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::j1939::coverage, POWERKEY_J1939_COVERAGE_LIST);
+POWERKEY_DETAIL_ENUM_NAMES(powerkey::j1939::led_form, POWERKEY_J1939_LED_FORM_LIST);
 
 #endif  // POWERKEY_KEYPAD_J1939_MODELS_HPP
