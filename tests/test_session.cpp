@@ -399,3 +399,29 @@ TEST_CASE("the session follows the keypad's J1939 address across the switch") {
     CHECK_FALSE(moved.new_protocol.has_value());
     CHECK_FALSE(moved.new_node.has_value());
 }
+
+TEST_CASE("the SDO frame a session reads: from decode's answer, or the engine's when refused") {
+    using canopen::sdo_op;
+    struct row {
+        const char* frame;
+        bool decoded;
+        sdo_op op;
+        canopen::sdo_address address;
+    };
+    constexpr row rows[] = {
+        {"615#4001100000000000", true, sdo_op::upload, {0x1001, 0}},   // error register
+        {"615#6000000000000000", true, sdo_op::segment_request, {}},   // names no object
+        {"615#4000300100000000", false, sdo_op::upload, {0x3000, 1}},  // unknown_object
+        {"595#0041424344454647", true, sdo_op::segment, {}},           // a segment: no object
+        {"595#00414243", false, sdo_op::segment, {}},  // wrong_length: still no object (not 4241h)
+    };
+    for (const auto& r : rows) {
+        const std::string_view text = r.frame;
+        CAPTURE(text);
+        session<> s(model::pk1000, canopen::default_node_id);
+        const auto e = s.step(can::parse_candump(r.frame).value());
+        CHECK(e.decoded.has_value() == r.decoded);
+        REQUIRE(e.sdo_frame);
+        CHECK(*e.sdo_frame == sdo_frame{r.op, r.address});
+    }
+}

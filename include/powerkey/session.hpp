@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 namespace powerkey {
@@ -128,18 +129,50 @@ private:
         return detail::codec_rows[detail::find_codec_row(info_->dictionary, o)].address();
     }
 
-    // The SDO frame as the SDO engine reads it, whether decode took it or refused it (an object the
-    // dictionary lacks, a value out of range: the keypad's abort still answers it). A frame of
-    // another length (trimmed, or refused as too short) is read zero-filled: its request still
-    // waits for a reply whatever its form (issue 22).
+    // The SDO frame: from what decode returned, or as the SDO engine reads it when decode refused
+    // it (an object the dictionary lacks, a value out of range: the keypad's abort still answers
+    // it).
     constexpr std::optional<powerkey::sdo_frame> sdo_frame_of(
         const can::frame& f, const session_event& e) const noexcept {
-        if (!e.decoded && f.size() < 4) return std::nullopt;
+        using op = canopen::sdo_op;
+        if (e.decoded) {
+            return std::visit(
+                [this](const auto& v) -> std::optional<powerkey::sdo_frame> {
+                    using T = std::remove_cvref_t<decltype(v)>;
+                    if constexpr (std::is_same_v<T, sdo_read>)
+                        return powerkey::sdo_frame{op::upload, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, sdo_write>)
+                        return powerkey::sdo_frame{op::expedited_download, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, command>)
+                        return powerkey::sdo_frame{op::expedited_download,
+                                                   address_of(object::command_module)};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_request>)
+                        return powerkey::sdo_frame{op::segment_request};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_request>)
+                        return powerkey::sdo_frame{op::abort_request, v.abort.address};
+                    else if constexpr (std::is_same_v<T, sdo_write_reply>)
+                        return powerkey::sdo_frame{op::download_response, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, sdo_read_reply>)
+                        return powerkey::sdo_frame{op::expedited_upload, address_of(v.object)};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_upload_initiate_response>)
+                        return powerkey::sdo_frame{op::upload_initiate, v.address};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_segment_response>)
+                        return powerkey::sdo_frame{op::segment};
+                    else if constexpr (std::is_same_v<T, canopen::sdo_abort_response>)
+                        return powerkey::sdo_frame{op::abort_response, v.abort.address};
+                    else
+                        return std::nullopt;
+                },
+                *e.decoded);
+        }
+        // A frame of another length (trimmed, or refused as too short) is read zero-filled: its
+        // request still waits for a reply whatever its form (issue 22).
+        if (f.size() < 4) return std::nullopt;
         const auto w = canopen::sdo_word::of(detail::with_length(f, 8));
         const auto o = e.cls.fn == canopen::function::sdo_rx ? canopen::sdo_request_op(w)
                                                              : canopen::sdo_response_op(w);
         if (!o) return std::nullopt;
-        if (*o == canopen::sdo_op::segment || *o == canopen::sdo_op::segment_request)
+        if (*o == op::segment || *o == op::segment_request)
             return powerkey::sdo_frame{*o};  // a segment names no object
         return powerkey::sdo_frame{*o, w.address()};
     }
