@@ -13,6 +13,8 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
+#include <variant>
 
 #include "ops.hpp"
 
@@ -130,6 +132,50 @@ inline void one_j1939_set_led_encode(std::size_t calls) {
     });
 }
 
+// The log's frames by what they decode to (T: a j1939::message alternative; void: the frames of
+// other ECUs, refused), each kind measured alone: what each costs of the log's average
+// (docs/performance.md, "The J1939 mixed log").
+template <class T>
+constexpr bool decodes_to(const pc::frame& f) {
+    const auto r = powerkey::j1939::decode(f, j1939_model);
+    if constexpr (std::is_void_v<T>)
+        return !r;
+    else
+        return r && std::holds_alternative<T>(*r);
+}
+template <class T>
+constexpr std::size_t frames_of_kind_count() {
+    std::size_t n = 0;
+    for (const auto& f : j1939_mixed_log) n += decodes_to<T>(f) ? 1u : 0u;
+    return n;
+}
+template <class T>
+inline constexpr auto j1939_log_kind = [] {
+    std::array<pc::frame, frames_of_kind_count<T>()> out{};
+    std::size_t i = 0;
+    for (const auto& f : j1939_mixed_log)
+        if (decodes_to<T>(f)) out[i++] = f;
+    return out;
+}();
+static_assert(j1939_log_kind<void>.size() + j1939_log_kind<powerkey::j1939::key_contact>.size() +
+                  j1939_log_kind<powerkey::j1939::heartbeat>.size() +
+                  j1939_log_kind<powerkey::j1939::set_led>.size() +
+                  j1939_log_kind<powerkey::j1939::led_ack>.size() +
+                  j1939_log_kind<powerkey::j1939::multiple_leds>.size() +
+                  j1939_log_kind<powerkey::j1939::command>.size() ==
+              j1939_mixed_log.size());
+template <class T>
+void j1939_decode_log_kind(std::size_t calls) {
+    const auto m = opaque(j1939_model);
+    cycle(j1939_log_kind<T>, calls,
+          [m](const pc::frame& f) BENCH_INLINE { return powerkey::j1939::decode(f, m); });
+}
+template <class T>
+void one_j1939_decode_log_kind(std::size_t calls) {
+    cycle(j1939_log_kind<T>, calls,
+          [](const pc::frame& f) BENCH_INLINE { return powerkey::j1939::decode<j1939_model>(f); });
+}
+
 inline constexpr op j1939_ops[] = {
     {"pkp2600si/j1939/key_contact/decode", j1939_key_contact_decode},
     {"pkp2600si/j1939/set_led/encode", j1939_set_led_encode},
@@ -137,6 +183,29 @@ inline constexpr op j1939_ops[] = {
     {"pkp2600si/j1939/one/key_contact/decode_key_contact", one_j1939_key_contact_decode},
     {"pkp2600si/j1939/one/set_led/encode", one_j1939_set_led_encode},
     {"pkp2600si/j1939/one/decode_mixed_log", one_j1939_decode_mixed_log},
+    {"pkp2600si/j1939/log_kind/other_ecus/decode", j1939_decode_log_kind<void>},
+    {"pkp2600si/j1939/log_kind/key_contact/decode",
+     j1939_decode_log_kind<powerkey::j1939::key_contact>},
+    {"pkp2600si/j1939/log_kind/heartbeat/decode",
+     j1939_decode_log_kind<powerkey::j1939::heartbeat>},
+    {"pkp2600si/j1939/log_kind/set_led/decode", j1939_decode_log_kind<powerkey::j1939::set_led>},
+    {"pkp2600si/j1939/log_kind/led_ack/decode", j1939_decode_log_kind<powerkey::j1939::led_ack>},
+    {"pkp2600si/j1939/log_kind/multiple_leds/decode",
+     j1939_decode_log_kind<powerkey::j1939::multiple_leds>},
+    {"pkp2600si/j1939/log_kind/command/decode", j1939_decode_log_kind<powerkey::j1939::command>},
+    {"pkp2600si/j1939/one/log_kind/other_ecus/decode", one_j1939_decode_log_kind<void>},
+    {"pkp2600si/j1939/one/log_kind/key_contact/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::key_contact>},
+    {"pkp2600si/j1939/one/log_kind/heartbeat/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::heartbeat>},
+    {"pkp2600si/j1939/one/log_kind/set_led/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::set_led>},
+    {"pkp2600si/j1939/one/log_kind/led_ack/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::led_ack>},
+    {"pkp2600si/j1939/one/log_kind/multiple_leds/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::multiple_leds>},
+    {"pkp2600si/j1939/one/log_kind/command/decode",
+     one_j1939_decode_log_kind<powerkey::j1939::command>},
     {"any/pkp2600si/decode_j1939_mixed_log", any_decode_j1939_mixed_log},
     {"any/pkp2600si/encode_j1939_mixed_log", any_encode_j1939_mixed_log,
      "frame (keypad frames only)"},
