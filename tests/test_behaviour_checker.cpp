@@ -681,3 +681,69 @@ TEST_CASE("checker: every timer the millisecond before, at and after its deadlin
         CHECK(at(111) == std::vector<problem>{{5, pk::pdo_not_operational, {0x215, 0x7F, 0}}});
     }
 }
+
+// The four timers share one silence_timer (clock.hpp): each says a silence once, says the next
+// silence again once the keypad has spoken in between, restarts on a time that goes back, and a
+// J1939 setting restarts its check at the keypad's next frame (docs/checker.md).
+TEST_CASE("checker: each silence said once, the next one again; restarts") {
+    SUBCASE("the CANopen heartbeat") {
+        checker_config cfg;
+        cfg.heartbeat_period = duration_ms{100};
+        const auto got = check(model::pk1000,
+                               {{0, "715#05"},
+                                {200, "080#"},
+                                {300, "080#"},  // the same silence: said once
+                                {310, "715#05"},
+                                {500, "080#"}},  // a new silence
+                               cfg);
+        CHECK(got == std::vector<problem>{{2, pk::heartbeat_silence, {200, 100, 1}},
+                                          {5, pk::heartbeat_silence, {190, 100, 4}}});
+    }
+    SUBCASE("the CANopen key state") {
+        checker_config cfg;
+        cfg.key_state_period = duration_ms{50};
+        const auto got = check(model::pk1000,
+                               {{0, "000#0115"},
+                                {10, "195#0000000001"},
+                                {100, "080#"},
+                                {150, "080#"},
+                                {160, "195#0000000002"},
+                                {300, "080#"}},
+                               cfg);
+        CHECK(got == std::vector<problem>{{3, pk::key_state_silence, {90, 50, 2}},
+                                          {6, pk::key_state_silence, {140, 50, 5}}});
+        // Two logs in a row: the key state's silence counts from the second log's first time.
+        const auto back =
+            check(model::pk1000,
+                  {{0, "000#0115"}, {1000, "195#0000000001"}, {50, "080#"}, {100, "080#"}}, cfg);
+        CHECK_MESSAGE(back.empty(), text_of(back));
+    }
+    SUBCASE("the J1939 heartbeat (75h, 500 ms)") {
+        const auto got = check(model::pkp2600si, {{0, "18EF2100#041B750132FFFFFF"},
+                                                  {10, "18EFFF21#041BF9038000FF21"},
+                                                  {770, "18EF2100#041B0220FFFFFFFF"},
+                                                  {800, "18EF2100#041B0220FFFFFFFF"},
+                                                  {810, "18EFFF21#041BF9038000FF21"},
+                                                  {1570, "18EF2100#041B0220FFFFFFFF"}});
+        CHECK(got == std::vector<problem>{{3, pk::heartbeat_silence, {760, 500, 2}},
+                                          {6, pk::heartbeat_silence, {760, 500, 5}}});
+        // A 75h again: the silence counts from the keypad's next heartbeat, not the last one.
+        const auto again = check(model::pkp2600si, {{0, "18EF2100#041B750132FFFFFF"},
+                                                    {10, "18EFFF21#041BF9038000FF21"},
+                                                    {600, "18EF2100#041B750132FFFFFF"},
+                                                    {800, "18EF2100#041B0220FFFFFFFF"},
+                                                    {810, "18EFFF21#041BF9038000FF21"},
+                                                    {1570, "18EF2100#041B0220FFFFFFFF"}});
+        CHECK(again == std::vector<problem>{{6, pk::heartbeat_silence, {760, 500, 5}}});
+    }
+    SUBCASE("the J1939 key state (71h, 100 ms)") {
+        const auto got = check(model::pkp2600si, {{0, "18EF2100#041B7101FFFFFFFF"},
+                                                  {10, "18EFFF21#041B01010121FFFF"},
+                                                  {170, "18EF2100#041B0220FFFFFFFF"},
+                                                  {200, "18EF2100#041B0220FFFFFFFF"},
+                                                  {210, "18EFFF21#041B01010021FFFF"},
+                                                  {370, "18EF2100#041B0220FFFFFFFF"}});
+        CHECK(got == std::vector<problem>{{3, pk::key_state_silence, {160, 100, 2}},
+                                          {6, pk::key_state_silence, {160, 100, 5}}});
+    }
+}

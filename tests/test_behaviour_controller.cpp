@@ -369,6 +369,11 @@ TEST_CASE("controller + virtual keypad: the keypad changes node id") {
         CHECK(b.saw(event_kind::key_pressed, 1));
         const auto problems = without_identify(m, b.check(m));
         CHECK_MESSAGE(problems.empty(), kinds(problems));
+        // Only the boot-up of the change was expected: a power cycle after it is a reboot.
+        b.keypad.power_cycle(b.at());
+        b.run(200);
+        CHECK(b.count(event_kind::rebooted) == 1);
+        CHECK(b.count(event_kind::lost) == 0);
     }
 }
 

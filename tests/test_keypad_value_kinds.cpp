@@ -296,6 +296,10 @@ constexpr shown_row shown_rows[] = {
     {"PKP3500-MT 19 b", "", sdo_read_reply{object::encoder1_direction_counter, {}},
      "object counterclockwise ticks"},
     {"PKP3500-MT 20 c", "", sdo_write{object::led_on_encoder, {}}, "object leds"},
+    // One plane of an LED map shows under its plane's name.
+    {"PK1000 17a", "", sdo_write{object::led_on_red, {}}, "object red"},
+    {"PK1000 18a", "", sdo_read_reply{object::led_blink_green, {}}, "object green"},
+    {"PKP3500-MT 20 a", "", sdo_write{object::led_on_blue, {}}, "object blue"},
 };
 constexpr bool shows(const shown_row& r) {
     std::string_view rest = r.names;
