@@ -266,6 +266,13 @@ printf '%s\n' '000#0115' '080#' > "$tmp/plain.log"
 "$pk" decode --model auto "$tmp/plain.log" > /dev/null 2> "$tmp/err"
 head -1 "$tmp/err" | grep -qx "powerkey: --model auto: cannot tell the model: no frame of the log decodes differently under the 13 models (no model string, no key or LED map); decoding as pk1000, give --model" ||
   fail "--model auto without clues: $(cat "$tmp/err")"
+# --model auto counts a refused frame of the keypad's own COB-ID (a PDO the model lacks: wrong_id)
+# as decode's summary does, so it never picks a model that refuses more than another: the LED
+# brightness and backlight PDOs of faults/trimmed.log, which the PKP LI models lack, rule them out.
+"$pk" decode --model auto "$logs/faults/trimmed.log" > /dev/null 2> "$tmp/err"
+head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2200si: it refuses 0 of the keypad's frames (pk1000 0, pkp2200 2, " &&
+  tail -1 "$tmp/err" | grep -qx "powerkey: summary: 6 frames: 6 decoded, 0 of other nodes or no keypad, 0 refused" ||
+  fail "--model auto counts wrong_id of the keypad: $(cat "$tmp/err")"
 
 # A file that is not a log gets one message saying what it looks like and what to do.
 printf '\xd4\xc3\xb2\xa1\x02\x00\x04\x00' > "$tmp/cap.pcap"

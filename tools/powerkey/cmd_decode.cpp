@@ -97,6 +97,23 @@ void write_generic_fields(Writer& w, const can::frame& f, const session_event& e
 
 // --- counting -----------------------------------------------------------------------------------
 
+// A 29-bit frame the J1939 codec calls wrong_id: another PGN (not a keypad frame), or, narrowed by
+// --address, another keypad's.
+template <class Event>
+bool is_j1939_foreign(const Event& e) {
+    return !e.decoded && e.cls.fn == canopen::function::j1939 &&
+           e.decoded.error() == errc::wrong_id;
+}
+
+// A frame that is none of the keypad's: the J1939 ones above, and wrong_id on a COB-ID that does
+// not concern the keypad's node (another node's, or no keypad function). Every other frame the
+// decoder refuses is a refused keypad frame: the summary and --model auto count the same ones.
+template <class Event>
+bool is_foreign(const Event& e) {
+    return is_j1939_foreign(e) ||
+           (!e.decoded && e.decoded.error() == errc::wrong_id && !concerns(e.cls, e.node));
+}
+
 struct counts {
     std::size_t frames = 0;
     std::size_t decoded = 0;
@@ -128,12 +145,8 @@ public:
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
-        // A 29-bit frame the J1939 codec calls wrong_id: another PGN (not a keypad frame), or,
-        // narrowed by --address, another keypad's.
-        const bool j1939_foreign = !e.decoded && e.cls.fn == canopen::function::j1939 &&
-                                   e.decoded.error() == errc::wrong_id;
-        const bool foreign = j1939_foreign || (!e.decoded && e.decoded.error() == errc::wrong_id &&
-                                               !concerns(e.cls, e.node));
+        const bool j1939_foreign = is_j1939_foreign(e);
+        const bool foreign = is_foreign(e);
         if (e.cls.node != 0 && e.cls.node < 128) ++counts_.per_node[e.cls.node];
         if (e.decoded)
             ++counts_.decoded;
@@ -460,9 +473,10 @@ model choose_model(const options& o, const std::vector<kept_frame>& log) {
         s.narrow_j1939(o.address);
         for (const auto& r : log) {
             const auto e = s.step(r.frame);
-            // A J1939 frame counts as a CANopen one: the J1939 row of a model refuses a key or
-            // LED it lacks, a frame its manual does not have or no source shows.
-            if (!e.decoded && e.decoded.error() != errc::wrong_id) ++sc.refused;
+            // As the summary counts: a J1939 frame counts as a CANopen one (the J1939 row of a
+            // model refuses a key or LED it lacks, a frame its manual does not have or no source
+            // shows), and a PDO of the keypad's node that the model lacks (wrong_id) is refused.
+            if (!e.decoded && !is_foreign(e)) ++sc.refused;
             if (e.upload_done && sc.named.empty()) {
                 std::string_view t = s.text();
                 if (const auto reported = model_from_report(t); reported && *reported == m)
