@@ -257,6 +257,9 @@ diff "$tmp/want" "$tmp/moved" > /dev/null || fail "encode --json --node 0x3A: $(
 "$pk" decode "$logs/pkp2400.log" > /dev/null 2> "$tmp/err"
 tail -1 "$tmp/err" | grep -qx "powerkey: hint: [0-9]* of [0-9]* keypad frames refused as pk1000 frames; if the keypad is another model, try --model auto (or --model pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, pkp1600si)" ||
   fail "no hint for a PKP log decoded as pk1000: $(cat "$tmp/err")"
+# docs/cli.md shows this very run: its summary and hint are the tool's, word for word.
+grep -A2 -xF '$ powerkey decode examples/logs/pkp2400.log > /dev/null' "$src/docs/cli.md" | tail -2 |
+  diff - "$tmp/err" > /dev/null || fail "docs/cli.md's summary and hint of pkp2400.log are stale: $(cat "$tmp/err")"
 # --model auto finds the model from the keypad's own name, or from what decodes.
 "$pk" decode --model auto "$logs/pkp2400.log" > "$tmp/auto" 2> "$tmp/err" || fail "--model auto exit status"
 head -1 "$tmp/err" | grep -qx 'powerkey: --model auto: pkp2400: the keypad names itself "PKP-2400-LI"\|powerkey: --model auto: pkp2400: .*' ||
