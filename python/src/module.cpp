@@ -177,9 +177,19 @@ model model_from_py(py::handle o) {
 }
 
 // A J1939 keypad address (00h..FDh; FEh is the null and FFh the global address), or None for
-// any: the J1939 frames narrowed to that keypad.
+// any: the J1939 frames narrowed to that keypad. A number, or the tool's text of --address as
+// node takes --node's ("21h", "0x21", "33").
 j1939::keypad_address address_from_py(py::handle o) {
     if (o.is_none()) return std::nullopt;
+    if (py::isinstance<py::str>(o)) {
+        std::uint64_t v = 0;
+        if (!tool::parse_number(o.cast<std::string>(), v) || v > 0xFD)
+            raise(types().argument_error,
+                  "address: expected a J1939 keypad address 00h..FDh (0x21, 21h or 33), got " +
+                      py_repr(o),
+                  py::str("value_out_of_range"));
+        return static_cast<std::uint8_t>(v);
+    }
     return static_cast<std::uint8_t>(int_arg(o, "address", 0, 0xFD));
 }
 

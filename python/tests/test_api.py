@@ -280,6 +280,13 @@ def test_j1939_address_narrows_and_other_pgns_are_not_keypad_frames():
     assert e.value.code == "wrong_id"
     with pytest.raises(powerkey.ArgumentError):
         powerkey.decode(*key, model="pkp1600si", address=0xFE)
+    # As node: the tool's text of --address, "21h", "0x21" or "33".
+    for text in ("21h", "0x21", "33"):
+        assert powerkey.decode(*key, model="pkp1600si", address=text).kind == "j1939_key_contact"
+    for text in ("FEh", "nope", ""):
+        with pytest.raises(powerkey.ArgumentError) as e:
+            powerkey.decode(*key, model="pkp1600si", address=text)
+        assert "00h..FDh" in str(e.value)
 
 
 def test_j1939_encode_by_kind_and_address():
