@@ -493,6 +493,17 @@ can::frame frame_from_py(py::handle o) {
                            .attr("bytes")(data.is_none() ? py::bytes() : data)
                            .cast<std::string>();
     const bool extended = ext.value_or(id > 0x7FF);
+    // A J1939 identifier given as a standard one (python-can's is_extended_id=False): name the
+    // range, as for any int outside its range.
+    if (!extended && id > 0x7FF) {
+        const bool message = py::hasattr(o, "arbitration_id");
+        raise(types().decode_error,
+              std::string(message ? "arbitration_id: " : "id: ") +
+                  py::module_::import("builtins").attr("hex")(id).cast<std::string>() +
+                  " is outside 0..0x7ff, the 11-bit identifiers (" +
+                  (message ? "is_extended_id" : "extended") + "=False): value_out_of_range",
+              py::str("value_out_of_range"));
+    }
     const auto f =
         can::make_frame(static_cast<std::uint32_t>(id),
                         {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},

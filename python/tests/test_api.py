@@ -289,6 +289,17 @@ def test_j1939_address_narrows_and_other_pgns_are_not_keypad_frames():
         assert "00h..FDh" in str(e.value)
 
 
+def test_j1939_identifier_sent_as_standard_names_the_range():
+    # A J1939 identifier in a can.Message given is_extended_id=False: no 11-bit identifier.
+    msg = can.Message(arbitration_id=0x18EFFF21, data=bytes.fromhex("041B01030121FFFF"),
+                      is_extended_id=False)
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(msg, model="pkp1600si")
+    assert e.value.code == "value_out_of_range"
+    assert str(e.value) == ("arbitration_id: 0x18efff21 is outside 0..0x7ff, the 11-bit "
+                            "identifiers (is_extended_id=False): value_out_of_range")
+
+
 def test_j1939_encode_by_kind_and_address():
     f = powerkey.encode("j1939_set_led", model="pkp1600si", key=2, colour="red", mode="on")
     assert (f.arbitration_id, bytes(f.data), f.is_extended_id) == (
