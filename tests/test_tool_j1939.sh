@@ -109,6 +109,11 @@ grep -qx '18EF2100#041B021FFFFFFFFF' "$tmp/out" || fail "encode 02h: $(cat "$tmp
 "$pk" encode --model pkp1600si --address 21h j1939_key_contact key=2 pressed=no identifier=1 \
   destination=00h > "$tmp/out" || fail "narrowed key contact: status $?"
 grep -qx '18EF0021#041B01020001FFFF' "$tmp/out" || fail "narrowed key contact: $(cat "$tmp/out")"
+# A message refused under --address is explained under it too: a command to 21h (the default
+# destination) is not one to the keypad at 22h, and the field to blame is its destination.
+"$pk" encode --model pkp2600si --address 22h j1939_set_led key=3 colour=red mode=on 2> "$tmp/err"
+grep -qx "powerkey: encode: j1939_set_led: destination: its value is less than a pkp2600si takes (22h..22h)" "$tmp/err" ||
+  fail "refusal under --address: $(cat "$tmp/err")"
 
 # list: the J1939 messages a model has (the multiple-LED command only where a manual gives it).
 "$pk" list --model pkp1600si > "$tmp/out"

@@ -423,11 +423,14 @@ message build_message(const std::string& kind_text, const py::dict& fields,
     return out;
 }
 
-// encode() refused m: the tool's words for why (refusal.hpp), the errc as the code.
-[[noreturn]] void refused(const message& m, model md, canopen::node_id node, errc e) {
+// encode() refused m: the tool's words for why (refusal.hpp), the errc as the code; `address` as
+// encode was given it.
+[[noreturn]] void refused(const message& m, model md, canopen::node_id node,
+                          j1939::keypad_address address, errc e) {
     const std::string kind(kind_of(m));
     const std::string name(to_string(md));
-    const auto why = tool::explain_refusal(m, md, node, [&](auto& s) { target_default(s, node); });
+    const auto why = tool::explain_refusal(
+        m, md, node, [&](auto& s) { target_default(s, node); }, address);
     std::string text;
     if (why.kind == tool::refusal::what::not_for_model) {
         text = kind + " is not a message of a " + name;
@@ -935,8 +938,9 @@ PYBIND11_MODULE(_powerkey, mod) {
             const auto mm = message_model(m, md);
             const auto n = node.is_none() ? canopen::node_id::make(m.node.value_or(0x15)).value()
                                           : node_from_py(node);
-            const auto f = encode(n, mm, m.m, address_from_py(address));
-            if (!f) refused(m.m, mm, n, f.error());
+            const auto a = address_from_py(address);
+            const auto f = encode(n, mm, m.m, a);
+            if (!f) refused(m.m, mm, n, a, f.error());
             return frame_to_py(*f);
         },
         py::arg("message"), py::kw_only(), py::arg("model") = py::none(),

@@ -312,6 +312,12 @@ def test_j1939_encode_by_kind_and_address():
     f = powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
                         destination=0, address=0x21)
     assert (f.arbitration_id, bytes(f.data)) == (0x18EF0021, bytes.fromhex("041B01020001FFFF"))
+    # Refused under address=, explained under it: the destination, not the priority, is to blame.
+    with pytest.raises(powerkey.EncodeError) as e:
+        powerkey.encode("j1939_set_led", model="pkp2600si", key=3, colour="red", mode="on",
+                        address=0x22)
+    assert str(e.value).startswith("j1939_set_led: destination: 33 is less than a pkp2600si "
+                                   "takes (22h..22h)")
 
 
 def test_session_follows_the_switch_both_ways():
