@@ -308,6 +308,20 @@ done
 for m in pkp2200 pkp2600; do
   cmp -s <("$pk" list --model $m) <("$pk" list --model pkp2400) || fail "list --model $m differs from pkp2400 (docs/cli.md says they match)"
 done
+# The other SI models list pkp3500mt's messages without its encoder messages, with
+# led_brightness (all but the PKP-1500-LI) and j1939_multiple_leds (the three with the command),
+# as docs/cli.md says under the pkp3500mt block.
+"$pk" list --model pkp3500mt | grep -v '^encoder_state \|^analog_inputs \|^encoder_leds ' > "$tmp/si_list"
+for m in pkp2600si pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si; do
+  case $m in pkp1500li) b=no ;; *) b=yes ;; esac
+  case $m in pkp2600si | pkp3500si | pkp1600si) ml=yes ;; *) ml=no ;; esac
+  "$pk" list --model $m | grep -v "^led_brightness \|^j1939_multiple_leds " | cmp -s - "$tmp/si_list" &&
+    [ "$("$pk" list --model $m | grep -c '^led_brightness ')" = "$([ $b = yes ] && echo 1 || echo 0)" ] &&
+    [ "$("$pk" list --model $m | grep -c '^j1939_multiple_leds ')" = "$([ $ml = yes ] && echo 1 || echo 0)" ] ||
+    fail "list --model $m is not pkp3500mt's as docs/cli.md says (led_brightness $b, j1939_multiple_leds $ml)"
+done
+grep -qF 'encoder messages, with `led_brightness` but the PKP-1500-LI, and with `j1939_multiple_leds` the' "$src/docs/cli.md" ||
+  fail "docs/cli.md: the SI models' list sentence is stale"
 
 # --- one program: every subcommand reads, reports and ends alike -----------------------------------
 
