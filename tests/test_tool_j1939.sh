@@ -130,6 +130,11 @@ printf '%s\n' '18EFFF21#041B01020121FFFF' '18EFFF21#041B01030121FFFF' '18EFFF21#
 grep -qF '[ 1 .][ 2*.][ 3 .]' "$tmp/out" || fail "--show: key 2 down: $(cat "$tmp/out")"
 grep -qF '[ 1 .][ 2 .][ 3*.]' "$tmp/out" || fail "--show: key 3 still down after key 2's release: $(cat "$tmp/out")"
 grep -qF '[ 5 w]' "$tmp/out" || fail "--show: LED 5 blinking white: $(cat "$tmp/out")"
+# Amber and yellow-green show as Y (docs/cli.md); the multiple-LED frames draw no picture.
+printf '%s\n' '18EF2100#041B0101080100FF' '18EF2100#041B0102090100FF' '18A72100#222222FFFFFFFFFF' > "$tmp/show.log"
+"$pk" decode --model pkp1600si --show "$tmp/show.log" > "$tmp/out" 2>/dev/null || fail "--show exit status"
+grep -qF '[ 1 Y][ 2 Y][ 3 .]' "$tmp/out" && [ "$(grep -c '^    \[' "$tmp/out")" -eq 2 ] ||
+  fail "--show: amber, yellow-green, multiple LEDs: $(cat "$tmp/out")"
 
 # --model auto: the models with the multiple-LED command and 6 keys or more read the PKP-1600-SI
 # session; the narrowest is taken.
