@@ -377,6 +377,13 @@ for sub in convert models; do
   "$pk" $sub --model pk1000 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub takes no --model or --node" "$tmp/err" || fail "$sub --model: status $rc, $(cat "$tmp/err")"
 done
+# Each says why in its own words: convert reads logs of any bus; models reads no log at all.
+"$pk" convert --node 5 < /dev/null > /dev/null 2> "$tmp/err"
+grep -qx "powerkey: convert takes no --model or --node or --address (it reads logs of any bus) (powerkey help shows the usage)" "$tmp/err" ||
+  fail "convert --node: the reason: $(cat "$tmp/err")"
+"$pk" models --model pk1000 > /dev/null 2> "$tmp/err"
+grep -qx "powerkey: models takes no --model or --node or --address (the model is its argument: powerkey models NAME) (powerkey help shows the usage)" "$tmp/err" ||
+  fail "models --model: the reason: $(cat "$tmp/err")"
 for sub in simulate check; do
   "$pk" $sub < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub needs --model M (pk1000, " "$tmp/err" || fail "$sub without --model: status $rc, $(cat "$tmp/err")"

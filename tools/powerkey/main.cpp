@@ -187,8 +187,8 @@ int main(int argc, char** argv) {
     const bool node_given = app.get_option("--node")->count() > 0;
     const bool address_given = app.get_option("--address")->count() > 0;
     if (use == model_use::none && (model_given || node_given || address_given))
-        return tool::usage_error(
-            name + " takes no --model or --node or --address (it reads logs of any bus)");
+        return tool::usage_error(name + " takes no --model or --node or --address (" +
+                                 std::string(chosen->spec.no_model_why) + ")");
     if (model_given) {
         if (use == model_use::or_auto && (model_text == "auto" || model_text == "AUTO")) {
             common.model_auto = true;
