@@ -497,14 +497,14 @@ can::frame frame_from_py(py::handle o) {
                            .cast<std::string>();
     const bool extended = ext.value_or(id > 0x7FF);
     // A J1939 identifier given as a standard one (python-can's is_extended_id=False): name the
-    // range, as for any int outside its range.
+    // range, as frame_id_arg does (in hex: a J1939 identifier is read in hex).
     if (!extended && id > 0x7FF) {
         const bool message = py::hasattr(o, "arbitration_id");
         raise(types().decode_error,
-              std::string(message ? "arbitration_id: " : "id: ") +
+              std::string(message ? "frame: arbitration_id: " : "frame: id: ") +
                   py::module_::import("builtins").attr("hex")(id).cast<std::string>() +
-                  " is outside 0..0x7ff, the 11-bit identifiers (" +
-                  (message ? "is_extended_id" : "extended") + "=False): value_out_of_range",
+                  " is outside 0..0x7FF (11 bits: " + (message ? "is_extended_id" : "extended") +
+                  "=False)",
               py::str("value_out_of_range"));
     }
     const auto f =

@@ -296,8 +296,8 @@ def test_j1939_identifier_sent_as_standard_names_the_range():
     with pytest.raises(powerkey.DecodeError) as e:
         powerkey.decode(msg, model="pkp1600si")
     assert e.value.code == "value_out_of_range"
-    assert str(e.value) == ("arbitration_id: 0x18efff21 is outside 0..0x7ff, the 11-bit "
-                            "identifiers (is_extended_id=False): value_out_of_range")
+    assert str(e.value) == ("frame: arbitration_id: 0x18efff21 is outside 0..0x7FF (11 bits: "
+                            "is_extended_id=False)")
 
 
 def test_j1939_encode_by_kind_and_address():
