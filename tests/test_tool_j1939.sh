@@ -105,7 +105,10 @@ grep -qx '18EF2100#041B0102010100FF' "$tmp/out" || fail "encode j1939_set_led: $
 grep -qx '18EF2100#041B021FFFFFFFFF' "$tmp/out" || fail "encode 02h: $(cat "$tmp/out")"
 # (identifier 01h: bytes 4..6 00 01 FF are also LED 2 off, state 01h; docs/j1939.md)
 "$pk" encode --model pkp1600si j1939_key_contact key=2 pressed=no identifier=1 destination=00h \
-  > /dev/null 2>&1 && fail "an addressed key contact state that reads as an LED command was encoded"
+  > /dev/null 2> "$tmp/err" && fail "an addressed key contact state that reads as an LED command was encoded"
+# ... and the error says what to do, not that the destination must be FFh.
+grep -qx "powerkey: encode: j1939_key_contact: addressed to 00h with identifier 01h, its bytes read as an LED command too: give --address 21h (the keypad's address) to encode it" "$tmp/err" ||
+  fail "the ambiguous key contact state's error: $(cat "$tmp/err")"
 "$pk" encode --model pkp1600si --address 21h j1939_key_contact key=2 pressed=no identifier=1 \
   destination=00h > "$tmp/out" || fail "narrowed key contact: status $?"
 grep -qx '18EF0021#041B01020001FFFF' "$tmp/out" || fail "narrowed key contact: $(cat "$tmp/out")"

@@ -429,6 +429,8 @@ message build_message(const std::string& kind_text, const py::dict& fields,
                           j1939::keypad_address address, errc e) {
     const std::string kind(kind_of(m));
     const std::string name(to_string(md));
+    if (const auto narrow = tool::narrowing_needed(m, md, node, address, true); !narrow.empty())
+        raise(types().encode_error, kind + ": " + narrow, py::str(std::string(to_string(e))));
     const auto why = tool::explain_refusal(
         m, md, node, [&](auto& s) { target_default(s, node); }, address);
     std::string text;

@@ -306,9 +306,12 @@ def test_j1939_encode_by_kind_and_address():
         0x18EF2100, bytes.fromhex("041B0102010100FF"), True)
     # An addressed key contact state whose bytes 4..6 read as an LED command too (identifier
     # 01h: LED 2 off, state 01h) needs narrowing to its sender.
-    with pytest.raises(powerkey.EncodeError):
+    with pytest.raises(powerkey.EncodeError) as e:
         powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
                         destination=0)
+    assert str(e.value) == ("j1939_key_contact: addressed to 00h with identifier 01h, its bytes "
+                            "read as an LED command too: give address=0x21 (the keypad's address) "
+                            "to encode it")
     f = powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
                         destination=0, address=0x21)
     assert (f.arbitration_id, bytes(f.data)) == (0x18EF0021, bytes.fromhex("041B01020001FFFF"))

@@ -215,6 +215,10 @@ int run_encode(const options& o, const encode_options& eo) {
     }
     // Every field held a value of its type, the model refused the message: say which field.
     const std::string kind(kind_of(msg));
+    if (const auto narrow = narrowing_needed(msg, o.keypad, o.node, o.address); !narrow.empty()) {
+        report("encode", kind + ": " + narrow);
+        return status_input;
+    }
     const auto why = explain_refusal(
         msg, o.keypad, o.node, [&](auto& s) { apply_defaults(s, o.node, eo.broadcast); },
         o.address);

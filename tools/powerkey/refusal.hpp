@@ -24,6 +24,7 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace tool {
 
@@ -274,6 +275,30 @@ inline std::string refusal_text(const refusal& r, std::string_view given,
         text += " is not what a " + m + " takes";
     if (!range.empty()) text += " (" + range + ")";
     return text;
+}
+
+// An addressed J1939 key contact state whose bytes read as an LED command too (identifier
+// 00h..03h: docs/j1939.md, "Which way a frame goes") encodes only narrowed to its sender: without
+// `address`, the text after "KIND: " that says so (give the source as the address: `--address
+// 21h`, or in Python `address=0x21`), else "".
+inline std::string narrowing_needed(const powerkey::message& msg, powerkey::model m,
+                                    powerkey::canopen::node_id node,
+                                    powerkey::j1939::keypad_address address, bool python = false) {
+    const auto* k = std::get_if<powerkey::j1939::key_contact>(&msg);
+    if (address || !k || !powerkey::encode(node, m, msg, k->source)) return {};
+    std::string s = "addressed to ";
+    append_hex_h(s, k->destination, 2);
+    s += " with identifier ";
+    append_hex_h(s, k->identifier, 2);
+    s += ", its bytes read as an LED command too: give ";
+    if (python) {
+        s += "address=0x";
+        append_hex(s, k->source, 2);
+    } else {
+        s += "--address ";
+        append_hex_h(s, k->source, 2);
+    }
+    return s + " (the keypad's address) to encode it";
 }
 
 // The same for a message of any kind; init(S&) gives a struct of the kind its defaults.
