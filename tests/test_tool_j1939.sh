@@ -89,6 +89,13 @@ grep -q "18EFFF22#041B01030122FFFF .*key: 3  pressed: yes  identifier: 22h" "$tm
   fail "--address 22h, its own frame: $(cat "$tmp/out")"
 "$pk" decode --model pkp1600si "$tmp/two.log" 2> "$tmp/err" | grep -c "J1939" | grep -qx 3 ||
   fail "without --address every keypad decodes"
+# A log of another keypad address gets the hint --node gets: most frames are of the keypad at 21h
+# (its own frames from it, commands to it), none of 30h; a log mostly of 30h's gets none.
+"$pk" decode --model pkp2600si --address 30h "$logs/j1939-pkp2600si.log" > /dev/null 2> "$tmp/err"
+tail -1 "$tmp/err" | grep -qx "powerkey: hint: most J1939 frames are of the keypad at 21h, not of keypad 30h: try --address 21h" ||
+  fail "--address 30h on 21h's log, the hint: $(cat "$tmp/err")"
+"$pk" decode --model pkp1600si --address 22h "$tmp/two.log" > /dev/null 2> "$tmp/err"
+grep -q "hint" "$tmp/err" && fail "--address 22h, a third of the frames its own: no hint: $(cat "$tmp/err")"
 for bad in FEh 0x100 x; do
   "$pk" decode --address "$bad" "$tmp/two.log" > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: --address: expected a J1939 keypad address 00h..FDh" "$tmp/err" ||
