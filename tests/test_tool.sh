@@ -377,6 +377,11 @@ for sub in convert models; do
   "$pk" $sub --model pk1000 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub takes no --model or --node" "$tmp/err" || fail "$sub --model: status $rc, $(cat "$tmp/err")"
 done
+# The usage's input text says what becomes of remote and CAN FD frames as convert does: written.
+printf '%s\n' '615#R' '615##1AABB' | "$pk" convert > "$tmp/out" 2> /dev/null
+[ "$(awk '{print $3}' "$tmp/out" | tr '\n' ' ')" = "615#R 615##1AABB " ] || fail "convert of remote and CAN FD: $(cat "$tmp/out")"
+"$pk" help | grep -qxF "  Remote, CAN FD and error frames are counted, not decoded (convert writes the remote and" ||
+  fail "the usage says remote and CAN FD frames are skipped by every subcommand: $("$pk" help | grep -A1 Remote)"
 # Each says why in its own words: convert reads logs of any bus; models reads no log at all.
 "$pk" convert --node 5 < /dev/null > /dev/null 2> "$tmp/err"
 grep -qx "powerkey: convert takes no --model or --node or --address (it reads logs of any bus) (powerkey help shows the usage)" "$tmp/err" ||
