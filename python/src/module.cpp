@@ -176,21 +176,28 @@ model model_from_py(py::handle o) {
                          py_repr(o));
 }
 
-// A J1939 keypad address (00h..FDh; FEh is the null and FFh the global address), or None for
-// any: the J1939 frames narrowed to that keypad. A number, or the tool's text of --address as
-// node takes --node's ("21h", "0x21", "33").
-j1939::keypad_address address_from_py(py::handle o) {
-    if (o.is_none()) return std::nullopt;
+// A J1939 address lo..FDh (FEh is the null and FFh the global address): a number, or the tool's
+// text of --address as node takes --node's ("21h", "0x21", "33").
+std::uint8_t address_arg(py::handle o, const char* what, std::uint64_t lo) {
     if (py::isinstance<py::str>(o)) {
         std::uint64_t v = 0;
-        if (!tool::parse_number(o.cast<std::string>(), v) || v > 0xFD)
+        if (!tool::parse_number(o.cast<std::string>(), v) || v < lo || v > 0xFD) {
+            std::string range;
+            tool::append_hex_h(range, lo, 2);
             raise(types().argument_error,
-                  "address: expected a J1939 keypad address 00h..FDh (0x21, 21h or 33), got " +
-                      py_repr(o),
+                  std::string(what) + ": expected a J1939 keypad address " + range +
+                      "..FDh (0x21, 21h or 33), got " + py_repr(o),
                   py::str("value_out_of_range"));
+        }
         return static_cast<std::uint8_t>(v);
     }
-    return static_cast<std::uint8_t>(int_arg(o, "address", 0, 0xFD));
+    return static_cast<std::uint8_t>(int_arg(o, what, lo, 0xFD));
+}
+
+// A J1939 keypad address (00h..FDh), or None for any: the J1939 frames narrowed to that keypad.
+j1939::keypad_address address_from_py(py::handle o) {
+    if (o.is_none()) return std::nullopt;
+    return address_arg(o, "address", 0);
 }
 
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {
@@ -974,9 +981,9 @@ PYBIND11_MODULE(_powerkey, mod) {
     py::class_<keypad_type>(mod, "VirtualKeypad")
         .def(py::init([](py::handle md, py::handle node, bool drop, py::handle response_ms,
                          bool j1939, py::handle j1939_address) {
+                 // 01h..FDh, as 70h takes it.
                  const auto address =
-                     pb::j1939_source_address::make(static_cast<std::uint8_t>(int_arg(
-                                                        j1939_address, "j1939_address", 1, 0xFD)))
+                     pb::j1939_source_address::make(address_arg(j1939_address, "j1939_address", 1))
                          .value();
                  return new keypad_type(
                      model_from_py(md), node_from_py(node),
