@@ -377,6 +377,15 @@ for sub in convert models; do
   "$pk" $sub --model pk1000 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub takes no --model or --node" "$tmp/err" || fail "$sub --model: status $rc, $(cat "$tmp/err")"
 done
+# decode --json --nlohmann-writer (a benchmark option, docs/cli.md) writes the same lines as the
+# tool's own writer: the generic keys, J1939 identifier parts and upload errors included.
+printf '%s\n' '18EFFF21#041B01110121FFFF' '18FEF100#FFFFFFFFFFFFFFFF' '615#4008100000000000' \
+  '595#4108100020000000' '615#6000000000000000' '595#10FF225C0D0A7F00' > "$tmp/mixed.log"
+for log in "$tmp/mixed.log" "$logs/switch-pkp2600si.log" "$logs/pk1000.log" "$logs/check-problems.log"; do
+  "$pk" decode --model pkp2600si --json "$log" > "$tmp/own" 2> /dev/null
+  "$pk" decode --model pkp2600si --json --nlohmann-writer "$log" 2> /dev/null | cmp -s - "$tmp/own" ||
+    fail "--nlohmann-writer differs on $log: $("$pk" decode --model pkp2600si --json --nlohmann-writer "$log" 2> /dev/null | diff - "$tmp/own" | head -3)"
+done
 # The usage's input text says what becomes of remote and CAN FD frames as convert does: written.
 printf '%s\n' '615#R' '615##1AABB' | "$pk" convert > "$tmp/out" 2> /dev/null
 [ "$(awk '{print $3}' "$tmp/out" | tr '\n' ' ')" = "615#R 615##1AABB " ] || fail "convert of remote and CAN FD: $(cat "$tmp/out")"

@@ -453,8 +453,18 @@ private:
             if (const auto form = form_of(*e.decoded); form != frame_form::manual)
                 j["form"] = std::string(to_string(form));
         }
+        // The same generic keys as the tool's writer, through the same reader of the frame.
+        struct {
+            nlohmann::ordered_json& j;
+            void field(std::string_view k, std::string_view v) {
+                j[std::string(k)] = std::string(v);
+            }
+            void field(std::string_view k, std::uint64_t v) { j[std::string(k)] = v; }
+        } generic{j};
+        write_generic_fields(generic, r.frame, e);
         if (e.sdo != sdo_pairing::none) j["sdo"] = std::string(to_string(e.sdo));
         if (e.upload_done) j["text"] = std::string(session_.text());
+        if (e.upload_error != errc{}) j["upload_error"] = std::string(to_string(e.upload_error));
         if (e.new_node) j["new_node"] = e.new_node->value();
         if (e.new_protocol && !j1939_foreign && e.decoded)
             j["protocol"] = std::string(to_string(*e.new_protocol));
