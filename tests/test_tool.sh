@@ -389,8 +389,19 @@ done
 # The usage's input text says what becomes of remote and CAN FD frames as convert does: written.
 printf '%s\n' '615#R' '615##1AABB' | "$pk" convert > "$tmp/out" 2> /dev/null
 [ "$(awk '{print $3}' "$tmp/out" | tr '\n' ' ')" = "615#R 615##1AABB " ] || fail "convert of remote and CAN FD: $(cat "$tmp/out")"
-"$pk" help | grep -qxF "  Remote, CAN FD and error frames are counted, not decoded (convert writes the remote and" ||
-  fail "the usage says remote and CAN FD frames are skipped by every subcommand: $("$pk" help | grep -A1 Remote)"
+"$pk" help > "$tmp/help"
+grep -qxF "  Remote, CAN FD and error frames are counted, not decoded (convert writes the remote and" "$tmp/help" ||
+  fail "the usage says remote and CAN FD frames are skipped by every subcommand: $(grep -A1 Remote "$tmp/help")"
+# A subcommand that needs --model names no default model in its help; the others name pk1000's.
+for sub in simulate check export; do
+  "$pk" help $sub > "$tmp/help"
+  grep -q "^  --model M    pk1000, pkp2200, " "$tmp/help" && ! grep -q "(default), pkp2200" "$tmp/help" ||
+    fail "help $sub: --model is required, yet: $(grep -A1 -e '--model M  ' "$tmp/help")"
+done
+for sub in decode encode list; do
+  "$pk" help $sub > "$tmp/help"
+  grep -q "^  --model M    pk1000 (default), pkp2200, " "$tmp/help" || fail "help $sub: --model's default"
+done
 # Each says why in its own words: convert reads logs of any bus; models reads no log at all.
 "$pk" convert --node 5 < /dev/null > /dev/null 2> "$tmp/err"
 grep -qx "powerkey: convert takes no --model or --node or --address (it reads logs of any bus) (powerkey help shows the usage)" "$tmp/err" ||

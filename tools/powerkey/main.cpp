@@ -15,16 +15,15 @@ namespace {
 
 using tool::model_use;
 
-// "pk1000 (default), pkp2200, ..." wrapped to the usage text's width, from the model table.
-// "pk1000 (default), pkp2200, ..., pkp2400si" wrapped to the usage text's width, from the model
-// table.
-std::string wrapped_models(std::size_t indent, std::size_t first_width) {
+// "pk1000 (default), pkp2200, ..., pkp1600si" wrapped to the usage text's width, from the model
+// table; without "(default)" for a subcommand that needs --model.
+std::string wrapped_models(std::size_t indent, std::size_t first_width, bool with_default) {
     std::string out, line;
     std::size_t width = first_width;
     bool first = true;
     for (const auto m : powerkey::enum_values<powerkey::model>()) {
         std::string word(powerkey::to_string(m));
-        if (first) word += " (default)";
+        if (first && with_default) word += " (default)";
         first = false;
         if (!line.empty() && line.size() + 2 + word.size() > width) {
             out += line + ",\n" + std::string(indent, ' ');
@@ -38,7 +37,7 @@ std::string wrapped_models(std::size_t indent, std::size_t first_width) {
 
 std::string common_options_text(model_use use, std::string_view address = {}) {
     if (use == model_use::none) return {};
-    std::string s = "  --model M    " + wrapped_models(15, 81) +
+    std::string s = "  --model M    " + wrapped_models(15, 81, use != model_use::required) +
                     ";\n               in any case, as the manuals write them (PKP-2400-LI, "
                     "PKP-3500-MT) or as\n               the keypad reports them (PKU2400)";
     if (use == model_use::or_auto) s += "; or auto";
