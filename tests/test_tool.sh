@@ -257,6 +257,9 @@ diff "$tmp/want" "$tmp/moved" > /dev/null || fail "encode --json --node 0x3A: $(
 "$pk" decode "$logs/pkp2400.log" > /dev/null 2> "$tmp/err"
 tail -1 "$tmp/err" | grep -qx "powerkey: hint: [0-9]* of [0-9]* keypad frames refused as pk1000 frames; if the keypad is another model, try --model auto (or --model pk1000, pkp2200, pkp2400, pkp2600, pkp2600si, pkp3500mt, pkp3500si, pkp2500si, pkp1500li, pkp2200si, pkp2300si, pkp2400si, pkp1600si)" ||
   fail "no hint for a PKP log decoded as pk1000: $(cat "$tmp/err")"
+# docs/cli.md shows this very run: its summary and hint are the tool's, word for word.
+grep -A2 -xF '$ powerkey decode examples/logs/pkp2400.log > /dev/null' "$src/docs/cli.md" | tail -2 |
+  diff - "$tmp/err" > /dev/null || fail "docs/cli.md's summary and hint of pkp2400.log are stale: $(cat "$tmp/err")"
 # --model auto finds the model from the keypad's own name, or from what decodes.
 "$pk" decode --model auto "$logs/pkp2400.log" > "$tmp/auto" 2> "$tmp/err" || fail "--model auto exit status"
 head -1 "$tmp/err" | grep -qx 'powerkey: --model auto: pkp2400: the keypad names itself "PKP-2400-LI"\|powerkey: --model auto: pkp2400: .*' ||
@@ -266,6 +269,13 @@ printf '%s\n' '000#0115' '080#' > "$tmp/plain.log"
 "$pk" decode --model auto "$tmp/plain.log" > /dev/null 2> "$tmp/err"
 head -1 "$tmp/err" | grep -qx "powerkey: --model auto: cannot tell the model: no frame of the log decodes differently under the 13 models (no model string, no key or LED map); decoding as pk1000, give --model" ||
   fail "--model auto without clues: $(cat "$tmp/err")"
+# --model auto counts a refused frame of the keypad's own COB-ID (a PDO the model lacks: wrong_id)
+# as decode's summary does, so it never picks a model that refuses more than another: the LED
+# brightness and backlight PDOs of faults/trimmed.log, which the PKP LI models lack, rule them out.
+"$pk" decode --model auto "$logs/faults/trimmed.log" > /dev/null 2> "$tmp/err"
+head -1 "$tmp/err" | grep -q "^powerkey: --model auto: pkp2200si: it refuses 0 of the keypad's frames (pk1000 0, pkp2200 2, " &&
+  tail -1 "$tmp/err" | grep -qx "powerkey: summary: 6 frames: 6 decoded, 0 of other nodes or no keypad, 0 refused" ||
+  fail "--model auto counts wrong_id of the keypad: $(cat "$tmp/err")"
 
 # A file that is not a log gets one message saying what it looks like and what to do.
 printf '\xd4\xc3\xb2\xa1\x02\x00\x04\x00' > "$tmp/cap.pcap"
@@ -298,6 +308,20 @@ done
 for m in pkp2200 pkp2600; do
   cmp -s <("$pk" list --model $m) <("$pk" list --model pkp2400) || fail "list --model $m differs from pkp2400 (docs/cli.md says they match)"
 done
+# The other SI models list pkp3500mt's messages without its encoder messages, with
+# led_brightness (all but the PKP-1500-LI) and j1939_multiple_leds (the three with the command),
+# as docs/cli.md says under the pkp3500mt block.
+"$pk" list --model pkp3500mt | grep -v '^encoder_state \|^analog_inputs \|^encoder_leds ' > "$tmp/si_list"
+for m in pkp2600si pkp3500si pkp2500si pkp1500li pkp2200si pkp2300si pkp2400si pkp1600si; do
+  case $m in pkp1500li) b=no ;; *) b=yes ;; esac
+  case $m in pkp2600si | pkp3500si | pkp1600si) ml=yes ;; *) ml=no ;; esac
+  "$pk" list --model $m | grep -v "^led_brightness \|^j1939_multiple_leds " | cmp -s - "$tmp/si_list" &&
+    [ "$("$pk" list --model $m | grep -c '^led_brightness ')" = "$([ $b = yes ] && echo 1 || echo 0)" ] &&
+    [ "$("$pk" list --model $m | grep -c '^j1939_multiple_leds ')" = "$([ $ml = yes ] && echo 1 || echo 0)" ] ||
+    fail "list --model $m is not pkp3500mt's as docs/cli.md says (led_brightness $b, j1939_multiple_leds $ml)"
+done
+grep -qF 'encoder messages, with `led_brightness` but the PKP-1500-LI, and with `j1939_multiple_leds` the' "$src/docs/cli.md" ||
+  fail "docs/cli.md: the SI models' list sentence is stale"
 
 # --- one program: every subcommand reads, reports and ends alike -----------------------------------
 
@@ -353,6 +377,38 @@ for sub in convert models; do
   "$pk" $sub --model pk1000 < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub takes no --model or --node" "$tmp/err" || fail "$sub --model: status $rc, $(cat "$tmp/err")"
 done
+# decode --json --nlohmann-writer (a benchmark option, docs/cli.md) writes the same lines as the
+# tool's own writer: the generic keys, J1939 identifier parts and upload errors included.
+printf '%s\n' '18EFFF21#041B01110121FFFF' '18FEF100#FFFFFFFFFFFFFFFF' '615#4008100000000000' \
+  '595#4108100020000000' '615#6000000000000000' '595#10FF225C0D0A7F00' > "$tmp/mixed.log"
+for log in "$tmp/mixed.log" "$logs/switch-pkp2600si.log" "$logs/pk1000.log" "$logs/check-problems.log"; do
+  "$pk" decode --model pkp2600si --json "$log" > "$tmp/own" 2> /dev/null
+  "$pk" decode --model pkp2600si --json --nlohmann-writer "$log" 2> /dev/null | cmp -s - "$tmp/own" ||
+    fail "--nlohmann-writer differs on $log: $("$pk" decode --model pkp2600si --json --nlohmann-writer "$log" 2> /dev/null | diff - "$tmp/own" | head -3)"
+done
+# The usage's input text says what becomes of remote and CAN FD frames as convert does: written.
+printf '%s\n' '615#R' '615##1AABB' | "$pk" convert > "$tmp/out" 2> /dev/null
+[ "$(awk '{print $3}' "$tmp/out" | tr '\n' ' ')" = "615#R 615##1AABB " ] || fail "convert of remote and CAN FD: $(cat "$tmp/out")"
+"$pk" help > "$tmp/help"
+grep -qxF "  Remote, CAN FD and error frames are counted, not decoded (convert writes the remote and" "$tmp/help" ||
+  fail "the usage says remote and CAN FD frames are skipped by every subcommand: $(grep -A1 Remote "$tmp/help")"
+# A subcommand that needs --model names no default model in its help; the others name pk1000's.
+for sub in simulate check export; do
+  "$pk" help $sub > "$tmp/help"
+  grep -q "^  --model M    pk1000, pkp2200, " "$tmp/help" && ! grep -q "(default), pkp2200" "$tmp/help" ||
+    fail "help $sub: --model is required, yet: $(grep -A1 -e '--model M  ' "$tmp/help")"
+done
+for sub in decode encode list; do
+  "$pk" help $sub > "$tmp/help"
+  grep -q "^  --model M    pk1000 (default), pkp2200, " "$tmp/help" || fail "help $sub: --model's default"
+done
+# Each says why in its own words: convert reads logs of any bus; models reads no log at all.
+"$pk" convert --node 5 < /dev/null > /dev/null 2> "$tmp/err"
+grep -qx "powerkey: convert takes no --model or --node or --address (it reads logs of any bus) (powerkey help shows the usage)" "$tmp/err" ||
+  fail "convert --node: the reason: $(cat "$tmp/err")"
+"$pk" models --model pk1000 > /dev/null 2> "$tmp/err"
+grep -qx "powerkey: models takes no --model or --node or --address (the model is its argument: powerkey models NAME) (powerkey help shows the usage)" "$tmp/err" ||
+  fail "models --model: the reason: $(cat "$tmp/err")"
 for sub in simulate check; do
   "$pk" $sub < /dev/null > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: $sub needs --model M (pk1000, " "$tmp/err" || fail "$sub without --model: status $rc, $(cat "$tmp/err")"

@@ -89,6 +89,13 @@ grep -q "18EFFF22#041B01030122FFFF .*key: 3  pressed: yes  identifier: 22h" "$tm
   fail "--address 22h, its own frame: $(cat "$tmp/out")"
 "$pk" decode --model pkp1600si "$tmp/two.log" 2> "$tmp/err" | grep -c "J1939" | grep -qx 3 ||
   fail "without --address every keypad decodes"
+# A log of another keypad address gets the hint --node gets: most frames are of the keypad at 21h
+# (its own frames from it, commands to it), none of 30h; a log mostly of 30h's gets none.
+"$pk" decode --model pkp2600si --address 30h "$logs/j1939-pkp2600si.log" > /dev/null 2> "$tmp/err"
+tail -1 "$tmp/err" | grep -qx "powerkey: hint: most J1939 frames are of the keypad at 21h, not of keypad 30h: try --address 21h" ||
+  fail "--address 30h on 21h's log, the hint: $(cat "$tmp/err")"
+"$pk" decode --model pkp1600si --address 22h "$tmp/two.log" > /dev/null 2> "$tmp/err"
+grep -q "hint" "$tmp/err" && fail "--address 22h, a third of the frames its own: no hint: $(cat "$tmp/err")"
 for bad in FEh 0x100 x; do
   "$pk" decode --address "$bad" "$tmp/two.log" > /dev/null 2> "$tmp/err"; rc=$?
   [ $rc -eq 2 ] && grep -q "^powerkey: --address: expected a J1939 keypad address 00h..FDh" "$tmp/err" ||
@@ -105,10 +112,18 @@ grep -qx '18EF2100#041B0102010100FF' "$tmp/out" || fail "encode j1939_set_led: $
 grep -qx '18EF2100#041B021FFFFFFFFF' "$tmp/out" || fail "encode 02h: $(cat "$tmp/out")"
 # (identifier 01h: bytes 4..6 00 01 FF are also LED 2 off, state 01h; docs/j1939.md)
 "$pk" encode --model pkp1600si j1939_key_contact key=2 pressed=no identifier=1 destination=00h \
-  > /dev/null 2>&1 && fail "an addressed key contact state that reads as an LED command was encoded"
+  > /dev/null 2> "$tmp/err" && fail "an addressed key contact state that reads as an LED command was encoded"
+# ... and the error says what to do, not that the destination must be FFh.
+grep -qx "powerkey: encode: j1939_key_contact: addressed to 00h with identifier 01h, its bytes read as an LED command too: give --address 21h (the keypad's address) to encode it" "$tmp/err" ||
+  fail "the ambiguous key contact state's error: $(cat "$tmp/err")"
 "$pk" encode --model pkp1600si --address 21h j1939_key_contact key=2 pressed=no identifier=1 \
   destination=00h > "$tmp/out" || fail "narrowed key contact: status $?"
 grep -qx '18EF0021#041B01020001FFFF' "$tmp/out" || fail "narrowed key contact: $(cat "$tmp/out")"
+# A message refused under --address is explained under it too: a command to 21h (the default
+# destination) is not one to the keypad at 22h, and the field to blame is its destination.
+"$pk" encode --model pkp2600si --address 22h j1939_set_led key=3 colour=red mode=on 2> "$tmp/err"
+grep -qx "powerkey: encode: j1939_set_led: destination: its value is less than a pkp2600si takes (22h..22h)" "$tmp/err" ||
+  fail "refusal under --address: $(cat "$tmp/err")"
 
 # list: the J1939 messages a model has (the multiple-LED command only where a manual gives it).
 "$pk" list --model pkp1600si > "$tmp/out"
@@ -125,6 +140,11 @@ printf '%s\n' '18EFFF21#041B01020121FFFF' '18EFFF21#041B01030121FFFF' '18EFFF21#
 grep -qF '[ 1 .][ 2*.][ 3 .]' "$tmp/out" || fail "--show: key 2 down: $(cat "$tmp/out")"
 grep -qF '[ 1 .][ 2 .][ 3*.]' "$tmp/out" || fail "--show: key 3 still down after key 2's release: $(cat "$tmp/out")"
 grep -qF '[ 5 w]' "$tmp/out" || fail "--show: LED 5 blinking white: $(cat "$tmp/out")"
+# Amber and yellow-green show as Y (docs/cli.md); the multiple-LED frames draw no picture.
+printf '%s\n' '18EF2100#041B0101080100FF' '18EF2100#041B0102090100FF' '18A72100#222222FFFFFFFFFF' > "$tmp/show.log"
+"$pk" decode --model pkp1600si --show "$tmp/show.log" > "$tmp/out" 2>/dev/null || fail "--show exit status"
+grep -qF '[ 1 Y][ 2 Y][ 3 .]' "$tmp/out" && [ "$(grep -c '^    \[' "$tmp/out")" -eq 2 ] ||
+  fail "--show: amber, yellow-green, multiple LEDs: $(cat "$tmp/out")"
 
 # --model auto: the models with the multiple-LED command and 6 keys or more read the PKP-1600-SI
 # session; the narrowest is taken.

@@ -176,11 +176,28 @@ model model_from_py(py::handle o) {
                          py_repr(o));
 }
 
-// A J1939 keypad address (00h..FDh; FEh is the null and FFh the global address), or None for
-// any: the J1939 frames narrowed to that keypad.
+// A J1939 address lo..FDh (FEh is the null and FFh the global address): a number, or the tool's
+// text of --address as node takes --node's ("21h", "0x21", "33").
+std::uint8_t address_arg(py::handle o, const char* what, std::uint64_t lo) {
+    if (py::isinstance<py::str>(o)) {
+        std::uint64_t v = 0;
+        if (!tool::parse_number(o.cast<std::string>(), v) || v < lo || v > 0xFD) {
+            std::string range;
+            tool::append_hex_h(range, lo, 2);
+            raise(types().argument_error,
+                  std::string(what) + ": expected a J1939 keypad address " + range +
+                      "..FDh (0x21, 21h or 33), got " + py_repr(o),
+                  py::str("value_out_of_range"));
+        }
+        return static_cast<std::uint8_t>(v);
+    }
+    return static_cast<std::uint8_t>(int_arg(o, what, lo, 0xFD));
+}
+
+// A J1939 keypad address (00h..FDh), or None for any: the J1939 frames narrowed to that keypad.
 j1939::keypad_address address_from_py(py::handle o) {
     if (o.is_none()) return std::nullopt;
-    return static_cast<std::uint8_t>(int_arg(o, "address", 0, 0xFD));
+    return address_arg(o, "address", 0);
 }
 
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {
@@ -413,11 +430,16 @@ message build_message(const std::string& kind_text, const py::dict& fields,
     return out;
 }
 
-// encode() refused m: the tool's words for why (refusal.hpp), the errc as the code.
-[[noreturn]] void refused(const message& m, model md, canopen::node_id node, errc e) {
+// encode() refused m: the tool's words for why (refusal.hpp), the errc as the code; `address` as
+// encode was given it.
+[[noreturn]] void refused(const message& m, model md, canopen::node_id node,
+                          j1939::keypad_address address, errc e) {
     const std::string kind(kind_of(m));
     const std::string name(to_string(md));
-    const auto why = tool::explain_refusal(m, md, node, [&](auto& s) { target_default(s, node); });
+    if (const auto narrow = tool::narrowing_needed(m, md, node, address, true); !narrow.empty())
+        raise(types().encode_error, kind + ": " + narrow, py::str(std::string(to_string(e))));
+    const auto why = tool::explain_refusal(
+        m, md, node, [&](auto& s) { target_default(s, node); }, address);
     std::string text;
     if (why.kind == tool::refusal::what::not_for_model) {
         text = kind + " is not a message of a " + name;
@@ -483,6 +505,17 @@ can::frame frame_from_py(py::handle o) {
                            .attr("bytes")(data.is_none() ? py::bytes() : data)
                            .cast<std::string>();
     const bool extended = ext.value_or(id > 0x7FF);
+    // A J1939 identifier given as a standard one (python-can's is_extended_id=False): name the
+    // range, as frame_id_arg does (in hex: a J1939 identifier is read in hex).
+    if (!extended && id > 0x7FF) {
+        const bool message = py::hasattr(o, "arbitration_id");
+        raise(types().decode_error,
+              std::string(message ? "frame: arbitration_id: " : "frame: id: ") +
+                  py::module_::import("builtins").attr("hex")(id).cast<std::string>() +
+                  " is outside 0..0x7FF (11 bits: " + (message ? "is_extended_id" : "extended") +
+                  "=False)",
+              py::str("value_out_of_range"));
+    }
     const auto f =
         can::make_frame(static_cast<std::uint32_t>(id),
                         {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()},
@@ -914,8 +947,9 @@ PYBIND11_MODULE(_powerkey, mod) {
             const auto mm = message_model(m, md);
             const auto n = node.is_none() ? canopen::node_id::make(m.node.value_or(0x15)).value()
                                           : node_from_py(node);
-            const auto f = encode(n, mm, m.m, address_from_py(address));
-            if (!f) refused(m.m, mm, n, f.error());
+            const auto a = address_from_py(address);
+            const auto f = encode(n, mm, m.m, a);
+            if (!f) refused(m.m, mm, n, a, f.error());
             return frame_to_py(*f);
         },
         py::arg("message"), py::kw_only(), py::arg("model") = py::none(),
@@ -947,9 +981,9 @@ PYBIND11_MODULE(_powerkey, mod) {
     py::class_<keypad_type>(mod, "VirtualKeypad")
         .def(py::init([](py::handle md, py::handle node, bool drop, py::handle response_ms,
                          bool j1939, py::handle j1939_address) {
+                 // 01h..FDh, as 70h takes it.
                  const auto address =
-                     pb::j1939_source_address::make(static_cast<std::uint8_t>(int_arg(
-                                                        j1939_address, "j1939_address", 1, 0xFD)))
+                     pb::j1939_source_address::make(address_arg(j1939_address, "j1939_address", 1))
                          .value();
                  return new keypad_type(
                      model_from_py(md), node_from_py(node),

@@ -280,6 +280,24 @@ def test_j1939_address_narrows_and_other_pgns_are_not_keypad_frames():
     assert e.value.code == "wrong_id"
     with pytest.raises(powerkey.ArgumentError):
         powerkey.decode(*key, model="pkp1600si", address=0xFE)
+    # As node: the tool's text of --address, "21h", "0x21" or "33".
+    for text in ("21h", "0x21", "33"):
+        assert powerkey.decode(*key, model="pkp1600si", address=text).kind == "j1939_key_contact"
+    for text in ("FEh", "nope", ""):
+        with pytest.raises(powerkey.ArgumentError) as e:
+            powerkey.decode(*key, model="pkp1600si", address=text)
+        assert "00h..FDh" in str(e.value)
+
+
+def test_j1939_identifier_sent_as_standard_names_the_range():
+    # A J1939 identifier in a can.Message given is_extended_id=False: no 11-bit identifier.
+    msg = can.Message(arbitration_id=0x18EFFF21, data=bytes.fromhex("041B01030121FFFF"),
+                      is_extended_id=False)
+    with pytest.raises(powerkey.DecodeError) as e:
+        powerkey.decode(msg, model="pkp1600si")
+    assert e.value.code == "value_out_of_range"
+    assert str(e.value) == ("frame: arbitration_id: 0x18efff21 is outside 0..0x7FF (11 bits: "
+                            "is_extended_id=False)")
 
 
 def test_j1939_encode_by_kind_and_address():
@@ -288,12 +306,21 @@ def test_j1939_encode_by_kind_and_address():
         0x18EF2100, bytes.fromhex("041B0102010100FF"), True)
     # An addressed key contact state whose bytes 4..6 read as an LED command too (identifier
     # 01h: LED 2 off, state 01h) needs narrowing to its sender.
-    with pytest.raises(powerkey.EncodeError):
+    with pytest.raises(powerkey.EncodeError) as e:
         powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
                         destination=0)
+    assert str(e.value) == ("j1939_key_contact: addressed to 00h with identifier 01h, its bytes "
+                            "read as an LED command too: give address=0x21 (the keypad's address) "
+                            "to encode it")
     f = powerkey.encode("j1939_key_contact", model="pkp1600si", key=2, identifier=1,
                         destination=0, address=0x21)
     assert (f.arbitration_id, bytes(f.data)) == (0x18EF0021, bytes.fromhex("041B01020001FFFF"))
+    # Refused under address=, explained under it: the destination, not the priority, is to blame.
+    with pytest.raises(powerkey.EncodeError) as e:
+        powerkey.encode("j1939_set_led", model="pkp2600si", key=3, colour="red", mode="on",
+                        address=0x22)
+    assert str(e.value).startswith("j1939_set_led: destination: 33 is less than a pkp2600si "
+                                   "takes (22h..22h)")
 
 
 def test_session_follows_the_switch_both_ways():

@@ -97,6 +97,10 @@ def test_keypad_sold_as_j1939_at_another_address():
         (0x18EFFF30, True, "041B01080121FFFF")]
     m = powerkey.decode(sent[0], model="pkp2400", address=0x30)
     assert m.kind == "j1939_key_contact" and m.pressed_keys() == [8]
-    for bad in (0, 0xFE, 0x100):
+    for bad in (0, 0xFE, 0x100, "00h", "FEh", "x"):
         with pytest.raises(powerkey.ArgumentError):
             powerkey.VirtualKeypad(model="pkp2400", start_in_j1939=True, j1939_address=bad)
+    # The tool's text of --address too, as node= takes --node's.
+    k = powerkey.VirtualKeypad(model="pkp2400", start_in_j1939=True, j1939_address="30h")
+    k.power_on(0)
+    assert k.press(8, 50) and k.transmit_all()[0].arbitration_id == 0x18EFFF30

@@ -36,6 +36,8 @@ struct command_spec {
     // What --address means to it, when not the common narrowing to one keypad's J1939 frames:
     // the rest of its usage line after "--address A  " (simulate: where its keypad starts).
     std::string_view address = {};
+    // model_use::none: why it takes no --model, --node or --address, as its usage error says it.
+    std::string_view no_model_why = "it reads logs of any bus";
 };
 
 class registry {

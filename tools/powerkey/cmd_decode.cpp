@@ -97,13 +97,52 @@ void write_generic_fields(Writer& w, const can::frame& f, const session_event& e
 
 // --- counting -----------------------------------------------------------------------------------
 
+// A 29-bit frame the J1939 codec calls wrong_id: another PGN (not a keypad frame), or, narrowed by
+// --address, another keypad's.
+template <class Event>
+bool is_j1939_foreign(const Event& e) {
+    return !e.decoded && e.cls.fn == canopen::function::j1939 &&
+           e.decoded.error() == errc::wrong_id;
+}
+
+// A frame that is none of the keypad's: the J1939 ones above, and wrong_id on a COB-ID that does
+// not concern the keypad's node (another node's, or no keypad function). Every other frame the
+// decoder refuses is a refused keypad frame: the summary and --model auto count the same ones.
+// The keypad a J1939 message concerns: the sender of a keypad's own frame, the destination of a
+// command to one; nullopt for a CANopen message.
+std::optional<std::uint8_t> j1939_keypad_of(const message& msg) {
+    return visit_message(msg, [](const auto& s) -> std::optional<std::uint8_t> {
+        using S = std::remove_cvref_t<decltype(s)>;
+        namespace j = powerkey::j1939;
+        if constexpr (std::is_same_v<S, j::key_contact> || std::is_same_v<S, j::heartbeat> ||
+                      std::is_same_v<S, j::software_revision> || std::is_same_v<S, j::led_ack> ||
+                      std::is_same_v<S, j::led_ack_code> || std::is_same_v<S, j::address_claimed>)
+            return s.source;
+        else if constexpr (std::is_same_v<S, j::set_led> || std::is_same_v<S, j::set_led_code> ||
+                           std::is_same_v<S, j::multiple_leds> || std::is_same_v<S, j::command> ||
+                           std::is_same_v<S, j::switch_to_canopen>)
+            return s.destination;
+        else
+            return std::nullopt;
+    });
+}
+
+template <class Event>
+bool is_foreign(const Event& e) {
+    return is_j1939_foreign(e) ||
+           (!e.decoded && e.decoded.error() == errc::wrong_id && !concerns(e.cls, e.node));
+}
+
 struct counts {
     std::size_t frames = 0;
     std::size_t decoded = 0;
     std::size_t foreign = 0;  // other nodes' frames, and frames no keypad sends or receives
     std::map<std::string_view, std::size_t> refused;  // keypad frames the decoder refused
     std::array<std::size_t, 128> per_node{};          // frames of per-node COB-IDs, by node
-    input_counts read;                                // lines and frames the readers passed over
+    // Under --address, the J1939 frames of other keypads, by the keypad's address (its own
+    // frames' source, its commands' destination): for the hint to try another --address.
+    std::array<std::size_t, 256> per_address{};
+    input_counts read;  // lines and frames the readers passed over
     [[nodiscard]] std::size_t refused_total() const {
         std::size_t n = 0;
         for (const auto& [k, v] : refused) n += v;
@@ -118,6 +157,8 @@ public:
     decoder(const options& c, const decode_options& o, model m, output& out)
         : o_(o),
           session_(m, c.node, o.strict ? reading::strict : reading::tolerant),
+          model_(m),
+          address_(c.address),
           picture_(m),
           tty_(isatty(1) != 0),
           out_(out) {
@@ -128,13 +169,12 @@ public:
         ++counts_.frames;
         if (o_.parse_only) return;
         const auto e = session_.step(r.frame);
-        // A 29-bit frame the J1939 codec calls wrong_id: another PGN (not a keypad frame), or,
-        // narrowed by --address, another keypad's.
-        const bool j1939_foreign = !e.decoded && e.cls.fn == canopen::function::j1939 &&
-                                   e.decoded.error() == errc::wrong_id;
-        const bool foreign = j1939_foreign || (!e.decoded && e.decoded.error() == errc::wrong_id &&
-                                               !concerns(e.cls, e.node));
+        const bool j1939_foreign = is_j1939_foreign(e);
+        const bool foreign = is_foreign(e);
         if (e.cls.node != 0 && e.cls.node < 128) ++counts_.per_node[e.cls.node];
+        if (j1939_foreign && address_)  // whose frame it is, decoded for any keypad
+            if (const auto any = decode(r.frame, e.node, model_))
+                if (const auto a = j1939_keypad_of(*any)) ++counts_.per_address[*a];
         if (e.decoded)
             ++counts_.decoded;
         else if (foreign)
@@ -413,8 +453,18 @@ private:
             if (const auto form = form_of(*e.decoded); form != frame_form::manual)
                 j["form"] = std::string(to_string(form));
         }
+        // The same generic keys as the tool's writer, through the same reader of the frame.
+        struct {
+            nlohmann::ordered_json& j;
+            void field(std::string_view k, std::string_view v) {
+                j[std::string(k)] = std::string(v);
+            }
+            void field(std::string_view k, std::uint64_t v) { j[std::string(k)] = v; }
+        } generic{j};
+        write_generic_fields(generic, r.frame, e);
         if (e.sdo != sdo_pairing::none) j["sdo"] = std::string(to_string(e.sdo));
         if (e.upload_done) j["text"] = std::string(session_.text());
+        if (e.upload_error != errc{}) j["upload_error"] = std::string(to_string(e.upload_error));
         if (e.new_node) j["new_node"] = e.new_node->value();
         if (e.new_protocol && !j1939_foreign && e.decoded)
             j["protocol"] = std::string(to_string(*e.new_protocol));
@@ -425,6 +475,8 @@ private:
 
     const decode_options& o_;
     session<256> session_;
+    model model_;
+    j1939::keypad_address address_;
     keypad_picture picture_;
     bool tty_;
     bool shown_ = false;
@@ -460,9 +512,10 @@ model choose_model(const options& o, const std::vector<kept_frame>& log) {
         s.narrow_j1939(o.address);
         for (const auto& r : log) {
             const auto e = s.step(r.frame);
-            // A J1939 frame counts as a CANopen one: the J1939 row of a model refuses a key or
-            // LED it lacks, a frame its manual does not have or no source shows.
-            if (!e.decoded && e.decoded.error() != errc::wrong_id) ++sc.refused;
+            // As the summary counts: a J1939 frame counts as a CANopen one (the J1939 row of a
+            // model refuses a key or LED it lacks, a frame its manual does not have or no source
+            // shows), and a PDO of the keypad's node that the model lacks (wrong_id) is refused.
+            if (!e.decoded && !is_foreign(e)) ++sc.refused;
             if (e.upload_done && sc.named.empty()) {
                 std::string_view t = s.text();
                 if (const auto reported = model_from_report(t); reported && *reported == m)
@@ -577,6 +630,20 @@ void summary(const options& c0, const decode_options& o, const counts& c, model 
         append_hex_h(h, c0.node.value(), 2);
         h += ": try --node ";
         append_hex_h(h, top, 2);
+        report("hint", h, false);
+    }
+    // The same for --address: most frames are J1939 ones of another keypad address.
+    std::size_t top_address = 0;
+    for (std::size_t a = 1; a < c.per_address.size(); ++a)
+        if (c.per_address[a] > c.per_address[top_address]) top_address = a;
+    if (c0.address && c.per_address[top_address] > 0 && keypad * 4 < c.frames &&
+        c.per_address[top_address] * 2 > c.frames) {
+        std::string h = "most J1939 frames are of the keypad at ";
+        append_hex_h(h, top_address, 2);
+        h += ", not of keypad ";
+        append_hex_h(h, *c0.address, 2);
+        h += ": try --address ";
+        append_hex_h(h, top_address, 2);
         report("hint", h, false);
     }
 }

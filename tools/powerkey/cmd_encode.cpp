@@ -215,8 +215,13 @@ int run_encode(const options& o, const encode_options& eo) {
     }
     // Every field held a value of its type, the model refused the message: say which field.
     const std::string kind(kind_of(msg));
-    const auto why = explain_refusal(msg, o.keypad, o.node,
-                                     [&](auto& s) { apply_defaults(s, o.node, eo.broadcast); });
+    if (const auto narrow = narrowing_needed(msg, o.keypad, o.node, o.address); !narrow.empty()) {
+        report("encode", kind + ": " + narrow);
+        return status_input;
+    }
+    const auto why = explain_refusal(
+        msg, o.keypad, o.node, [&](auto& s) { apply_defaults(s, o.node, eo.broadcast); },
+        o.address);
     if (why.kind == refusal::what::not_for_model) {
         report("encode", kind + " is not a message of a " + model_name +
                              " (powerkey list --model " + model_name + " shows its messages)");

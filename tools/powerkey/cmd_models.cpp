@@ -17,7 +17,9 @@ void add_models(registry& r) {
                        "[NAME]",
                        "the models --model takes (with NAME: the model NAME stands for)",
                        {},
-                       model_use::none},
+                       model_use::none,
+                       {},
+                       "the model is its argument: powerkey models NAME"},
                       [] {
                           std::string out;
                           if (!name.empty()) {

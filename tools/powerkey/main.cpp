@@ -15,16 +15,15 @@ namespace {
 
 using tool::model_use;
 
-// "pk1000 (default), pkp2200, ..." wrapped to the usage text's width, from the model table.
-// "pk1000 (default), pkp2200, ..., pkp2400si" wrapped to the usage text's width, from the model
-// table.
-std::string wrapped_models(std::size_t indent, std::size_t first_width) {
+// "pk1000 (default), pkp2200, ..., pkp1600si" wrapped to the usage text's width, from the model
+// table; without "(default)" for a subcommand that needs --model.
+std::string wrapped_models(std::size_t indent, std::size_t first_width, bool with_default) {
     std::string out, line;
     std::size_t width = first_width;
     bool first = true;
     for (const auto m : powerkey::enum_values<powerkey::model>()) {
         std::string word(powerkey::to_string(m));
-        if (first) word += " (default)";
+        if (first && with_default) word += " (default)";
         first = false;
         if (!line.empty() && line.size() + 2 + word.size() > width) {
             out += line + ",\n" + std::string(indent, ' ');
@@ -38,7 +37,7 @@ std::string wrapped_models(std::size_t indent, std::size_t first_width) {
 
 std::string common_options_text(model_use use, std::string_view address = {}) {
     if (use == model_use::none) return {};
-    std::string s = "  --model M    " + wrapped_models(15, 81) +
+    std::string s = "  --model M    " + wrapped_models(15, 81, use != model_use::required) +
                     ";\n               in any case, as the manuals write them (PKP-2400-LI, "
                     "PKP-3500-MT) or as\n               the keypad reports them (PKU2400)";
     if (use == model_use::or_auto) s += "; or auto";
@@ -81,7 +80,8 @@ constexpr std::string_view input_text =
     "  cansend            195#0900000012   195#09.00.00.00.12\n"
     "  candump's screen   can0  195   [5]  09 00 00 00 12   (also -t, -x, -a)\n"
     "  Vector ASC, PEAK TRC 1.x and 2.x, python-can CSV, Vector BLF\n"
-    "  Remote, CAN FD and error frames are counted and skipped, not decoded.\n"
+    "  Remote, CAN FD and error frames are counted, not decoded (convert writes the remote and\n"
+    "  CAN FD ones).\n"
     "\n"
     "Exit status (every subcommand):\n"
     "  0 all input read, nothing wrong found;\n"
@@ -187,8 +187,8 @@ int main(int argc, char** argv) {
     const bool node_given = app.get_option("--node")->count() > 0;
     const bool address_given = app.get_option("--address")->count() > 0;
     if (use == model_use::none && (model_given || node_given || address_given))
-        return tool::usage_error(
-            name + " takes no --model or --node or --address (it reads logs of any bus)");
+        return tool::usage_error(name + " takes no --model or --node or --address (" +
+                                 std::string(chosen->spec.no_model_why) + ")");
     if (model_given) {
         if (use == model_use::or_auto && (model_text == "auto" || model_text == "AUTO")) {
             common.model_auto = true;

@@ -11,6 +11,7 @@
 #include <powerkey/canopen/node_id.hpp>
 #include <powerkey/fields.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/keypad/messages.hpp>
 #include <powerkey/keypad/models.hpp>
 
@@ -18,10 +19,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace tool {
 
@@ -118,9 +121,10 @@ void number_range(const S& from, std::size_t index, std::uint64_t known, std::ui
 // to a number a user would give: 1..64 (a key, a value), or the index of a common object (1000h
 // device type, which CiA 301 makes mandatory; 1008h device name, which every keypad has).
 template <class S>
-bool speaks(const S& defaults, powerkey::model m, powerkey::canopen::node_id node) {
+bool speaks(const S& defaults, powerkey::model m, powerkey::canopen::node_id node,
+            powerkey::j1939::keypad_address address = std::nullopt) {
     const auto encodes = [&](const S& s) {
-        return powerkey::encode(node, m, powerkey::message{s}).has_value();
+        return powerkey::encode(node, m, powerkey::message{s}, address).has_value();
     };
     if (encodes(defaults)) return true;
     std::size_t count = 0;
@@ -138,12 +142,14 @@ bool speaks(const S& defaults, powerkey::model m, powerkey::canopen::node_id nod
 // Why encode(node, m, built) failed. `defaults` is the message as built before any field was
 // given (its kind's defaults). A field is to blame when the message encodes with that field
 // alone changed (back to its default, or to a number 1..64); a kind is not the model's when no
-// such change of its defaults encodes either.
+// such change of its defaults encodes either. `address`: the J1939 keypad encode was narrowed to
+// (the tool's --address), so that the search asks the encode that refused.
 template <class S>
 refusal explain_refusal(const S& built, const S& defaults, powerkey::model m,
-                        powerkey::canopen::node_id node) {
+                        powerkey::canopen::node_id node,
+                        powerkey::j1939::keypad_address address = std::nullopt) {
     const auto encodes = [&](const S& s) {
-        return powerkey::encode(node, m, powerkey::message{s}).has_value();
+        return powerkey::encode(node, m, powerkey::message{s}, address).has_value();
     };
     std::size_t count = 0;
     S names = built;
@@ -229,7 +235,7 @@ refusal explain_refusal(const S& built, const S& defaults, powerkey::model m,
         });
         if (named) return blame(i, false, 0);
     }
-    if (!speaks(defaults, m, node)) return {refusal::what::not_for_model, {}, 0};
+    if (!speaks(defaults, m, node, address)) return {refusal::what::not_for_model, {}, 0};
     return {};
 }
 
@@ -271,15 +277,40 @@ inline std::string refusal_text(const refusal& r, std::string_view given,
     return text;
 }
 
+// An addressed J1939 key contact state whose bytes read as an LED command too (identifier
+// 00h..03h: docs/j1939.md, "Which way a frame goes") encodes only narrowed to its sender: without
+// `address`, the text after "KIND: " that says so (give the source as the address: `--address
+// 21h`, or in Python `address=0x21`), else "".
+inline std::string narrowing_needed(const powerkey::message& msg, powerkey::model m,
+                                    powerkey::canopen::node_id node,
+                                    powerkey::j1939::keypad_address address, bool python = false) {
+    const auto* k = std::get_if<powerkey::j1939::key_contact>(&msg);
+    if (address || !k || !powerkey::encode(node, m, msg, k->source)) return {};
+    std::string s = "addressed to ";
+    append_hex_h(s, k->destination, 2);
+    s += " with identifier ";
+    append_hex_h(s, k->identifier, 2);
+    s += ", its bytes read as an LED command too: give ";
+    if (python) {
+        s += "address=0x";
+        append_hex(s, k->source, 2);
+    } else {
+        s += "--address ";
+        append_hex_h(s, k->source, 2);
+    }
+    return s + " (the keypad's address) to encode it";
+}
+
 // The same for a message of any kind; init(S&) gives a struct of the kind its defaults.
 template <class Init>
 refusal explain_refusal(const powerkey::message& built, powerkey::model m,
-                        powerkey::canopen::node_id node, Init&& init) {
+                        powerkey::canopen::node_id node, Init&& init,
+                        powerkey::j1939::keypad_address address = std::nullopt) {
     return powerkey::visit_message(built, [&](const auto& s) -> refusal {
         using S = std::remove_cvref_t<decltype(s)>;
         S d{};
         init(d);
-        return explain_refusal(s, d, m, node);
+        return explain_refusal(s, d, m, node, address);
     });
 }
 
