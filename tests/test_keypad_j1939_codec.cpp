@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -457,6 +458,19 @@ TEST_CASE("j1939: every example of the PKP2600SI J1939 manual both ways") {
 TEST_CASE("j1939: the other models' frames (reference, inferred where marked)") {
     check_rows(other_rows, round_trips);
 }
+
+// The keypad a message is of: what the keypad sends names it as its source, what it is sent as its
+// destination; every manual row's is the keypad's address when the frame was sent.
+constexpr bool names_its_keypad(std::span<const j1939_rows::row> rows) {
+    for (const auto& r : rows)
+        if (std::visit([](const auto& v) { return keypad_address_of(v); }, r.expected) != r.keypad)
+            return false;
+    return true;
+}
+static_assert(names_its_keypad(pkp1600si_rows) && names_its_keypad(pkp2600si_rows) &&
+              names_its_keypad(other_rows));
+static_assert(sent_by_keypad<key_contact> && sent_by_keypad<address_claimed> &&
+              !sent_by_keypad<set_led> && !sent_by_keypad<switch_to_canopen>);
 
 TEST_CASE("j1939: the decoder's refusals") { check_rows(error_rows, refused); }
 

@@ -105,28 +105,20 @@ bool is_j1939_foreign(const Event& e) {
            e.decoded.error() == errc::wrong_id;
 }
 
-// A frame that is none of the keypad's: the J1939 ones above, and wrong_id on a COB-ID that does
-// not concern the keypad's node (another node's, or no keypad function). Every other frame the
-// decoder refuses is a refused keypad frame: the summary and --model auto count the same ones.
-// The keypad a J1939 message concerns: the sender of a keypad's own frame, the destination of a
-// command to one; nullopt for a CANopen message.
+// The keypad a J1939 message concerns (j1939::keypad_address_of); nullopt for a CANopen message.
 std::optional<std::uint8_t> j1939_keypad_of(const message& msg) {
     return visit_message(msg, [](const auto& s) -> std::optional<std::uint8_t> {
         using S = std::remove_cvref_t<decltype(s)>;
-        namespace j = powerkey::j1939;
-        if constexpr (std::is_same_v<S, j::key_contact> || std::is_same_v<S, j::heartbeat> ||
-                      std::is_same_v<S, j::software_revision> || std::is_same_v<S, j::led_ack> ||
-                      std::is_same_v<S, j::led_ack_code> || std::is_same_v<S, j::address_claimed>)
-            return s.source;
-        else if constexpr (std::is_same_v<S, j::set_led> || std::is_same_v<S, j::set_led_code> ||
-                           std::is_same_v<S, j::multiple_leds> || std::is_same_v<S, j::command> ||
-                           std::is_same_v<S, j::switch_to_canopen>)
-            return s.destination;
+        if constexpr (powerkey::j1939::message_alternative<S>)
+            return powerkey::j1939::keypad_address_of(s);
         else
             return std::nullopt;
     });
 }
 
+// A frame that is none of the keypad's: the J1939 ones above, and wrong_id on a COB-ID that does
+// not concern the keypad's node (another node's, or no keypad function). Every other frame the
+// decoder refuses is a refused keypad frame: the summary and --model auto count the same ones.
 template <class Event>
 bool is_foreign(const Event& e) {
     return is_j1939_foreign(e) ||

@@ -181,9 +181,7 @@ private:
                               seen at) noexcept {
         namespace j = j1939;
         const std::uint32_t line = at.line;
-        if constexpr (std::is_same_v<T, j::key_contact> || std::is_same_v<T, j::heartbeat> ||
-                      std::is_same_v<T, j::software_revision> || std::is_same_v<T, j::led_ack> ||
-                      std::is_same_v<T, j::led_ack_code> || std::is_same_v<T, j::address_claimed>) {
+        if constexpr (j::sent_by_keypad<T>) {
             hold(v.source);  // a keypad is there
             if constexpr (std::is_same_v<T, j::address_claimed>) {
                 claim(v, id, r, line);

@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 namespace powerkey::j1939 {
@@ -388,6 +389,22 @@ struct command {
 using message =
     std::variant<key_contact, heartbeat, software_revision, led_ack, led_ack_code, address_claimed,
                  set_led, set_led_code, multiple_leds, command, switch_to_canopen>;
+
+// Whether the keypad sends T (the first six alternatives) rather than is sent it.
+template <class T>
+inline constexpr bool sent_by_keypad =
+    std::is_same_v<T, key_contact> || std::is_same_v<T, heartbeat> ||
+    std::is_same_v<T, software_revision> || std::is_same_v<T, led_ack> ||
+    std::is_same_v<T, led_ack_code> || std::is_same_v<T, address_claimed>;
+// The address of the keypad a message is of: the source of what it sends, the destination of
+// what it is sent.
+template <class T>
+constexpr std::uint8_t keypad_address_of(const T& v) noexcept {
+    if constexpr (sent_by_keypad<T>)
+        return v.source;
+    else
+        return v.destination;
+}
 
 }  // namespace powerkey::j1939
 
