@@ -96,9 +96,10 @@ tail -1 "$tmp/err" | grep -qx "powerkey: hint: most J1939 frames are of the keyp
   fail "--address 30h on 21h's log, the hint: $(cat "$tmp/err")"
 "$pk" decode --model pkp1600si --address 22h "$tmp/two.log" > /dev/null 2> "$tmp/err"
 grep -q "hint" "$tmp/err" && fail "--address 22h, a third of the frames its own: no hint: $(cat "$tmp/err")"
-for bad in FEh 0x100 x; do
+# 70h's range: 00h is the controllers', FEh the null address; a usage error in every subcommand.
+for bad in 00h FEh 0x100 x; do
   "$pk" decode --address "$bad" "$tmp/two.log" > /dev/null 2> "$tmp/err"; rc=$?
-  [ $rc -eq 2 ] && grep -q "^powerkey: --address: expected a J1939 keypad address 00h..FDh" "$tmp/err" ||
+  [ $rc -eq 2 ] && grep -q "^powerkey: --address: expected a keypad's J1939 address 01h..FDh (70h's range" "$tmp/err" ||
     fail "--address $bad: status $rc $(cat "$tmp/err")"
 done
 
@@ -119,11 +120,28 @@ grep -qx "powerkey: encode: j1939_key_contact: addressed to 00h with identifier 
 "$pk" encode --model pkp1600si --address 21h j1939_key_contact key=2 pressed=no identifier=1 \
   destination=00h > "$tmp/out" || fail "narrowed key contact: status $?"
 grep -qx '18EF0021#041B01020001FFFF' "$tmp/out" || fail "narrowed key contact: $(cat "$tmp/out")"
-# A message refused under --address is explained under it too: a command to 21h (the default
-# destination) is not one to the keypad at 22h, and the field to blame is its destination.
-"$pk" encode --model pkp2600si --address 22h j1939_set_led key=3 colour=red mode=on 2> "$tmp/err"
-grep -qx "powerkey: encode: j1939_set_led: destination: its value is less than a pkp2600si takes (22h..22h)" "$tmp/err" ||
+# encode --address A: a J1939 message is of the keypad at A unless a field says otherwise (its
+# source when the keypad sends it, its destination when it is sent it); a field that names another
+# keypad is refused, and the field to blame is named.
+"$pk" encode --model pkp2600si --address 22h j1939_set_led key=3 colour=red mode=on > "$tmp/out" ||
+  fail "set_led under --address 22h: status $?"
+[ "$(cat "$tmp/out")" = "18EF2200#041B0103010100FF" ] || fail "set_led under --address 22h: $(cat "$tmp/out")"
+"$pk" encode --model pkp2600si --address 30h j1939_key_contact key=2 pressed=1 > "$tmp/out" ||
+  fail "key contact under --address 30h: status $?"
+[ "$(cat "$tmp/out")" = "18EFFF30#041B01020121FFFF" ] || fail "key contact under --address 30h: $(cat "$tmp/out")"
+"$pk" encode --model pkp2600si --address 22h j1939_set_led key=3 colour=red mode=on destination=21h 2> "$tmp/err"
+grep -qx "powerkey: encode: j1939_set_led: destination: '21h' is less than a pkp2600si takes (22h..22h)" "$tmp/err" ||
   fail "refusal under --address: $(cat "$tmp/err")"
+# list and export dbc show the keypad at --address.
+"$pk" list --model pkp2600si --address 30h > "$tmp/out"
+grep -q "^j1939_key_contact priority=6 destination=FFh source=30h " "$tmp/out" &&
+  grep -q "^j1939_set_led priority=6 destination=30h source=00h " "$tmp/out" ||
+  fail "list --address 30h: $(grep j1939_ "$tmp/out" | head -3)"
+"$pk" export dbc --model pkp2600si --address 30h > "$tmp/out"
+# 18EF3000h and 18EFFF30h with the extended flag (bit 31) of a DBC identifier
+grep -q "^BO_ $((0x98EF3000)) j1939_to_keypad: 8 controller" "$tmp/out" &&
+  grep -q "^BO_ $((0x98EFFF30)) j1939_from_keypad: 8 keypad" "$tmp/out" ||
+  fail "export dbc --address 30h: $(grep '^BO_ .*j1939' "$tmp/out")"
 
 # list: the J1939 messages a model has (the multiple-LED command only where a manual gives it).
 "$pk" list --model pkp1600si > "$tmp/out"

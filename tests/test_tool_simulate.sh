@@ -171,7 +171,7 @@ grep -q "^powerkey: --address: the J1939 address the keypad starts at, with --j1
   fail "--address without --j1939: $(cat "$tmp/err")"
 sim --model pkp2400 --j1939 --address 0 < /dev/null > /dev/null 2> "$tmp/err"; [ $? -eq 2 ] ||
   fail "--address 0: exit status not 2"
-grep -q "^powerkey: --address: a keypad's J1939 address is 01h..FDh (70h's range), not 00h" "$tmp/err" ||
+grep -q "^powerkey: --address: expected a keypad's J1939 address 01h..FDh (70h's range: 0x21, 21h or 33), got '0'" "$tmp/err" ||
   fail "--address 0: $(cat "$tmp/err")"
 sim --model pkp2400 --j1939 --address 0xFE < /dev/null > /dev/null 2>&1; [ $? -eq 2 ] ||
   fail "--address 0xFE: exit status not 2"

@@ -47,7 +47,7 @@ def decode(msg_or_id, data=None, *, model, node=DEFAULT_NODE, extended=None, add
     msg_or_id is a can.Message (or anything with arbitration_id, data, is_extended_id), or an
     identifier with `data` the bytes; `extended` defaults to id > 7FFh. `node` is a number or
     the tool's text ("15h", "0x15"). An extended frame is a J1939 one (kinds "j1939_..."), of
-    any keypad address, or of the keypad at `address` (0..0xFD, or the tool's text "21h") only.
+    any keypad address, or of the keypad at `address` (1..0xFD, 70h's range, or the tool's text "21h") only.
     Raises DecodeError whose `code` is the library's errc ("wrong_id", "reserved_not_zero", ...);
     a remote, CAN FD or error frame is "unexpected_frame".
     """

@@ -194,10 +194,11 @@ std::uint8_t address_arg(py::handle o, const char* what, std::uint64_t lo) {
     return static_cast<std::uint8_t>(int_arg(o, what, lo, 0xFD));
 }
 
-// A J1939 keypad address (00h..FDh), or None for any: the J1939 frames narrowed to that keypad.
+// A J1939 keypad address (01h..FDh, 70h's range: 00h is the controllers'), or None for any: the
+// J1939 frames narrowed to that keypad.
 j1939::keypad_address address_from_py(py::handle o) {
     if (o.is_none()) return std::nullopt;
-    return address_arg(o, "address", 0);
+    return address_arg(o, "address", 1);
 }
 
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {

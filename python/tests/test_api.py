@@ -283,10 +283,12 @@ def test_j1939_address_narrows_and_other_pgns_are_not_keypad_frames():
     # As node: the tool's text of --address, "21h", "0x21" or "33".
     for text in ("21h", "0x21", "33"):
         assert powerkey.decode(*key, model="pkp1600si", address=text).kind == "j1939_key_contact"
-    for text in ("FEh", "nope", ""):
+    for text in ("FEh", "00h", "nope", ""):
         with pytest.raises(powerkey.ArgumentError) as e:
             powerkey.decode(*key, model="pkp1600si", address=text)
-        assert "00h..FDh" in str(e.value)
+        assert "01h..FDh" in str(e.value)
+    with pytest.raises(powerkey.ArgumentError):  # 70h's range: 00h is the controllers'
+        powerkey.decode(*key, model="pkp1600si", address=0)
 
 
 def test_j1939_identifier_sent_as_standard_names_the_range():

@@ -31,11 +31,11 @@ struct encode_options {
 // of an SDO value follow its object, which is set first. Returns false for an unknown kind.
 template <class Get>
 bool build_any(std::string_view kind, canopen::node_id node, bool broadcast, Get&& get,
-               message& out, std::string& error) {
+               message& out, std::string& error, j1939::keypad_address address = std::nullopt) {
     return for_each_alternative<message>([&]<class S>(std::type_identity<S>) {
         if (S::kind != kind) return false;
         S s{};
-        apply_defaults(s, node, broadcast);
+        apply_defaults(s, node, broadcast, address);
         // Every field is looked at (so that each one given is known), the first error kept.
         S::fields(s, [&](std::string_view name, auto& value) {
             const auto e = get(name, value);
@@ -194,7 +194,7 @@ int run_encode(const options& o, const encode_options& eo) {
     const std::string model_name(to_string(o.keypad));
     message msg;
     std::string error;
-    if (!build_any(name, o.node, eo.broadcast, get, msg, error))
+    if (!build_any(name, o.node, eo.broadcast, get, msg, error, o.address))
         return usage_error("encode: no message '" + escape(eo.args[0], 40) + "' for " + model_name +
                                " (powerkey list --model " + model_name + " shows them)",
                            false);
@@ -220,7 +220,7 @@ int run_encode(const options& o, const encode_options& eo) {
         return status_input;
     }
     const auto why = explain_refusal(
-        msg, o.keypad, o.node, [&](auto& s) { apply_defaults(s, o.node, eo.broadcast); },
+        msg, o.keypad, o.node, [&](auto& s) { apply_defaults(s, o.node, eo.broadcast, o.address); },
         o.address);
     if (why.kind == refusal::what::not_for_model) {
         report("encode", kind + " is not a message of a " + model_name +
@@ -291,12 +291,15 @@ void add_encode(registry& r) {
     static encode_options o;
     auto& sub = r.add(
         {"encode",
-         "[--model M] [--node N] [--broadcast] MESSAGE [FIELD=VALUE...]\n"
-         "--json [--model M] [--node N] [FILE...]",
+         "[--model M] [--node N] [--address A] [--broadcast] MESSAGE [FIELD=VALUE...]\n"
+         "--json [--model M] [--node N] [--address A] [FILE...]",
          "a frame from a message and its fields, or the frames of decode --json lines",
          "  --json       read decode --json lines (with --node N the frames are re-targeted to\n"
          "               node N)\n"
-         "  --broadcast  an NMT command for every node (target 0) instead of --node\n"},
+         "  --broadcast  an NMT command for every node (target 0) instead of --node\n",
+         model_use::optional,
+         "the keypad's J1939 address (01h..FDh): a J1939 message's source or destination\n"
+         "               when not given as a field, and the keypad its frame is read back as"},
         [&r] {
             if (o.json && o.broadcast) return usage_error("--broadcast is not an option of --json");
             return o.json ? run_encode_json(r.common(), o) : run_encode(r.common(), o);

@@ -20,9 +20,9 @@ void list_kinds(const options& o) {
     std::string out;
     powerkey::for_each_alternative<powerkey::message>([&]<class S>(std::type_identity<S>) {
         S s{};
-        apply_defaults(s, o.node);
+        apply_defaults(s, o.node, false, o.address);
         const powerkey::message m{s};
-        if (!speaks(s, o.keypad, o.node)) return false;
+        if (!speaks(s, o.keypad, o.node, o.address)) return false;
         out += S::kind;
         // The values exactly as decode's text prints them (describe), quoted when they hold a
         // space.
@@ -43,9 +43,12 @@ void list_kinds(const options& o) {
 
 void add_list(registry& r) {
     r.add({"list",
-           "[--model M] [--node N]",
+           "[--model M] [--node N] [--address A]",
            "every message of a model, with its fields as encode fills them",
-           {}},
+           {},
+           model_use::optional,
+           "the J1939 messages of the keypad at A (its frames' source, its commands' "
+           "destination)"},
           [&r] {
               list_kinds(r.common());
               return status_ok;

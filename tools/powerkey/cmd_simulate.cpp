@@ -104,14 +104,8 @@ int run_simulate(const options& c, const simulate_options& o) {
             "--address: the J1939 address the keypad starts at, with --j1939 only (without it "
             "the keypad starts in CANopen; a log's 20FFh switches it to J1939 at 21h)");
     std::optional<behaviour::j1939_source_address> address;
-    if (c.address) {  // main.cpp refuses FEh and FFh; 00h is the controllers', 70h refuses it
-        const auto a = behaviour::j1939_source_address::make(*c.address);
-        if (!a.has_value())
-            return usage_error(
-                "--address: a keypad's J1939 address is 01h..FDh (70h's range), "
-                "not 00h");
-        address = *a;
-    }
+    if (c.address)  // main.cpp took 01h..FDh, 70h's range
+        address = behaviour::j1939_source_address::make(*c.address).value();
     for (const auto* list : {&o.press, &o.release}) {
         for (const auto& text : *list) {
             const auto colon = text.find(':');

@@ -10,6 +10,7 @@
 #include <powerkey/describe.hpp>
 #include <powerkey/fields.hpp>
 #include <powerkey/keypad/codec.hpp>
+#include <powerkey/keypad/j1939_codec.hpp>
 #include <powerkey/keypad/models.hpp>
 #include <powerkey/names.hpp>
 
@@ -136,12 +137,22 @@ inline std::vector<std::pair<std::string, std::string>> described_fields(
 }
 
 // Defaults that depend on the command line: an NMT command goes to --node, not to every node on
-// the bus, unless --broadcast (or target=0) says so.
+// the bus, unless --broadcast (or target=0) says so; a J1939 message is of the keypad at
+// --address, when given (the source of what the keypad sends, the destination of what it is
+// sent: j1939::keypad_address_of).
 template <class S>
-void apply_defaults(S& s, powerkey::canopen::node_id node, bool broadcast = false) {
+void apply_defaults(S& s, powerkey::canopen::node_id node, bool broadcast = false,
+                    powerkey::j1939::keypad_address address = std::nullopt) {
     S::fields(s, [&](std::string_view name, auto& value) {
         if (name == "target") (void)set_from_number(value, broadcast ? 0u : node.value(), name);
     });
+    if constexpr (powerkey::j1939::message_alternative<S>) {
+        if (!address) return;
+        if constexpr (powerkey::j1939::sent_by_keypad<S>)
+            s.source = *address;
+        else
+            s.destination = *address;
+    }
 }
 
 }  // namespace tool

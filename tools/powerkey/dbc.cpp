@@ -166,17 +166,24 @@ static_assert(sources_once(), "at most one row of source_table per model");
 struct context {
     model id;
     node_id node;
-    model_info info;          // the row: names, dictionary, stride, which PDOs
-    std::string name;         // "pkp2400"
-    std::string manual_name;  // "PKP-2400-LI"
-    std::string manual;       // the document: "PKP manual"
+    std::uint8_t j1939_address;  // the keypad's J1939 address
+    model_info info;             // the row: names, dictionary, stride, which PDOs
+    std::string name;            // "pkp2400"
+    std::string manual_name;     // "PKP-2400-LI"
+    std::string manual;          // the document: "PKP manual"
     sources src;
 };
 
-context context_of(model m, node_id node) {
+context context_of(model m, node_id node, std::uint8_t j1939_address) {
     const model_info row = *info(m);
-    context c{
-        m, node, row, std::string(row.name), std::string(row.manual), "", {.id = m, .manual = {}}};
+    context c{m,
+              node,
+              j1939_address,
+              row,
+              std::string(row.name),
+              std::string(row.manual),
+              "",
+              {.id = m, .manual = {}}};
     for (const auto& s : source_table)
         if (s.id == m) c.src = s;
     c.manual =
@@ -989,7 +996,7 @@ void add_j1939_mux(const context& c, message& m, const can::frame& f, std::strin
 void add_j1939(const context& c, database& db) {
     const auto row = j1939::row(c.id).value();
     using j1939::feature;
-    const auto keypad_address = j1939::keypad_default_address;
+    const auto keypad_address = c.j1939_address;
     const auto sender = j1939::set_led{}.source;  // the manuals' controller address, 00h
     auto from = new_j1939_message(
         c, j1939::global_address, keypad_address, "j1939_from_keypad", keypad_node,
@@ -1081,8 +1088,8 @@ void add_j1939(const context& c, database& db) {
 
 }  // namespace
 
-database describe(model m, node_id node) {
-    const context c = context_of(m, node);
+database describe(model m, node_id node, std::uint8_t j1939_address) {
+    const context c = context_of(m, node, j1939_address);
     database db;
     db.name = c.name + "_" + hex_h(node.value(), 2);
     db.keypad_comment = "Blink Marine " + c.manual_name + " (powerkey model " + c.name +

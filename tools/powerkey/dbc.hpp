@@ -13,6 +13,7 @@
 #define POWERKEY_TOOL_DBC_HPP
 
 #include <powerkey/canopen/node_id.hpp>
+#include <powerkey/j1939/protocol_switch.hpp>
 #include <powerkey/keypad/models.hpp>
 
 #include <cstdint>
@@ -71,8 +72,10 @@ inline constexpr std::string_view controller_node = "controller";
 // makes none.
 inline constexpr std::size_t name_limit = 32;
 
-// The DBC of a keypad of model m at node id `node`. m must be a model of the table.
-database describe(powerkey::model m, powerkey::canopen::node_id node);
+// The DBC of a keypad of model m at node id `node`, and in J1939 at `j1939_address` (01h..FDh).
+// m must be a model of the table.
+database describe(powerkey::model m, powerkey::canopen::node_id node,
+                  std::uint8_t j1939_address = powerkey::j1939::keypad_default_address);
 
 // The database in the DBC format: deterministic (the same bytes for the same model and node).
 std::string text(const database& db);

@@ -45,7 +45,7 @@ std::string common_options_text(model_use use, std::string_view address = {}) {
     s += "\n  --node N     the keypad's node id 1..127: 0x15 (default), 15h or 21\n";
     s += "  --address A  " +
          (address.empty()
-              ? std::string("J1939 frames of the keypad at address A only (00h..FDh; default any)")
+              ? std::string("J1939 frames of the keypad at address A only (01h..FDh; default any)")
               : std::string(address)) +
          "\n";
     return s;
@@ -215,10 +215,12 @@ int main(int argc, char** argv) {
     }
     if (address_given) {
         std::uint64_t a = 0;
-        // FEh is J1939's null address and FFh the global one: no keypad holds either.
-        if (!tool::parse_number(address_text, a) || a > 0xFD)
+        // 70h's range: 00h is the controllers' (the manuals' sender), FEh J1939's null address
+        // and FFh the global one; no keypad holds them.
+        if (!tool::parse_number(address_text, a) || a < 1 || a > 0xFD)
             return tool::usage_error(
-                "--address: expected a J1939 keypad address 00h..FDh (0x21, 21h or 33), got '" +
+                "--address: expected a keypad's J1939 address 01h..FDh (70h's range: 0x21, 21h "
+                "or 33), got '" +
                 tool::escape(address_text, 32) + "'");
         common.address = static_cast<std::uint8_t>(a);
     }
