@@ -174,6 +174,22 @@ FAULTS = [
         "status": 1,
     },
     {
+        "name": "j1939-bad-source",
+        "model": "pkp2600si",
+        "what": "a controller that sends its J1939 commands from the global address FFh and the "
+                "null address FEh (J1939-81: no sender's); then from 00h, as the manuals do",
+        "frames": [
+            (0, "18EF21FF#041B0220FFFFFFFF"),
+            (10, "18EF21FE#041B0310FFFFFFFF"),
+            (20, "18EF2100#041B0220FFFFFFFF"),
+        ],
+        "expected": [
+            "1: j1939_bad_source: J1939 frame 18EF21FFh is sent from FFh, the global address, which is no sender's (J1939-81)",
+            "2: j1939_bad_source: J1939 frame 18EF21FEh is sent from FEh, the null address, which sends only the address claim of a device that cannot claim one (J1939-81)",
+        ],
+        "status": 1,
+    },
+    {
         "name": "j1939-refused",
         "model": "pkp2600si",
         "what": "J1939 frames to the keypad that the decoder refuses: LED 13 of a 12-key keypad, "

@@ -336,6 +336,18 @@ TEST_CASE("checker: one small log per problem kind") {
           {60, "18EEFF21#3F426F1A00823CC0"}},
          {{3, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 2}},
           {7, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 3}}}},
+        {"J1939: keypad frames from the null address FEh and the global address FFh (J1939-81: no "
+         "sender's); an address claim from FEh (cannot claim) is fine; a frame with another "
+         "problem says that one",
+         model::pkp2600si,
+         {{0, "18EFFFFE#041B01010121FFFF"},
+          {10, "18EF21FF#041B0220FFFFFFFF"},
+          {20, "18EEFFFE#3F426F1A00823CC0"},
+          {30, "18EF2100#041B0220FFFFFFFF"},
+          {40, "18EF30FF#041B0220FFFFFFFF"}},
+         {{1, pk::j1939_bad_source, {0x18EFFFFE, 0xFE, 0}},
+          {2, pk::j1939_bad_source, {0x18EF21FF, 0xFF, 0}},
+          {5, pk::j1939_no_keypad, {0x18EF30FF, 0x30, 0x21}}}},
         {"J1939: a command the model's manual does not have (37h on a PKP-2200-SI) is refused",
          model::pkp2200si,
          {{0, "18EF2100#041B3702FFFFFFFF"}, {10, "18EF2100#041B021FFFFFFFFF"}},
@@ -356,8 +368,8 @@ TEST_CASE("checker: every problem kind has a test row and a name") {
         CHECK(!summary_of(k).empty());
         CHECK(problem_kinds[static_cast<std::size_t>(k)].kind == k);
     }
-    CHECK(enum_values<problem_kind>().size() == 16);
-    CHECK(problem_kind_count == 16);
+    CHECK(enum_values<problem_kind>().size() == 17);
+    CHECK(problem_kind_count == 17);
 }
 
 TEST_CASE("checker: severities: only frames not in the manual's form are warnings") {
@@ -512,6 +524,12 @@ TEST_CASE("checker: explanations") {
         {{3, pk::j1939_address_conflict, {0x18EEFF21, 0x21, 2}},
          "J1939 frame 18EEFF21h claims address 21h, which line 2 claimed with another NAME: two "
          "devices want one address"},
+        {{1, pk::j1939_bad_source, {0x18EFFFFE, 0xFE, 0}},
+         "J1939 frame 18EFFFFEh is sent from FEh, the null address, which sends only the address "
+         "claim of a device that cannot claim one (J1939-81)"},
+        {{2, pk::j1939_bad_source, {0x18EF21FF, 0xFF, 0}},
+         "J1939 frame 18EF21FFh is sent from FFh, the global address, which is no sender's "
+         "(J1939-81)"},
     };
     for (const auto& r : rows) {
         std::array<char, 160> buf{};

@@ -373,6 +373,13 @@ constexpr j1939_step claim_then_move[] = {
     {"18EEFF21#3F426F1A00823CC0", errc::wrong_id, 0x31, 0, co},
 };
 static_assert(walks(model::pkp2600si, std::nullopt, claim_then_move));
+// A claim from the null address FEh (a device that could claim no address, J1939-81) moves
+// nothing: the keypad's commands still go to 21h.
+constexpr j1939_step cannot_claim[] = {
+    {"18EEFFFE#3F426F1A00823CC0", errc{}, 0x21, 0, co},
+    {"18EF2100#041B7024FFFFFFFF", errc{}, 0x24, 0x24, co},
+};
+static_assert(walks(model::pkp2600si, std::nullopt, cannot_claim));
 constexpr j1939_step narrowed_elsewhere[] = {
     {"18EEFF21#3F426F1A00823CC0", errc::wrong_id, 0x22, 0, co},
     {"18EF2100#041B7024FFFFFFFF", errc::wrong_id, 0x22, 0, co},
@@ -388,6 +395,7 @@ TEST_CASE("the session follows the keypad's J1939 address across the switch") {
     CHECK(walks(model::pkp1600si, std::nullopt, pkp1600si_moves));
     CHECK(walks(model::pkp2600si, std::nullopt, claimed_elsewhere));
     CHECK(walks(model::pkp2600si, std::nullopt, claim_then_move));
+    CHECK(walks(model::pkp2600si, std::nullopt, cannot_claim));
     CHECK(walks(model::pkp2600si, std::uint8_t{0x22}, narrowed_elsewhere));
     session<> s(model::pkp2600si, canopen::default_node_id);
     CHECK(s.j1939_address() == 0x21);

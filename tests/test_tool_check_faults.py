@@ -132,7 +132,7 @@ def junit():
             names = [c.name for c in cases if c.name != "input"]
             if kinds is None:
                 kinds = names
-            if names != kinds or len(kinds) != 16:
+            if names != kinds or len(kinds) != 17:
                 fail("junit %s: test cases %s" % (path, names))
             props = {p.name: p.value for p in suite.properties()}
             if props.get("model") != "pk1000" or props.get("node") != "15h":

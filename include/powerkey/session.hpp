@@ -235,8 +235,9 @@ private:
             }
         } else if (const auto* a = std::get_if<j1939::address_claimed>(&msg)) {
             // Narrowed, only the keypad's own claim decodes; otherwise a claim says where the
-            // keypad is (the NAME is the same placeholder on every keypad: docs/j1939.md).
-            if (a->source != address_) {
+            // keypad is (the NAME is the same placeholder on every keypad: docs/j1939.md), but
+            // for one from the null address FEh: a device that could claim none.
+            if (a->source != address_ && a->source != j1939::null_address) {
                 address_ = a->source;
                 e.new_address = address_;
             }

@@ -80,7 +80,9 @@ enum class severity : std::uint8_t { POWERKEY_BEHAVIOUR_SEVERITY_LIST(POWERKEY_D
     X(j1939_no_keypad, problem, "a J1939 command to an address no keypad holds", \
       "") /* detail: identifier, destination, the keypad's address */ \
     X(j1939_address_conflict, problem, "two J1939 address claims of one address with different NAMEs", \
-      "") /* detail: identifier, the address, line of the other claim */
+      "") /* detail: identifier, the address, line of the other claim */ \
+    X(j1939_bad_source, problem, "a J1939 keypad frame from the global address FFh, or from the null address FEh other than an address claim", \
+      "") /* detail: identifier, the source address, 0 */
 // clang-format on
 #define POWERKEY_BEHAVIOUR_DETAIL_KIND_ENUMERATOR(name, ...) name,
 enum class problem_kind : std::uint8_t {
@@ -117,7 +119,8 @@ constexpr problem_kind j1939_kind(j1939_fault f) noexcept {
 static_assert(j1939_kind(j1939_fault::multiple_leds_off) == problem_kind::j1939_multiple_leds_off &&
               j1939_kind(j1939_fault::no_keypad) == problem_kind::j1939_no_keypad &&
               j1939_kind(j1939_fault::address_conflict) == problem_kind::j1939_address_conflict &&
-              problem_kind_count == j1939_kind_offset + 4);
+              j1939_kind(j1939_fault::bad_source) == problem_kind::j1939_bad_source &&
+              problem_kind_count == j1939_kind_offset + 5);
 }  // namespace detail
 
 [[nodiscard]] constexpr severity severity_of(problem_kind k) noexcept {

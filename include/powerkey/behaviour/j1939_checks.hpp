@@ -9,7 +9,9 @@
 //   - no_keypad: a command to an address no keypad holds: not the followed keypad's (the
 //     session's, which a 70h moves), nor any address a keypad frame came from;
 //   - address_conflict: an address claim (EE00h, section 20) for an address another NAME
-//     claimed earlier in the log.
+//     claimed earlier in the log;
+//   - bad_source: a frame on a keypad PGN from the global address FFh, or from the null address
+//     FEh other than an address claim (J1939-81: neither is a sender's address).
 // It also times the followed keypad's periodic frames (the heartbeat while 75h enables it, the
 // key contact state while 71h does), which checker.hpp reports as heartbeat_silence and
 // key_state_silence.
@@ -39,7 +41,8 @@ enum class j1939_fault : std::uint8_t {
     bad_header,
     multiple_leds_off,
     no_keypad,
-    address_conflict
+    address_conflict,
+    bad_source
 };
 
 // A fault and its detail, as checker.hpp's problem carries it:
@@ -47,6 +50,7 @@ enum class j1939_fault : std::uint8_t {
 //   multiple_leds_off  identifier, line of the 37h that turned it off (0: the default), 0
 //   no_keypad          identifier, the destination, the followed keypad's address
 //   address_conflict   identifier, the address, line of the other NAME's claim
+//   bad_source         identifier, the source address, 0
 struct j1939_finding {
     j1939_fault fault;
     std::array<std::uint32_t, 3> detail{};
@@ -94,6 +98,10 @@ public:
                     {f.raw_id(), (std::uint32_t{f[0]} << 16) | (std::uint32_t{f[1]} << 8) | f[2],
                      0}};
         }
+        if (!r.finding && (id->source == j1939::global_address ||
+                           (id->source == j1939::null_address &&
+                            id->pgn.value() != j1939::address_claim_pgn.value())))
+            r.finding = j1939_finding{j1939_fault::bad_source, {f.raw_id(), id->source, 0}};
         if (e.new_address) {  // a 70h leaves the old address; a claim only adds one
             if (e.decoded && std::holds_alternative<j1939::command>(*e.decoded)) release(before);
             hold(after);
@@ -138,7 +146,7 @@ private:
     // `claims_.size()` addresses are kept, the oldest given up for a new one.
     constexpr void claim(const j1939::address_claimed& v, std::uint32_t id, j1939_reading& r,
                          std::uint32_t line) noexcept {
-        if (v.source == 0xFE) return;
+        if (v.source == j1939::null_address) return;
         const std::uint64_t name = j1939::pack_name(v.name);
         for (std::size_t i = 0; i < claimed_; ++i) {
             claim_row& c = claims_[i];
@@ -279,6 +287,14 @@ constexpr void explain_j1939(j1939_fault fault, const std::array<std::uint32_t, 
             w.put("h, which line ");
             w.put_decimal(d[2]);
             w.put(" claimed with another NAME: two devices want one address");
+            break;
+        case j1939_fault::bad_source:
+            w.put(" is sent from ");
+            w.put_hex(d[1], 2);
+            w.put(d[1] == j1939::global_address
+                      ? "h, the global address, which is no sender's (J1939-81)"
+                      : "h, the null address, which sends only the address claim of a device "
+                        "that cannot claim one (J1939-81)");
             break;
     }
 }

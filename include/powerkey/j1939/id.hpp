@@ -21,8 +21,10 @@ using priority = bounded<priority_tag, std::uint8_t, 0, 7>;
 // Parameter group number, 18 bits: EDP, DP, PF, PS.
 using pgn = bounded<pgn_tag, std::uint32_t, 0, 0x3FFFF>;
 
-// Address FFh is the global (broadcast) address.
+// Address FFh is the global (broadcast) address; FEh the null address, the sender of an address
+// claim that says it cannot claim one (J1939-81), and no other frame's.
 inline constexpr std::uint8_t global_address = 0xFF;
+inline constexpr std::uint8_t null_address = 0xFE;
 
 struct identifier {
     j1939::priority priority = 6;
