@@ -4,6 +4,9 @@
 #   bash scripts/run.sh              the PK1000 log
 #   bash scripts/run.sh pkp3500mt    another model: any name --model takes (PKP-3500-MT too);
 #                                    `powerkey models` lists them
+#   bash scripts/run.sh j1939-pkp2600si   a J1939 log (j1939-pkp1600si too), or the log that
+#   bash scripts/run.sh switch-pkp2600si  crosses the switch both ways: examples/logs/NAME.log
+#                                         under the model its name ends with
 # JOBS=N sets the build's parallel jobs (default: every processor).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -37,7 +40,14 @@ cmake -S . -B build/run -DCMAKE_BUILD_TYPE=Release -DPOWERKEY_BUILD_TESTS=OFF \
 echo "run.sh: building the powerkey tool in build/run (a few minutes the first time)"
 cmake --build build/run --target powerkey_tool --parallel "${JOBS:-$(nproc)}"
 pk=./build/run/tools/powerkey/powerkey
+# The J1939 and switch logs: examples/logs/NAME.log, of the model after the prefix.
+log=""
+case "$name" in
+  j1939-* | switch-*) log=examples/logs/$name.log; name=${name#*-} ;;
+esac
 # The model's own name, as the tool reads --model (its error lists the models).
 model=$("$pk" models "$name") || exit 2
-echo "\$ powerkey decode --model $model examples/logs/$model.log"
-"$pk" decode --model "$model" "examples/logs/$model.log"
+log=${log:-examples/logs/$model.log}
+[ -f "$log" ] || { echo "run.sh: no sample log $log (ls examples/logs)" >&2; exit 2; }
+echo "\$ powerkey decode --model $model $log"
+"$pk" decode --model "$model" "$log"
