@@ -1042,6 +1042,24 @@ PYBIND11_MODULE(_powerkey, mod) {
                                                                    enum_to_py(b.colour));
                                })
         .def_property_readonly("baud", [](const keypad_type& k) { return enum_to_py(k.baud()); })
+        // Its J1939 side (behaviour/j1939_keypad.hpp): the address it sends from, and each LED
+        // that is not off as the last single-LED command or multiple-LED frames set it.
+        .def_property_readonly("j1939_address",
+                               [](const keypad_type& k) { return k.j1939().address(); })
+        .def_property_readonly("j1939_leds",
+                               [](const keypad_type& k) {
+                                   py::dict out;
+                                   for (unsigned i = 1; i <= 16; ++i) {
+                                       const auto l = k.j1939().led(i);
+                                       if (l.mode == led_mode::off) continue;
+                                       py::dict look;
+                                       look["mode"] = enum_to_py(l.mode);
+                                       look["colour"] = enum_to_py(l.colour);
+                                       look["secondary"] = enum_to_py(l.secondary);
+                                       out[py::int_(i)] = look;
+                                   }
+                                   return out;
+                               })
         .def("tick", [](const keypad_type& k, py::handle t) { return k.tick(millis_arg(t)); })
         .def("read",
              [](const keypad_type& k, py::handle o) -> py::object {

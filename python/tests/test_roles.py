@@ -1,5 +1,6 @@
 """The session follower, the virtual keypad and the controller, stepped from Python."""
 
+import can
 import pytest
 
 import powerkey
@@ -104,3 +105,19 @@ def test_keypad_sold_as_j1939_at_another_address():
     k = powerkey.VirtualKeypad(model="pkp2400", start_in_j1939=True, j1939_address="30h")
     k.power_on(0)
     assert k.press(8, 50) and k.transmit_all()[0].arbitration_id == 0x18EFFF30
+
+
+def test_keypad_in_j1939_shows_its_leds():
+    # A PKP-2600-SI in J1939 at 30h: the single-LED command to it (PKP2600SI J1939 manual 7a's
+    # layout: LED 3 green, on, no secondary colour) shows as its J1939 LED, not in led_on.
+    k = powerkey.VirtualKeypad(model="pkp2600si", start_in_j1939=True, j1939_address=0x30)
+    k.power_on(0)
+    assert k.j1939_address == 0x30 and k.j1939_leds == {}
+    k.receive(can.Message(arbitration_id=0x18EF3000, is_extended_id=True,
+                          data=bytes.fromhex("041B0103020100FF")), 10)
+    assert k.j1939_leds == {3: {"mode": "on", "colour": "green", "secondary": "off"}}
+    assert k.led_on == {} or all(not v for v in k.led_on.values())
+    # A command to another address is not this keypad's.
+    k.receive(can.Message(arbitration_id=0x18EF2100, is_extended_id=True,
+                          data=bytes.fromhex("041B0104010100FF")), 20)
+    assert list(k.j1939_leds) == [3]
