@@ -1,7 +1,9 @@
 // The session follower fed an arbitrary sequence of frames (any model, any start node).
 // Properties: no crash and no read past any frame's dlc; each event's decoding is exactly the
-// any-frame decoder's for the node the event names; the followed node id and protocol change
-// only with an event that says so; the upload text never exceeds its capacity.
+// any-frame decoder's for the node the event names, its J1939 frames narrowed to the keypad
+// address the session had narrowed to before the frame (a 70h narrows it); the followed node id,
+// protocol and J1939 address change only with an event that says so; the upload text never
+// exceeds its capacity.
 #include "fuzz.hpp"
 
 #include <powerkey/keypad/codec.hpp>
@@ -32,12 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         aligned_frame held{take_bus_frame(in, s.node())};
         const auto node_before = s.node();
         const auto protocol_before = s.protocol();
+        const auto narrowing_before = s.j1939_narrowing();
+        const auto address_before = s.j1939_address();
         const auto e = [&] {
             const poison_past_dlc guard(held.f);
             return s.step(held.f);
         }();
         const can::frame& f = held.f;
-        POWERKEY_FUZZ_CHECK_FRAME(e.decoded == decode(f, e.node, m), f);
+        POWERKEY_FUZZ_CHECK_FRAME(e.decoded == decode(f, e.node, m, narrowing_before), f);
         if (!e.decoded) POWERKEY_FUZZ_CHECK_FRAME(is_listed(e.decoded.error()), f);
         if (e.upload_error != errc{}) POWERKEY_FUZZ_CHECK_FRAME(is_listed(e.upload_error), f);
         if (e.new_node)
@@ -48,6 +52,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             POWERKEY_FUZZ_CHECK_FRAME(s.protocol() == *e.new_protocol, f);
         else
             POWERKEY_FUZZ_CHECK_FRAME(s.protocol() == protocol_before, f);
+        if (e.new_address)
+            POWERKEY_FUZZ_CHECK_FRAME(s.j1939_address() == *e.new_address, f);
+        else
+            POWERKEY_FUZZ_CHECK_FRAME(s.j1939_address() == address_before, f);
         POWERKEY_FUZZ_CHECK_FRAME(s.text().size() <= 16 && s.upload().bytes().size() <= 16, f);
         POWERKEY_FUZZ_CHECK_FRAME(s.model() == m, f);
     }
