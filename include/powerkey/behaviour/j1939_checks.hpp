@@ -190,7 +190,7 @@ private:
         namespace j = j1939;
         const std::uint32_t line = at.line;
         if constexpr (j::sent_by_keypad<T>) {
-            hold(v.source);  // a keypad is there
+            if (v.source < j1939::null_address) hold(v.source);  // a keypad is there
             if constexpr (std::is_same_v<T, j::address_claimed>) {
                 claim(v, id, r, line);
                 if (v.source == keypad) pause();
