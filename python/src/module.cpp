@@ -176,29 +176,27 @@ model model_from_py(py::handle o) {
                          py_repr(o));
 }
 
-// A J1939 address lo..FDh (FEh is the null and FFh the global address): a number, or the tool's
-// text of --address as node takes --node's ("21h", "0x21", "33").
-std::uint8_t address_arg(py::handle o, const char* what, std::uint64_t lo) {
+// A keypad's J1939 address, 01h..FDh as 70h takes it (pb::j1939_source_address): a number, or
+// the tool's text of --address as node takes --node's ("21h", "0x21", "33").
+std::uint8_t address_arg(py::handle o, const char* what) {
+    using range = pb::j1939_source_address;
     if (py::isinstance<py::str>(o)) {
         std::uint64_t v = 0;
-        if (!tool::parse_number(o.cast<std::string>(), v) || v < lo || v > 0xFD) {
-            std::string range;
-            tool::append_hex_h(range, lo, 2);
+        if (!tool::parse_number(o.cast<std::string>(), v) || !range::make(v))
             raise(types().argument_error,
-                  std::string(what) + ": expected a J1939 keypad address " + range +
-                      "..FDh (0x21, 21h or 33), got " + py_repr(o),
+                  std::string(what) + ": expected a J1939 keypad address 01h..FDh (0x21, 21h or " +
+                      "33), got " + py_repr(o),
                   py::str("value_out_of_range"));
-        }
         return static_cast<std::uint8_t>(v);
     }
-    return static_cast<std::uint8_t>(int_arg(o, what, lo, 0xFD));
+    return static_cast<std::uint8_t>(int_arg(o, what, range::min, range::max));
 }
 
 // A J1939 keypad address (01h..FDh, 70h's range: 00h is the controllers'), or None for any: the
 // J1939 frames narrowed to that keypad.
 j1939::keypad_address address_from_py(py::handle o) {
     if (o.is_none()) return std::nullopt;
-    return address_arg(o, "address", 1);
+    return address_arg(o, "address");
 }
 
 canopen::node_id node_from_py(py::handle o, const char* what = "node") {
@@ -984,7 +982,7 @@ PYBIND11_MODULE(_powerkey, mod) {
                          bool j1939, py::handle j1939_address) {
                  // 01h..FDh, as 70h takes it.
                  const auto address =
-                     pb::j1939_source_address::make(address_arg(j1939_address, "j1939_address", 1))
+                     pb::j1939_source_address::make(address_arg(j1939_address, "j1939_address"))
                          .value();
                  return new keypad_type(
                      model_from_py(md), node_from_py(node),

@@ -1,7 +1,6 @@
 // powerkey export dbc --model M [--node N] [--address A]: the DBC of one keypad at one node id
-// (and J1939 address) on standard
-// output (dbc.hpp, docs/dbc.md). `export` names what it writes, so that another form can join as
-// another word beside `dbc`.
+// and J1939 address on standard output (dbc.hpp, docs/dbc.md). `export` names what it writes, so
+// that another form can join as another word beside `dbc`.
 #include "cli.hpp"
 #include "commands.hpp"
 #include "dbc.hpp"

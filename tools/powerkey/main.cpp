@@ -5,6 +5,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 
+#include <powerkey/behaviour/j1939_keypad.hpp>
 #include <powerkey/version.hpp>
 
 #include <cstdio>
@@ -215,9 +216,10 @@ int main(int argc, char** argv) {
     }
     if (address_given) {
         std::uint64_t a = 0;
-        // 70h's range: 00h is the controllers' (the manuals' sender), FEh J1939's null address
-        // and FFh the global one; no keypad holds them.
-        if (!tool::parse_number(address_text, a) || a < 1 || a > 0xFD)
+        // 70h's range (behaviour::j1939_source_address): 00h is the controllers' (the manuals'
+        // sender), FEh J1939's null address and FFh the global one; no keypad holds them.
+        if (!tool::parse_number(address_text, a) ||
+            !powerkey::behaviour::j1939_source_address::make(a))
             return tool::usage_error(
                 "--address: expected a keypad's J1939 address 01h..FDh (70h's range: 0x21, 21h "
                 "or 33), got '" +
